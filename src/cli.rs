@@ -1,0 +1,71 @@
+//! The `ekb` command line: global options and the subcommands (SPEC §5).
+//!
+//! This module only declares the interface and dispatches; each command lives in its own
+//! module under [`crate::commands`].
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand, ValueEnum};
+
+use crate::commands::{self, Context};
+
+/// Author and validate the environment knowledge base of a tour-guide robot.
+#[derive(Debug, Parser)]
+#[command(name = "ekb", version, about, long_about = None, propagate_version = true)]
+pub struct Cli {
+    /// Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]
+    #[arg(long, global = true, value_name = "PATH")]
+    pub config: Option<PathBuf>,
+
+    /// When to use colour (NO_COLOR in the environment means never, unless `always`)
+    #[arg(long, global = true, value_enum, default_value_t = ColorChoice::Auto, value_name = "WHEN")]
+    pub color: ColorChoice,
+
+    /// Print what is read, as it is read, on standard error
+    #[arg(short, long, global = true)]
+    pub verbose: bool,
+
+    /// Print only findings and errors, no summary
+    #[arg(short, long, global = true, conflicts_with = "verbose")]
+    pub quiet: bool,
+
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// Whether output is coloured.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ColorChoice {
+    Auto,
+    Always,
+    Never,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Validate knowledge-base files against every rule
+    Check(commands::check::Args),
+    /// List the rule catalogue
+    Rules(commands::rules::Args),
+    /// Show one rule's documentation
+    Explain(commands::explain::Args),
+}
+
+/// Parses the command line, runs the command and turns the outcome into an exit code.
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let context = Context::new(&cli);
+    let outcome = match &cli.command {
+        Command::Check(args) => commands::check::run(args, &context),
+        Command::Rules(args) => commands::rules::run(args, &context),
+        Command::Explain(args) => commands::explain::run(args, &context),
+    };
+    match outcome {
+        Ok(exit) => exit.into(),
+        Err(error) => {
+            eprintln!("ekb: error: {error}");
+            commands::Exit::Failure.into()
+        }
+    }
+}

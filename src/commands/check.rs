@@ -1,0 +1,61 @@
+//! `ekb check [FILE...]`: validate knowledge bases.
+
+use std::io::Write;
+use std::path::PathBuf;
+
+use super::{CommandResult, Context, Exit};
+use crate::check::{check, Checked};
+use crate::diagnostic::Summary;
+use crate::render::{self, Format, RenderOptions};
+use crate::source::SourceFile;
+
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// Knowledge-base files (`-` for standard input) [default: the configured knowledgeBase]
+    #[arg(value_name = "FILE")]
+    pub files: Vec<PathBuf>,
+
+    /// Output format
+    #[arg(long, value_enum, default_value_t = Format::Concise)]
+    pub format: Format,
+
+    /// Exit 1 on warnings too
+    #[arg(long)]
+    pub deny_warnings: bool,
+}
+
+pub fn run(args: &Args, context: &Context) -> CommandResult {
+    let options = context.read_options()?;
+    let sources = context
+        .inputs(&args.files)?
+        .iter()
+        .map(|path| context.read(path))
+        .collect::<Result<Vec<SourceFile>, _>>()?;
+    let checked: Vec<Checked> = sources
+        .iter()
+        .map(|source| check(source, &options))
+        .collect();
+    let mut summary = Summary {
+        files: checked.len(),
+        ..Summary::default()
+    };
+    checked
+        .iter()
+        .flat_map(|file| &file.diagnostics)
+        .for_each(|d| summary.add(d));
+    let render_options = RenderOptions {
+        color: context.color_stdout(),
+        quiet: context.quiet,
+    };
+    let mut stdout = std::io::stdout().lock();
+    render::render(
+        args.format,
+        &checked,
+        &summary,
+        &mut stdout,
+        &render_options,
+    )?;
+    stdout.flush()?;
+    let failed = summary.errors > 0 || (args.deny_warnings && summary.warnings > 0);
+    Ok(if failed { Exit::Findings } else { Exit::Clean })
+}

@@ -1,0 +1,147 @@
+//! One module per `ekb` subcommand, and what they share: the context and the exit codes.
+
+pub mod check;
+pub mod explain;
+pub mod rules;
+
+use std::cell::OnceCell;
+use std::fmt;
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use crate::cli::{Cli, ColorChoice};
+use crate::config::Config;
+use crate::model::build::Options;
+use crate::source::SourceFile;
+
+/// The exit codes of SPEC §5.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Exit {
+    /// No errors, no differences, nothing to change.
+    Clean = 0,
+    /// Errors found, differences found, or something would change.
+    Findings = 1,
+    /// The tool could not do its job.
+    Failure = 2,
+}
+
+impl From<Exit> for ExitCode {
+    fn from(exit: Exit) -> ExitCode {
+        ExitCode::from(exit as u8)
+    }
+}
+
+/// Why a command could not do its job: one line for standard error, exit code 2.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CommandError(pub String);
+
+impl fmt::Display for CommandError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl<E: std::error::Error> From<E> for CommandError {
+    fn from(error: E) -> CommandError {
+        CommandError(error.to_string())
+    }
+}
+
+pub type CommandResult = Result<Exit, CommandError>;
+
+/// What every command may need: the global options and the configuration (read once, and
+/// only by commands that need it).
+#[derive(Debug)]
+pub struct Context {
+    config_path: Option<PathBuf>,
+    pub color: ColorChoice,
+    pub verbose: bool,
+    pub quiet: bool,
+    config: OnceCell<Config>,
+}
+
+impl Context {
+    pub fn new(cli: &Cli) -> Context {
+        Context {
+            config_path: cli.config.clone(),
+            color: cli.color,
+            verbose: cli.verbose,
+            quiet: cli.quiet,
+            config: OnceCell::new(),
+        }
+    }
+
+    /// A context with default options, for tests and embedding.
+    pub fn with_config(config: Config) -> Context {
+        Context {
+            config_path: None,
+            color: ColorChoice::Never,
+            verbose: false,
+            quiet: false,
+            config: OnceCell::from(config),
+        }
+    }
+
+    /// The configuration (see [`Config::discover`]).
+    pub fn config(&self) -> Result<&Config, CommandError> {
+        if let Some(config) = self.config.get() {
+            return Ok(config);
+        }
+        let config = Config::discover(self.config_path.as_deref())?;
+        Ok(self.config.get_or_init(|| config))
+    }
+
+    /// How to read knowledge bases: the configuration's dialect and verbosity, or `-v`.
+    pub fn read_options(&self) -> Result<Options, CommandError> {
+        let config = self.config()?;
+        Ok(Options {
+            dialect: config.dialect,
+            verbose: self.verbose || config.verbose,
+        })
+    }
+
+    /// The files to work on: those given, else the configured knowledge base.
+    pub fn inputs(&self, files: &[PathBuf]) -> Result<Vec<PathBuf>, CommandError> {
+        if !files.is_empty() {
+            return Ok(files.to_vec());
+        }
+        Ok(vec![self.config()?.knowledge_base()?.to_path_buf()])
+    }
+
+    /// The one file to work on: the one given, else the configured knowledge base.
+    pub fn input(&self, file: Option<&Path>) -> Result<PathBuf, CommandError> {
+        match file {
+            Some(file) => Ok(file.to_path_buf()),
+            None => Ok(self.config()?.knowledge_base()?.to_path_buf()),
+        }
+    }
+
+    /// Reads a knowledge base (`-` is standard input).
+    pub fn read(&self, path: &Path) -> Result<SourceFile, CommandError> {
+        if self.read_options()?.verbose {
+            eprintln!("ekb: reading {}", path.display());
+        }
+        Ok(SourceFile::read(path)?)
+    }
+
+    /// Whether to colour what goes to standard output.
+    pub fn color_stdout(&self) -> bool {
+        self.use_color(std::io::stdout().is_terminal())
+    }
+
+    /// Whether to colour what goes to standard error.
+    pub fn color_stderr(&self) -> bool {
+        self.use_color(std::io::stderr().is_terminal())
+    }
+
+    fn use_color(&self, is_terminal: bool) -> bool {
+        match self.color {
+            ColorChoice::Always => true,
+            ColorChoice::Never => false,
+            ColorChoice::Auto => {
+                is_terminal && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+            }
+        }
+    }
+}

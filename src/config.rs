@@ -1,0 +1,201 @@
+//! The configuration file (SPEC §3): where the knowledge base is, and how to read it.
+//!
+//! Both the standard INI form (`knowledgeBase = file.dat`) and the robot's own whitespace
+//! form (`knowledgeBase   file.dat`) are accepted, in any mix.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use crate::model::Dialect;
+
+/// Where the configuration is looked for when neither `--config` nor `EKB_CONFIG` is given.
+pub const DEFAULT_PATH: &str = "config/environmentKnowledgeBaseConfiguration.ini";
+
+/// The environment variable naming the configuration file.
+pub const ENV_VAR: &str = "EKB_CONFIG";
+
+/// A configuration as read.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Config {
+    /// The file it was read from, if any.
+    pub path: Option<PathBuf>,
+    /// `knowledgeBase`, resolved to a path.
+    pub knowledge_base: Option<PathBuf>,
+    /// `verboseMode`.
+    pub verbose: bool,
+    /// `dialect`: `seed` or `current` pins one; absent or `auto` detects it per file.
+    pub dialect: Option<Dialect>,
+}
+
+/// Why a configuration could not be used (exit code 2).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ConfigError(pub String);
+
+impl fmt::Display for ConfigError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for ConfigError {}
+
+impl Config {
+    /// Finds the configuration: `explicit` (from `--config`), else `EKB_CONFIG`, else the
+    /// default path if it exists. No configuration at all is not an error.
+    pub fn discover(explicit: Option<&Path>) -> Result<Config, ConfigError> {
+        let from_env = std::env::var_os(ENV_VAR)
+            .filter(|value| !value.is_empty())
+            .map(PathBuf::from);
+        match explicit.map(Path::to_path_buf).or(from_env) {
+            Some(path) => Config::load(&path),
+            None if Path::new(DEFAULT_PATH).is_file() => Config::load(Path::new(DEFAULT_PATH)),
+            None => Ok(Config::default()),
+        }
+    }
+
+    /// Reads the configuration at `path`.
+    pub fn load(path: &Path) -> Result<Config, ConfigError> {
+        let text = std::fs::read_to_string(path).map_err(|e| {
+            ConfigError(format!(
+                "cannot read configuration {}: {}",
+                path.display(),
+                e.to_string().to_lowercase()
+            ))
+        })?;
+        let mut config = Config::parse(&text)
+            .map_err(|reason| ConfigError(format!("configuration {}: {reason}", path.display())))?;
+        config.knowledge_base = config
+            .knowledge_base
+            .map(|name| resolve_knowledge_base(path, &name));
+        config.path = Some(path.to_path_buf());
+        Ok(config)
+    }
+
+    /// Parses configuration text; `knowledge_base` is left as written.
+    pub fn parse(text: &str) -> Result<Config, String> {
+        let ini = ini::Ini::load_from_str(&to_standard_ini(text)).map_err(|e| e.to_string())?;
+        let mut config = Config::default();
+        for (_, properties) in ini.iter() {
+            for (key, value) in properties.iter() {
+                match key {
+                    "knowledgeBase" => config.knowledge_base = Some(PathBuf::from(value)),
+                    "verboseMode" => config.verbose = parse_bool(value)?,
+                    "dialect" => config.dialect = parse_dialect(value)?,
+                    _ => {}
+                }
+            }
+        }
+        Ok(config)
+    }
+
+    /// The configured knowledge base, or why there is none.
+    pub fn knowledge_base(&self) -> Result<&Path, ConfigError> {
+        match (&self.knowledge_base, &self.path) {
+            (Some(path), _) => Ok(path),
+            (None, Some(config)) => Err(ConfigError(format!(
+                "configuration {} has no `knowledgeBase` key; add one or give a FILE",
+                config.display()
+            ))),
+            (None, None) => Err(ConfigError(format!(
+                "no FILE given and no configuration found (tried --config, {ENV_VAR} and {DEFAULT_PATH})"
+            ))),
+        }
+    }
+}
+
+/// A bare name or relative path is resolved in the `data/` folder beside the configuration's
+/// folder (the robot's convention: `config/` and `data/` are siblings).
+fn resolve_knowledge_base(config_path: &Path, name: &Path) -> PathBuf {
+    if name.is_absolute() {
+        return name.to_path_buf();
+    }
+    let config_dir = config_path.parent().unwrap_or(Path::new(""));
+    let base = match config_dir.parent() {
+        Some(parent) => parent.join("data"),
+        None => PathBuf::from("../data"),
+    };
+    base.join(name)
+}
+
+/// Turns the robot's `key   value` lines into `key = value`, leaving INI lines alone.
+fn to_standard_ini(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 16);
+    for line in text.lines() {
+        let trimmed = line.trim();
+        let is_plain =
+            trimmed.is_empty() || trimmed.starts_with(['#', ';', '[']) || trimmed.contains('=');
+        match trimmed.split_once([' ', '\t']) {
+            Some((key, value)) if !is_plain => {
+                out.push_str(key);
+                out.push_str(" = ");
+                out.push_str(value.trim());
+            }
+            _ => out.push_str(line),
+        }
+        out.push('\n');
+    }
+    out
+}
+
+fn parse_bool(value: &str) -> Result<bool, String> {
+    match value.trim().to_ascii_lowercase().as_str() {
+        "true" | "yes" | "1" | "on" => Ok(true),
+        "false" | "no" | "0" | "off" => Ok(false),
+        other => Err(format!("verboseMode must be true or false, not `{other}`")),
+    }
+}
+
+fn parse_dialect(value: &str) -> Result<Option<Dialect>, String> {
+    match value.trim().to_ascii_lowercase().as_str() {
+        "seed" => Ok(Some(Dialect::Seed)),
+        "current" => Ok(Some(Dialect::Current)),
+        "auto" | "" => Ok(None),
+        other => Err(format!(
+            "dialect must be seed, current or auto, not `{other}`"
+        )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn robot_whitespace_form() {
+        let config =
+            Config::parse("verboseMode   false\nknowledgeBase environmentKnowledgeBaseInput.dat\n")
+                .unwrap();
+        assert_eq!(
+            config.knowledge_base.as_deref(),
+            Some(Path::new("environmentKnowledgeBaseInput.dat"))
+        );
+        assert!(!config.verbose);
+    }
+
+    #[test]
+    fn standard_ini_form_with_dialect() {
+        let config = Config::parse(
+            "; comment\nknowledgeBase = kb.dat\nverboseMode = true\ndialect = current\n",
+        )
+        .unwrap();
+        assert!(config.verbose);
+        assert_eq!(config.dialect, Some(Dialect::Current));
+    }
+
+    #[test]
+    fn bad_values_are_errors() {
+        assert!(Config::parse("verboseMode maybe").is_err());
+        assert!(Config::parse("dialect = klingon").is_err());
+    }
+
+    #[test]
+    fn knowledge_base_is_resolved_beside_the_config_folder() {
+        let resolved = resolve_knowledge_base(
+            Path::new("robot/config/environmentKnowledgeBaseConfiguration.ini"),
+            Path::new("kb.dat"),
+        );
+        assert_eq!(resolved, Path::new("robot/data/kb.dat"));
+        let resolved = resolve_knowledge_base(Path::new("config/x.ini"), Path::new("kb.dat"));
+        assert_eq!(resolved, Path::new("data/kb.dat"));
+    }
+}

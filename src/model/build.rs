@@ -1,0 +1,404 @@
+//! Lowering: from the lines of the syntax layer to the typed [`KnowledgeBase`], in one pass.
+//!
+//! Parsing a value and finding it malformed are the same act, so the rules about a single
+//! line (its key, id, numbers, arity, text) report from here, through their own modules.
+
+use std::collections::HashMap;
+
+use crate::diagnostic::Diagnostic;
+use crate::model::{
+    words, Arm, Dialect, Key, KnowledgeBase, Location, Point, Pose, Tour, Value, ValueKind,
+};
+use crate::rules::{compat, content, structure, tour};
+use crate::syntax::{self, Body, Line, Span};
+
+/// How to read a file.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Options {
+    /// The dialect the configuration pins, if any (`legacy-key` applies then).
+    pub dialect: Option<Dialect>,
+    /// Print each entry to standard error as it is read.
+    pub verbose: bool,
+}
+
+/// Builds the model of `text`, appending the findings of the line rules to `out`.
+pub fn build<'a>(text: &'a str, options: &Options, out: &mut Vec<Diagnostic>) -> KnowledgeBase<'a> {
+    let mut builder = Builder {
+        text,
+        options: *options,
+        locations: Vec::new(),
+        index: HashMap::new(),
+        last: None,
+        tour: None,
+        first_pose_key: [None, None],
+        crlf_endings: Vec::new(),
+    };
+    let mut last_line = None;
+    for line in syntax::lines(text) {
+        builder.line(&line, out);
+        last_line = Some(line);
+    }
+    if let Some(line) = last_line {
+        compat::compat_no_final_newline::check(&line, text, out);
+    }
+    compat::compat_crlf::check(&builder.crlf_endings, out);
+    builder.finish(out)
+}
+
+struct Builder<'a> {
+    text: &'a str,
+    options: Options,
+    locations: Vec<Location<'a>>,
+    index: HashMap<u32, usize>,
+    /// The location of the previous line: most lines follow one of the same id.
+    last: Option<(u32, usize)>,
+    tour: Option<Tour>,
+    /// The first `robotLocation` and `robotLocationPose` lines, and how many of each.
+    first_pose_key: [Option<(Span, usize)>; 2],
+    crlf_endings: Vec<Span>,
+}
+
+impl<'a> Builder<'a> {
+    fn line(&mut self, line: &Line, out: &mut Vec<Diagnostic>) {
+        compat::compat_line_too_long::check(line, self.text, out);
+        content::trailing_whitespace::check(line, self.text, out);
+        if line.ending == syntax::LineEnding::CrLf {
+            self.crlf_endings.push(Span::new(
+                line.trailing.end as usize,
+                line.span.end as usize,
+            ));
+        }
+        if let Body::Entry { key, args } = line.body {
+            structure::control_character::check(args, self.text, out);
+            self.entry(key, args, out);
+        }
+    }
+
+    fn entry(&mut self, key_span: Span, args: Span, out: &mut Vec<Diagnostic>) {
+        let key_text = key_span.text(self.text);
+        let Some(key) = Key::from_name(key_text) else {
+            let id = leading_id(args.text(self.text));
+            match Key::from_name_ignoring_case(key_text) {
+                Some(key) => out.push(structure::key_case::diagnostic(key_span, key_text, key, id)),
+                None => out.push(structure::unknown_key::diagnostic(key_span, key_text, id)),
+            }
+            return;
+        };
+        if self.options.verbose {
+            eprintln!("ekb: read {key_text} {}", args.text(self.text));
+        }
+        if let Some(pinned) = self.options.dialect {
+            structure::legacy_key::check(key, key_span, pinned, out);
+        }
+        if key == Key::TourSpecification {
+            self.tour(args, out);
+            return;
+        }
+        let args_text = args.text(self.text);
+        let mut tokens = syntax::tokens(args_text, args.start as usize);
+        let id = match tokens.next() {
+            Some((span, token)) if looks_numeric(token) => match parse_id(token) {
+                Some(id) => id,
+                None => {
+                    out.push(structure::invalid_id::diagnostic(span, token, key));
+                    return;
+                }
+            },
+            _ => {
+                out.push(structure::missing_id::diagnostic(key_span, key));
+                return;
+            }
+        };
+        let value_span = match tokens.next() {
+            Some((first, _)) => Span::new(first.start as usize, args.end as usize),
+            None => Span::empty_at(args.end as usize),
+        };
+        self.value(key, key_span, id, value_span, out);
+    }
+
+    fn value(&mut self, key: Key, key_span: Span, id: u32, span: Span, out: &mut Vec<Diagnostic>) {
+        let text = span.text(self.text);
+        let line_span = key_span.cover(span);
+        let (index, earlier) = self.location(id, line_span, key);
+        if let Some(earlier) = earlier {
+            out.push(structure::duplicate_key::diagnostic(
+                key, id, line_span, earlier,
+            ));
+        }
+        if text.is_empty() {
+            out.push(structure::empty_value::diagnostic(key_span, key, id));
+            return;
+        }
+        compat::compat_leading_symbol::check(key, id, span, text, out);
+        let location = &mut self.locations[index];
+        match key.value_kind() {
+            ValueKind::Text => {
+                let value = Some(Value { value: text, span });
+                match key.message() {
+                    Some((phase, language)) => {
+                        location.messages[phase.index()][language.index()] = value
+                    }
+                    None => location.description = value,
+                }
+            }
+            ValueKind::Pose => {
+                self.note_pose_key(key, line_span);
+                let location = &mut self.locations[index];
+                location.pose_key = Some(key);
+                if let Some([x, y, theta]) = numbers(key, id, span, text, out) {
+                    location.pose = Some(Value {
+                        value: Pose { x, y, theta },
+                        span,
+                    });
+                }
+            }
+            ValueKind::Point => {
+                if let Some([x, y, z]) = numbers(key, id, span, text, out) {
+                    location.gesture_target = Some(Value {
+                        value: Point { x, y, z },
+                        span,
+                    });
+                }
+            }
+            ValueKind::Arm => match (Arm::parse(text), words(text).count()) {
+                (Some(arm), _) => location.gesture_arm = Some(Value { value: arm, span }),
+                (None, 1) => out.push(structure::invalid_value::diagnostic(key, id, span, text)),
+                (None, count) => {
+                    out.push(structure::wrong_arity::diagnostic(key, id, span, 1, count))
+                }
+            },
+            ValueKind::Words => location.cultural_knowledge = Some(Value { value: text, span }),
+            ValueKind::Tour => unreachable!("the tour has no id and is read by Builder::tour"),
+        }
+    }
+
+    /// The index of location `id` (created on first sight) and, if `key` was already given
+    /// for it, the span of the earlier line.
+    fn location(&mut self, id: u32, line_span: Span, key: Key) -> (usize, Option<Span>) {
+        let index = match self.last {
+            Some((last_id, index)) if last_id == id => index,
+            _ => {
+                let next = self.locations.len();
+                let index = *self.index.entry(id).or_insert(next);
+                if index == next {
+                    self.locations.push(Location::new(id, line_span));
+                }
+                self.last = Some((id, index));
+                index
+            }
+        };
+        let location = &mut self.locations[index];
+        let repeated = location.has_line(key);
+        location.given |= 1 << key.order();
+        let earlier = repeated.then(|| earlier_span(location, key).unwrap_or(location.first_line));
+        (index, earlier)
+    }
+
+    fn note_pose_key(&mut self, key: Key, line_span: Span) {
+        let slot = &mut self.first_pose_key[(key == Key::RobotLocationPose) as usize];
+        match slot {
+            Some((_, count)) => *count += 1,
+            None => *slot = Some((line_span, 1)),
+        }
+    }
+
+    fn tour(&mut self, args: Span, out: &mut Vec<Diagnostic>) {
+        let text = args.text(self.text);
+        let mut items = tour_items(text, args.start as usize);
+        let declared = items
+            .next()
+            .and_then(|(span, token)| match token.parse::<u64>() {
+                Ok(n) => Some(Value { value: n, span }),
+                Err(_) => {
+                    out.push(structure::invalid_number::diagnostic(
+                        Key::TourSpecification,
+                        None,
+                        span,
+                        token,
+                    ));
+                    None
+                }
+            });
+        let stops = items
+            .filter_map(|(span, token)| match parse_id(token) {
+                Some(id) => Some(Value { value: id, span }),
+                None => {
+                    out.push(structure::invalid_id::diagnostic(
+                        span,
+                        token,
+                        Key::TourSpecification,
+                    ));
+                    None
+                }
+            })
+            .collect();
+        let new = Tour {
+            span: args,
+            declared,
+            stops,
+        };
+        if let Some(earlier) = &self.tour {
+            out.push(tour::tour_duplicate_spec::diagnostic(args, earlier.span));
+        }
+        self.tour = Some(new);
+    }
+
+    fn finish(self, out: &mut Vec<Diagnostic>) -> KnowledgeBase<'a> {
+        let dialect = match self.first_pose_key {
+            [Some(seed), Some(current)] => {
+                out.push(structure::mixed_dialect::diagnostic(seed, current));
+                Some(if seed.1 > current.1 {
+                    Dialect::Seed
+                } else {
+                    Dialect::Current
+                })
+            }
+            [Some(_), None] => Some(Dialect::Seed),
+            [None, Some(_)] => Some(Dialect::Current),
+            [None, None] => self
+                .locations
+                .iter()
+                .any(|l| l.gesture_arm.is_some() || l.cultural_knowledge.is_some())
+                .then_some(Dialect::Current),
+        };
+        KnowledgeBase::new(dialect, self.locations, self.tour)
+    }
+}
+
+/// The span of the value `key` holds in `location`, if it holds one.
+fn earlier_span(location: &Location<'_>, key: Key) -> Option<Span> {
+    match key.value_kind() {
+        ValueKind::Text => match key.message() {
+            Some((phase, language)) => location.message(phase, language).map(|v| v.span),
+            None => location.description.map(|v| v.span),
+        },
+        ValueKind::Pose => location.pose.map(|v| v.span),
+        ValueKind::Point => location.gesture_target.map(|v| v.span),
+        ValueKind::Arm => location.gesture_arm.map(|v| v.span),
+        ValueKind::Words => location.cultural_knowledge.map(|v| v.span),
+        ValueKind::Tour => None,
+    }
+}
+
+/// The tour's items: blank- or comma-separated tokens.
+fn tour_items(text: &str, offset: usize) -> impl Iterator<Item = (Span, &str)> {
+    syntax::tokens(text, offset).flat_map(|(span, token)| {
+        let base = span.start as usize;
+        token
+            .split(',')
+            .scan(0usize, move |at, part| {
+                let start = *at;
+                *at += part.len() + 1;
+                Some((Span::new(base + start, base + start + part.len()), part))
+            })
+            .filter(|(_, part)| !part.is_empty())
+    })
+}
+
+/// Whether a token is meant as a number (so a bad one is an invalid id, not a missing one).
+fn looks_numeric(token: &str) -> bool {
+    token
+        .bytes()
+        .next()
+        .is_some_and(|b| b.is_ascii_digit() || b == b'-' || b == b'+')
+}
+
+/// A location id: a decimal integer in 1..=2147483647.
+pub fn parse_id(token: &str) -> Option<u32> {
+    if token.is_empty() || !token.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    let digits = token.trim_start_matches('0');
+    if digits.is_empty() || digits.len() > 10 {
+        return None;
+    }
+    digits
+        .parse::<u32>()
+        .ok()
+        .filter(|&id| id <= i32::MAX as u32)
+}
+
+/// A finite decimal number (`nan`, `inf` and digits out of range are not).
+pub fn parse_number(token: &str) -> Option<f64> {
+    let starts_well = token
+        .bytes()
+        .next()
+        .is_some_and(|b| b.is_ascii_digit() || matches!(b, b'-' | b'+' | b'.'));
+    if !starts_well {
+        return None;
+    }
+    token.parse::<f64>().ok().filter(|n| n.is_finite())
+}
+
+/// The three numbers of a pose or a point, reporting what is wrong with them.
+fn numbers(
+    key: Key,
+    id: u32,
+    span: Span,
+    text: &str,
+    out: &mut Vec<Diagnostic>,
+) -> Option<[f64; 3]> {
+    let mut values = [0.0; 3];
+    let mut count = 0;
+    let mut valid = true;
+    for (token_span, token) in syntax::tokens(text, span.start as usize) {
+        match parse_number(token) {
+            Some(n) if count < 3 => values[count] = n,
+            Some(_) => {}
+            None => {
+                out.push(structure::invalid_number::diagnostic(
+                    key,
+                    Some(id),
+                    token_span,
+                    token,
+                ));
+                valid = false;
+            }
+        }
+        count += 1;
+    }
+    if count != 3 {
+        out.push(structure::wrong_arity::diagnostic(key, id, span, 3, count));
+        valid = false;
+    }
+    valid.then_some(values)
+}
+
+/// The id at the start of a line's arguments, if there is a valid one (for messages only).
+fn leading_id(args: &str) -> Option<u32> {
+    syntax::tokens(args, 0)
+        .next()
+        .and_then(|(_, token)| parse_id(token))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ids() {
+        assert_eq!(parse_id("4"), Some(4));
+        assert_eq!(parse_id("2147483647"), Some(2147483647));
+        for bad in ["0", "-1", "4a", "2147483648", "99999999999", "", "+3"] {
+            assert_eq!(parse_id(bad), None, "{bad}");
+        }
+        assert_eq!(parse_id(&"1".repeat(40)), None);
+    }
+
+    #[test]
+    fn numbers_are_finite_decimals() {
+        assert_eq!(parse_number("-90"), Some(-90.0));
+        assert_eq!(parse_number(".5"), Some(0.5));
+        assert_eq!(parse_number("1e-1"), Some(0.1));
+        for bad in ["8,1", "abc", "nan", "NaN", "inf", "-inf", "infinity", ""] {
+            assert_eq!(parse_number(bad), None, "{bad}");
+        }
+        assert_eq!(parse_number(&format!("1{}", "0".repeat(399))), None);
+    }
+
+    #[test]
+    fn tour_items_split_on_commas_too() {
+        let items: Vec<&str> = tour_items("5 1, 4,3 ,2 5", 0).map(|(_, t)| t).collect();
+        assert_eq!(items, ["5", "1", "4", "3", "2", "5"]);
+    }
+}

@@ -1,0 +1,46 @@
+//! The JSON shape of `ekb export` and `ekb import` (SPEC §5), shared by both commands.
+//!
+//! Its JSON Schema is derived from these types (`ekb export --schema`), never written by hand.
+
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+use crate::model::{Arm, Dialect, Point, Pose};
+
+/// A whole knowledge base as JSON.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "camelCase", deny_unknown_fields)]
+pub struct ExportedKnowledgeBase {
+    /// `seed` or `current`; null when the file has no dialect-specific key.
+    pub dialect: Option<Dialect>,
+    /// In ascending id order.
+    pub locations: Vec<ExportedLocation>,
+    /// Location ids in the order visited; null when the file has no tour.
+    pub tour: Option<Vec<u32>>,
+}
+
+/// One location as JSON. A field absent from the file is null.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "camelCase", deny_unknown_fields)]
+pub struct ExportedLocation {
+    /// 1..=2147483647
+    #[schemars(range(min = 1, max = 2147483647))]
+    pub id: u32,
+    pub description: Option<String>,
+    pub pose: Option<Pose>,
+    pub gesture_target: Option<Point>,
+    pub gesture_arm: Option<Arm>,
+    pub pre_gesture_message: ExportedMessages,
+    pub post_gesture_message: ExportedMessages,
+    pub cultural_knowledge: Vec<String>,
+}
+
+/// The three languages of one message.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize, JsonSchema, Default)]
+#[serde(deny_unknown_fields)]
+pub struct ExportedMessages {
+    pub english: Option<String>,
+    #[serde(rename = "isiZulu")]
+    pub isi_zulu: Option<String>,
+    pub kinyarwanda: Option<String>,
+}

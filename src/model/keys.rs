@@ -1,0 +1,258 @@
+//! The keys of the knowledge-base format, their canonical spelling and what their values hold.
+
+use serde::{Deserialize, Serialize};
+
+/// One of the two spellings of the format (SPEC §1).
+#[derive(
+    Debug,
+    Clone,
+    Copy,
+    PartialEq,
+    Eq,
+    Hash,
+    Serialize,
+    Deserialize,
+    clap::ValueEnum,
+    schemars::JsonSchema,
+)]
+#[serde(rename_all = "lowercase")]
+pub enum Dialect {
+    /// The document's dialect (v1.1): `robotLocation`.
+    Seed,
+    /// The robot's current dialect: `robotLocationPose`, `culturalKnowledge`, `gestureArm`.
+    Current,
+}
+
+impl Dialect {
+    pub fn name(self) -> &'static str {
+        match self {
+            Dialect::Seed => "seed",
+            Dialect::Current => "current",
+        }
+    }
+
+    pub fn other(self) -> Dialect {
+        match self {
+            Dialect::Seed => Dialect::Current,
+            Dialect::Current => Dialect::Seed,
+        }
+    }
+
+    /// The key that holds a location's pose in this dialect.
+    pub fn pose_key(self) -> Key {
+        match self {
+            Dialect::Seed => Key::RobotLocation,
+            Dialect::Current => Key::RobotLocationPose,
+        }
+    }
+}
+
+/// The languages the robot speaks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Language {
+    English,
+    IsiZulu,
+    Kinyarwanda,
+}
+
+impl Language {
+    pub const ALL: [Language; 3] = [Language::English, Language::IsiZulu, Language::Kinyarwanda];
+
+    /// The name as the keys and the robot write it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Language::English => "English",
+            Language::IsiZulu => "isiZulu",
+            Language::Kinyarwanda => "Kinyarwanda",
+        }
+    }
+
+    pub fn index(self) -> usize {
+        self as usize
+    }
+}
+
+/// Whether a message is said before or after the gesture.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Phase {
+    Pre,
+    Post,
+}
+
+impl Phase {
+    pub const ALL: [Phase; 2] = [Phase::Pre, Phase::Post];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Phase::Pre => "before",
+            Phase::Post => "after",
+        }
+    }
+
+    pub fn index(self) -> usize {
+        self as usize
+    }
+}
+
+/// What a key's value holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ValueKind {
+    Text,
+    /// `x y theta`
+    Pose,
+    /// `x y z`
+    Point,
+    /// `left` or `right`
+    Arm,
+    /// one or more words
+    Words,
+    /// `n id1 … idn`, with no location id before it
+    Tour,
+}
+
+/// A known key, in the order of SPEC §1's table (the order `ekb fmt` writes them in).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Key {
+    RobotLocationDescription,
+    RobotLocation,
+    RobotLocationPose,
+    GestureTarget,
+    GestureArm,
+    PreGestureMessageEnglish,
+    PreGestureMessageIsiZulu,
+    PreGestureMessageKinyarwanda,
+    PostGestureMessageEnglish,
+    PostGestureMessageIsiZulu,
+    PostGestureMessageKinyarwanda,
+    CulturalKnowledge,
+    TourSpecification,
+}
+
+impl Key {
+    pub const ALL: [Key; 13] = [
+        Key::RobotLocationDescription,
+        Key::RobotLocation,
+        Key::RobotLocationPose,
+        Key::GestureTarget,
+        Key::GestureArm,
+        Key::PreGestureMessageEnglish,
+        Key::PreGestureMessageIsiZulu,
+        Key::PreGestureMessageKinyarwanda,
+        Key::PostGestureMessageEnglish,
+        Key::PostGestureMessageIsiZulu,
+        Key::PostGestureMessageKinyarwanda,
+        Key::CulturalKnowledge,
+        Key::TourSpecification,
+    ];
+
+    /// The spelling the robot's reader matches.
+    pub fn name(self) -> &'static str {
+        match self {
+            Key::RobotLocationDescription => "robotLocationDescription",
+            Key::RobotLocation => "robotLocation",
+            Key::RobotLocationPose => "robotLocationPose",
+            Key::GestureTarget => "gestureTarget",
+            Key::GestureArm => "gestureArm",
+            Key::PreGestureMessageEnglish => "preGestureMessageEnglish",
+            Key::PreGestureMessageIsiZulu => "preGestureMessageIsiZulu",
+            Key::PreGestureMessageKinyarwanda => "preGestureMessageKinyarwanda",
+            Key::PostGestureMessageEnglish => "postGestureMessageEnglish",
+            Key::PostGestureMessageIsiZulu => "postGestureMessageIsiZulu",
+            Key::PostGestureMessageKinyarwanda => "postGestureMessageKinyarwanda",
+            Key::CulturalKnowledge => "culturalKnowledge",
+            Key::TourSpecification => "tourSpecification",
+        }
+    }
+
+    /// The key spelled exactly so.
+    pub fn from_name(name: &str) -> Option<Key> {
+        Key::ALL.into_iter().find(|key| key.name() == name)
+    }
+
+    /// The key spelled so, ignoring ASCII case.
+    pub fn from_name_ignoring_case(name: &str) -> Option<Key> {
+        Key::ALL
+            .into_iter()
+            .find(|key| key.name().eq_ignore_ascii_case(name))
+    }
+
+    pub fn value_kind(self) -> ValueKind {
+        match self {
+            Key::RobotLocation | Key::RobotLocationPose => ValueKind::Pose,
+            Key::GestureTarget => ValueKind::Point,
+            Key::GestureArm => ValueKind::Arm,
+            Key::CulturalKnowledge => ValueKind::Words,
+            Key::TourSpecification => ValueKind::Tour,
+            _ => ValueKind::Text,
+        }
+    }
+
+    /// The dialect a key belongs to, or `None` for keys both dialects share.
+    pub fn dialect(self) -> Option<Dialect> {
+        match self {
+            Key::RobotLocation => Some(Dialect::Seed),
+            Key::RobotLocationPose | Key::CulturalKnowledge | Key::GestureArm => {
+                Some(Dialect::Current)
+            }
+            _ => None,
+        }
+    }
+
+    /// The message a key holds, if it is one of the six message keys.
+    pub fn message(self) -> Option<(Phase, Language)> {
+        use Language::*;
+        use Phase::*;
+        match self {
+            Key::PreGestureMessageEnglish => Some((Pre, English)),
+            Key::PreGestureMessageIsiZulu => Some((Pre, IsiZulu)),
+            Key::PreGestureMessageKinyarwanda => Some((Pre, Kinyarwanda)),
+            Key::PostGestureMessageEnglish => Some((Post, English)),
+            Key::PostGestureMessageIsiZulu => Some((Post, IsiZulu)),
+            Key::PostGestureMessageKinyarwanda => Some((Post, Kinyarwanda)),
+            _ => None,
+        }
+    }
+
+    /// The key of a message.
+    pub fn for_message(phase: Phase, language: Language) -> Key {
+        Key::ALL
+            .into_iter()
+            .find(|key| key.message() == Some((phase, language)))
+            .expect("every message has a key")
+    }
+
+    /// The slot a key fills in a location block (the two pose keys share one).
+    pub fn order(self) -> usize {
+        match self {
+            Key::RobotLocationDescription => 0,
+            Key::RobotLocation | Key::RobotLocationPose => 1,
+            other => other as usize,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip() {
+        for key in Key::ALL {
+            assert_eq!(Key::from_name(key.name()), Some(key));
+        }
+        assert_eq!(Key::from_name("postGestureMessageenglish"), None);
+        assert_eq!(
+            Key::from_name_ignoring_case("PreGestureMessageIsizulu"),
+            Some(Key::PreGestureMessageIsiZulu)
+        );
+    }
+
+    #[test]
+    fn message_keys() {
+        assert_eq!(
+            Key::for_message(Phase::Post, Language::Kinyarwanda),
+            Key::PostGestureMessageKinyarwanda
+        );
+        assert_eq!(Key::GestureArm.message(), None);
+    }
+}

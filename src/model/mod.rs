@@ -1,0 +1,183 @@
+//! The typed view of a knowledge base: locations and the tour, each value with its span.
+//!
+//! The model holds what the robot's reader would load from the file, read faithfully:
+//! a key in the wrong case is not a key (the robot ignores it, and so a message goes
+//! missing), later lines for the same id and key win, the last tour wins. It borrows its
+//! text from the [`SourceFile`](crate::SourceFile), so building it copies no strings.
+
+pub mod build;
+pub mod export;
+mod keys;
+mod text;
+
+pub use keys::{Dialect, Key, Language, Phase, ValueKind};
+pub use text::{is_placeholder, words};
+
+use serde::{Deserialize, Serialize};
+
+use crate::syntax::Span;
+
+/// A value read from the file, with the span of its text.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Value<T> {
+    pub value: T,
+    pub span: Span,
+}
+
+/// Where the robot stands: metres, metres, degrees.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
+pub struct Pose {
+    pub x: f64,
+    pub y: f64,
+    pub theta: f64,
+}
+
+/// A point the robot gestures at, in metres. `0 0 0` means no gesture.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
+pub struct Point {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+}
+
+impl Point {
+    /// `0 0 0`: the location has no gesture.
+    pub fn is_no_gesture(&self) -> bool {
+        self.x == 0.0 && self.y == 0.0 && self.z == 0.0
+    }
+}
+
+/// The arm the robot gestures with.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum Arm {
+    Left,
+    Right,
+}
+
+impl Arm {
+    pub fn name(self) -> &'static str {
+        match self {
+            Arm::Left => "left",
+            Arm::Right => "right",
+        }
+    }
+
+    pub fn parse(text: &str) -> Option<Arm> {
+        match text {
+            "left" => Some(Arm::Left),
+            "right" => Some(Arm::Right),
+            _ => None,
+        }
+    }
+}
+
+/// One place on the tour.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Location<'a> {
+    pub id: u32,
+    /// The first line that mentions this location.
+    pub first_line: Span,
+    pub description: Option<Value<&'a str>>,
+    pub pose: Option<Value<Pose>>,
+    /// The key the pose was written with (`robotLocation` or `robotLocationPose`).
+    pub pose_key: Option<Key>,
+    pub gesture_target: Option<Value<Point>>,
+    pub gesture_arm: Option<Value<Arm>>,
+    /// Indexed by [`Phase::index`], then [`Language::index`].
+    pub messages: [[Option<Value<&'a str>>; 3]; 2],
+    /// The words, as one value (split with [`words`]).
+    pub cultural_knowledge: Option<Value<&'a str>>,
+    /// Which keys have a line for this location, valid or not: bit `1 << Key::order()`.
+    pub given: u16,
+}
+
+impl<'a> Location<'a> {
+    pub fn new(id: u32, first_line: Span) -> Location<'a> {
+        Location {
+            id,
+            first_line,
+            description: None,
+            pose: None,
+            pose_key: None,
+            gesture_target: None,
+            gesture_arm: None,
+            messages: [[None; 3]; 2],
+            cultural_knowledge: None,
+            given: 0,
+        }
+    }
+
+    /// Whether the file has a line with this key for this location (even a malformed one).
+    pub fn has_line(&self, key: Key) -> bool {
+        self.given & (1 << key.order()) != 0
+    }
+
+    pub fn message(&self, phase: Phase, language: Language) -> Option<Value<&'a str>> {
+        self.messages[phase.index()][language.index()]
+    }
+
+    /// The culturalKnowledge words, empty when there are none.
+    pub fn cultural_words(&self) -> impl Iterator<Item = &'a str> {
+        self.cultural_knowledge
+            .map(|value| value.value)
+            .into_iter()
+            .flat_map(words)
+    }
+}
+
+/// The order in which the tour visits locations.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tour {
+    /// The whole `tourSpecification` line's arguments.
+    pub span: Span,
+    /// The declared number of stops, `n`, if it is a number.
+    pub declared: Option<Value<u64>>,
+    /// The location ids, in the order visited.
+    pub stops: Vec<Value<u32>>,
+}
+
+/// A whole knowledge base.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct KnowledgeBase<'a> {
+    /// `None` when the file has no key of either dialect.
+    pub dialect: Option<Dialect>,
+    /// In ascending id order.
+    locations: Vec<Location<'a>>,
+    pub tour: Option<Tour>,
+}
+
+impl<'a> KnowledgeBase<'a> {
+    pub fn new(
+        dialect: Option<Dialect>,
+        mut locations: Vec<Location<'a>>,
+        tour: Option<Tour>,
+    ) -> KnowledgeBase<'a> {
+        locations.sort_unstable_by_key(|location| location.id);
+        KnowledgeBase {
+            dialect,
+            locations,
+            tour,
+        }
+    }
+
+    /// Every location, in ascending id order.
+    pub fn locations(&self) -> &[Location<'a>] {
+        &self.locations
+    }
+
+    /// The location with this id.
+    pub fn location(&self, id: u32) -> Option<&Location<'a>> {
+        self.locations
+            .binary_search_by_key(&id, |location| location.id)
+            .ok()
+            .map(|index| &self.locations[index])
+    }
+
+    /// The tour's stops, in order (empty without a tour).
+    pub fn tour_stops(&self) -> impl Iterator<Item = u32> + '_ {
+        self.tour
+            .iter()
+            .flat_map(|tour| tour.stops.iter().map(|stop| stop.value))
+    }
+}

@@ -1,0 +1,48 @@
+use crate::diagnostic::Diagnostic;
+use crate::model::KnowledgeBase;
+use crate::rules::declare_rule;
+
+declare_rule! {
+    /// ## What it does
+    /// Flags a gesture target other than `0 0 0` whose coordinates add up to 0.
+    ///
+    /// ## Why it matters
+    /// The robot decides "no gesture here" by testing `x + y + z == 0`, not by comparing
+    /// each coordinate with 0, so a real target such as `1.0 -1.0 0.0` is never pointed at.
+    ///
+    /// ## Example
+    /// ```text
+    /// gestureTarget                 3 1.0 -1.0 0.0
+    /// ```
+    pub static GESTURE_TARGET_SUMS_TO_ZERO = {
+        name: "gesture-target-sums-to-zero",
+        category: Content,
+        severity: Warning,
+        fixable: false,
+        summary: "a target other than `0 0 0` whose coordinates sum to 0",
+    };
+}
+
+pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
+    for location in kb.locations() {
+        let Some(target) = location.gesture_target else {
+            continue;
+        };
+        let point = target.value;
+        if point.is_no_gesture() || (point.x + point.y + point.z).abs() > 1e-9 {
+            continue;
+        }
+        out.push(
+            Diagnostic::new(
+                &GESTURE_TARGET_SUMS_TO_ZERO,
+                target.span,
+                format!(
+                    "the gesture target of location {} adds up to 0: the robot takes that for \"no gesture\" and will not point",
+                    location.id
+                ),
+            )
+            .at_location(Some(location.id))
+            .with_help("move the target slightly (e.g. change z by 0.01) so its coordinates do not sum to 0"),
+        );
+    }
+}

@@ -1,0 +1,53 @@
+use crate::diagnostic::Diagnostic;
+use crate::model::KnowledgeBase;
+use crate::rules::declare_rule;
+use crate::syntax::{self, Span};
+
+declare_rule! {
+    /// ## What it does
+    /// Flags a pose whose heading `theta` lies outside -360..=360 degrees.
+    ///
+    /// ## Why it matters
+    /// Headings are degrees. A value like `1570` is usually radians typed by mistake
+    /// (`1.570`) or a slipped digit; the robot would turn to an unexpected heading.
+    ///
+    /// ## Example
+    /// ```text
+    /// robotLocationPose             2 3.5 6.3 1800
+    /// ```
+    pub static THETA_OUT_OF_RANGE = {
+        name: "theta-out-of-range",
+        category: Content,
+        severity: Warning,
+        fixable: false,
+        summary: "theta outside -360..=360",
+    };
+}
+
+pub fn check(kb: &KnowledgeBase<'_>, source: &str, out: &mut Vec<Diagnostic>) {
+    for location in kb.locations() {
+        let Some(pose) = location.pose else {
+            continue;
+        };
+        let theta = pose.value.theta;
+        if (-360.0..=360.0).contains(&theta) {
+            continue;
+        }
+        let span = syntax::tokens(pose.span.text(source), pose.span.start as usize)
+            .nth(2)
+            .map_or(pose.span, |(span, _): (Span, _)| span);
+        out.push(
+            Diagnostic::new(
+                &THETA_OUT_OF_RANGE,
+                span,
+                format!(
+                    "heading {theta}° at location {} is outside -360..360: the robot would turn to {:.0}°",
+                    location.id,
+                    theta.rem_euclid(360.0)
+                ),
+            )
+            .at_location(Some(location.id))
+            .with_help("write the heading in degrees between -360 and 360"),
+        );
+    }
+}

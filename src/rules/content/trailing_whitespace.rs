@@ -1,0 +1,57 @@
+use crate::diagnostic::{Diagnostic, Edit};
+use crate::rules::declare_rule;
+use crate::syntax::{Body, Line, Span, BOM};
+
+declare_rule! {
+    /// ## What it does
+    /// Flags spaces or tabs at the end of a line (including a line of only whitespace), and
+    /// removes them.
+    ///
+    /// ## Why it matters
+    /// They are invisible, but the robot's reader keeps them as part of the value, and
+    /// they make diffs noisy.
+    ///
+    /// ## Example
+    /// ```text
+    /// preGestureMessageEnglish      4 This is the Roomba.␠␠
+    /// ```
+    pub static TRAILING_WHITESPACE = {
+        name: "trailing-whitespace",
+        category: Content,
+        severity: Warning,
+        fixable: true,
+        summary: "spaces or tabs at the end of a line",
+    };
+}
+
+pub fn check(line: &Line, text: &str, out: &mut Vec<Diagnostic>) {
+    let span = match line.body {
+        // A blank line's whitespace is all indentation (after a byte-order mark, if any).
+        Body::Blank => {
+            let indent = line.indent.text(text);
+            let skip = if indent.starts_with(BOM) {
+                BOM.len()
+            } else {
+                0
+            };
+            Span::new(line.indent.start as usize + skip, line.indent.end as usize)
+        }
+        _ => line.trailing,
+    };
+    if span.is_empty() {
+        return;
+    }
+    let consequence = match line.body {
+        Body::Entry { .. } => "the robot's reader keeps it as part of the value",
+        _ => "it is invisible and makes diffs noisy",
+    };
+    out.push(
+        Diagnostic::new(
+            &TRAILING_WHITESPACE,
+            span,
+            format!("trailing whitespace: {consequence}"),
+        )
+        .with_help("remove it")
+        .with_fix("remove trailing whitespace", vec![Edit::delete(span)]),
+    );
+}

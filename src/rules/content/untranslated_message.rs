@@ -1,0 +1,64 @@
+use crate::diagnostic::Diagnostic;
+use crate::model::{is_placeholder, KnowledgeBase, Language};
+use crate::rules::content::messages;
+use crate::rules::declare_rule;
+
+declare_rule! {
+    /// ## What it does
+    /// Flags a message that is a placeholder, such as `No message in isiZulu`, instead of a
+    /// message.
+    ///
+    /// ## Why it matters
+    /// The robot speaks the placeholder aloud to a visitor who chose that language. A
+    /// translator can find every missing translation with
+    /// `ekb check --format concise | grep untranslated-message`, or read them in context
+    /// with `ekb tour --lang isizulu`.
+    ///
+    /// ## Example
+    /// ```text
+    /// preGestureMessageIsiZulu      1 No message in isiZulu
+    /// ```
+    pub static UNTRANSLATED_MESSAGE = {
+        name: "untranslated-message",
+        category: Content,
+        severity: Warning,
+        fixable: false,
+        summary: "a placeholder such as `No message in isiZulu` instead of a message",
+    };
+}
+
+pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
+    for location in kb.locations() {
+        for (phase, language, message) in messages(location) {
+            if !is_placeholder(message.value) {
+                continue;
+            }
+            let english = location
+                .message(phase, Language::English)
+                .filter(|english| !is_placeholder(english.value));
+            let help = match english {
+                Some(english) if language != Language::English => format!(
+                    "translate the English message into {}: \"{}\"",
+                    language.name(),
+                    english.value
+                ),
+                _ => format!("write the message in {}", language.name()),
+            };
+            out.push(
+                Diagnostic::new(
+                    &UNTRANSLATED_MESSAGE,
+                    message.span,
+                    format!(
+                        "the {} message {} the gesture at location {} is a placeholder: the robot would say \"{}\"",
+                        language.name(),
+                        phase.name(),
+                        location.id,
+                        message.value
+                    ),
+                )
+                .at_location(Some(location.id))
+                .with_help(help),
+            );
+        }
+    }
+}

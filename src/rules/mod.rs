@@ -1,0 +1,160 @@
+//! The rule catalogue (SPEC §4): one module per rule, grouped by category.
+//!
+//! Each rule is declared with [`declare_rule!`]: its doc comment is both its rustdoc and the
+//! text of `ekb explain RULE`, so the documentation has a single source. Rules that need
+//! the text of a line run while the model is built ([`crate::model::build`]); rules that need
+//! whole locations or the tour run afterwards, over the model ([`check_model`]).
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::model::KnowledgeBase;
+
+pub mod compat;
+mod consequence;
+pub mod content;
+pub mod structure;
+pub mod tour;
+
+/// A rule's identity and documentation.
+#[derive(Debug, PartialEq, Eq)]
+pub struct Rule {
+    /// Stable kebab-case name (part of the contract).
+    pub name: &'static str,
+    pub category: Category,
+    pub severity: Severity,
+    /// Whether `ekb fix` can repair what it finds.
+    pub fixable: bool,
+    /// One line: when the rule fires.
+    pub summary: &'static str,
+    /// Markdown: what it does, why it matters, an example.
+    pub doc: &'static str,
+}
+
+/// The sections of the catalogue.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Category {
+    Structure,
+    Tour,
+    Content,
+    Compat,
+}
+
+impl Category {
+    pub fn title(self) -> &'static str {
+        match self {
+            Category::Structure => "Structure",
+            Category::Tour => "Tour",
+            Category::Content => "Content",
+            Category::Compat => "Reference-reader compatibility",
+        }
+    }
+}
+
+/// Declares a rule as a `static` [`Rule`] whose doc comment becomes [`Rule::doc`].
+macro_rules! declare_rule {
+    (
+        $(#[doc = $doc:literal])+
+        pub static $ident:ident = {
+            name: $name:literal,
+            category: $category:ident,
+            severity: $severity:ident,
+            fixable: $fixable:literal,
+            summary: $summary:literal $(,)?
+        };
+    ) => {
+        $(#[doc = $doc])+
+        pub static $ident: $crate::rules::Rule = $crate::rules::Rule {
+            name: $name,
+            category: $crate::rules::Category::$category,
+            severity: $crate::diagnostic::Severity::$severity,
+            fixable: $fixable,
+            summary: $summary,
+            doc: concat!($($doc, "\n"),+),
+        };
+    };
+}
+pub(crate) use declare_rule;
+
+/// Every rule, in catalogue order.
+pub static ALL: &[&Rule] = &[
+    &structure::invalid_utf8::INVALID_UTF8,
+    &structure::unknown_key::UNKNOWN_KEY,
+    &structure::key_case::KEY_CASE,
+    &structure::missing_id::MISSING_ID,
+    &structure::invalid_id::INVALID_ID,
+    &structure::invalid_number::INVALID_NUMBER,
+    &structure::wrong_arity::WRONG_ARITY,
+    &structure::empty_value::EMPTY_VALUE,
+    &structure::invalid_value::INVALID_VALUE,
+    &structure::duplicate_key::DUPLICATE_KEY,
+    &structure::missing_field::MISSING_FIELD,
+    &structure::mixed_dialect::MIXED_DIALECT,
+    &structure::legacy_key::LEGACY_KEY,
+    &structure::control_character::CONTROL_CHARACTER,
+    &tour::tour_missing::TOUR_MISSING,
+    &tour::tour_duplicate_spec::TOUR_DUPLICATE_SPEC,
+    &tour::tour_count_mismatch::TOUR_COUNT_MISMATCH,
+    &tour::tour_empty::TOUR_EMPTY,
+    &tour::tour_unknown_location::TOUR_UNKNOWN_LOCATION,
+    &tour::tour_too_long::TOUR_TOO_LONG,
+    &tour::tour_repeated_stop::TOUR_REPEATED_STOP,
+    &tour::unused_location::UNUSED_LOCATION,
+    &content::untranslated_message::UNTRANSLATED_MESSAGE,
+    &content::repeated_word::REPEATED_WORD,
+    &content::trailing_whitespace::TRAILING_WHITESPACE,
+    &content::theta_out_of_range::THETA_OUT_OF_RANGE,
+    &content::gesture_target_sums_to_zero::GESTURE_TARGET_SUMS_TO_ZERO,
+    &content::gesture_behind_robot::GESTURE_BEHIND_ROBOT,
+    &compat::compat_line_too_long::COMPAT_LINE_TOO_LONG,
+    &compat::compat_leading_symbol::COMPAT_LEADING_SYMBOL,
+    &compat::compat_no_final_newline::COMPAT_NO_FINAL_NEWLINE,
+    &compat::compat_crlf::COMPAT_CRLF,
+    &compat::compat_bom::COMPAT_BOM,
+    &compat::compat_too_many_cultural_keys::COMPAT_TOO_MANY_CULTURAL_KEYS,
+];
+
+/// The rule with this name.
+pub fn by_name(name: &str) -> Option<&'static Rule> {
+    ALL.iter().copied().find(|rule| rule.name == name)
+}
+
+/// Runs the rules that look at whole locations and the tour.
+pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, out: &mut Vec<Diagnostic>) {
+    structure::missing_field::check(kb, out);
+    tour::tour_missing::check(kb, out);
+    if let Some(tour) = &kb.tour {
+        tour::tour_empty::check(tour, out);
+        tour::tour_count_mismatch::check(tour, out);
+        tour::tour_too_long::check(tour, out);
+        tour::tour_repeated_stop::check(tour, out);
+    }
+    tour::tour_unknown_location::check(kb, out);
+    tour::unused_location::check(kb, out);
+    content::untranslated_message::check(kb, out);
+    content::repeated_word::check(kb, out);
+    content::theta_out_of_range::check(kb, source, out);
+    content::gesture_target_sums_to_zero::check(kb, out);
+    content::gesture_behind_robot::check(kb, out);
+    compat::compat_too_many_cultural_keys::check(kb, out);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_are_unique_kebab_case_and_documented() {
+        let mut names: Vec<&str> = ALL.iter().map(|rule| rule.name).collect();
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), ALL.len());
+        for rule in ALL {
+            assert!(rule
+                .name
+                .bytes()
+                .all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'-'));
+            for section in ["## What it does", "## Why it matters", "## Example"] {
+                assert!(rule.doc.contains(section), "{} lacks {section}", rule.name);
+            }
+        }
+    }
+}

@@ -1,0 +1,69 @@
+use crate::diagnostic::Diagnostic;
+use crate::model::{Dialect, Key, KnowledgeBase, Language, Location, Phase};
+use crate::rules::{consequence, declare_rule};
+
+declare_rule! {
+    /// ## What it does
+    /// Flags a location that lacks its description, its pose, its gesture target or one of
+    /// its six messages (before and after the gesture, in English, isiZulu and Kinyarwanda).
+    ///
+    /// ## Why it matters
+    /// The robot's reader fills a missing field with nothing: a missing pose sends the
+    /// robot to (0, 0), a missing message is silence at that point of the tour. A field
+    /// whose line has a miscased or misspelled key counts as missing, because that is what
+    /// the robot loads.
+    ///
+    /// ## Example
+    /// ```text
+    /// robotLocationDescription      4 Roomba
+    /// robotLocation                 4 5.0 3.9 110
+    /// gestureTarget                 4 6.8 4.8 0.82
+    /// preGestureMessageEnglish      4 This is the Roomba
+    /// ...                           (no postGestureMessageEnglish for 4)
+    /// ```
+    pub static MISSING_FIELD = {
+        name: "missing-field",
+        category: Structure,
+        severity: Error,
+        fixable: false,
+        summary: "a location lacks its description, pose, gesture target or a message",
+    };
+}
+
+pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
+    let pose_key = kb.dialect.unwrap_or(Dialect::Seed).pose_key();
+    for location in kb.locations() {
+        for key in missing_keys(location, pose_key) {
+            out.push(
+                Diagnostic::new(
+                    &MISSING_FIELD,
+                    location.first_line,
+                    format!(
+                        "location {} has no `{}`: {}",
+                        location.id,
+                        key.name(),
+                        consequence::lost(key, Some(location.id))
+                    ),
+                )
+                .at_location(Some(location.id))
+                .with_help(format!(
+                    "add a line `{} {} …`",
+                    key.name(),
+                    location.id
+                )),
+            );
+        }
+    }
+}
+
+/// The required keys a location has no line for (a line with a bad value still counts).
+fn missing_keys(location: &Location<'_>, pose_key: Key) -> Vec<Key> {
+    let messages = Phase::ALL
+        .into_iter()
+        .flat_map(|phase| Language::ALL.map(|language| Key::for_message(phase, language)));
+    [Key::RobotLocationDescription, pose_key, Key::GestureTarget]
+        .into_iter()
+        .chain(messages)
+        .filter(|&key| !location.has_line(key))
+        .collect()
+}

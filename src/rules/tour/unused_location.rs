@@ -1,0 +1,52 @@
+use std::collections::HashSet;
+
+use crate::diagnostic::Diagnostic;
+use crate::model::KnowledgeBase;
+use crate::rules::declare_rule;
+
+declare_rule! {
+    /// ## What it does
+    /// Notes a location that no tour stop visits.
+    ///
+    /// ## Why it matters
+    /// It may be intended (a location kept for the receptionist scenario or a future
+    /// tour), but it is often a stop that was dropped from the tour by mistake.
+    ///
+    /// ## Example
+    /// ```text
+    /// tourSpecification 1 2      <- locations 1, 3, 4 and 5 are never visited
+    /// ```
+    pub static UNUSED_LOCATION = {
+        name: "unused-location",
+        category: Tour,
+        severity: Info,
+        fixable: false,
+        summary: "a location that no tour stop visits",
+    };
+}
+
+pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
+    if kb.tour.is_none() {
+        return; // tour-missing says it all
+    }
+    let visited: HashSet<u32> = kb.tour_stops().collect();
+    for location in kb.locations() {
+        if !visited.contains(&location.id) {
+            out.push(
+                Diagnostic::new(
+                    &UNUSED_LOCATION,
+                    location.first_line,
+                    format!(
+                        "location {} is not on the tour: the robot will never go there",
+                        location.id
+                    ),
+                )
+                .at_location(Some(location.id))
+                .with_help(format!(
+                    "add {} to `tourSpecification` if visitors should see it",
+                    location.id
+                )),
+            );
+        }
+    }
+}

@@ -1,0 +1,210 @@
+//! A knowledge-base file as read from disk: its name, its text, and where its lines start.
+//!
+//! The text is always valid UTF-8. A file that is not has each invalid byte replaced by `?`
+//! (one byte for one byte), so every byte offset still points at the same place in the
+//! original file; the invalid ranges are kept so that `invalid-utf8` can report them.
+
+use std::fmt;
+use std::io::Read;
+use std::path::{Path, PathBuf};
+
+use crate::syntax::Span;
+
+/// The largest file `ekb` reads. Larger inputs (or endless ones such as `/dev/zero`) are
+/// refused with a clear message instead of exhausting memory.
+pub const MAX_FILE_SIZE: u64 = 512 * 1024 * 1024;
+
+/// A file's contents, ready to be parsed.
+#[derive(Debug, Clone)]
+pub struct SourceFile {
+    name: String,
+    text: String,
+    invalid_utf8: Vec<Span>,
+}
+
+/// Why a file could not be read at all (exit code 2).
+#[derive(Debug)]
+pub struct ReadError {
+    pub path: PathBuf,
+    pub reason: String,
+}
+
+impl fmt::Display for ReadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "cannot read {}: {}", self.path.display(), self.reason)
+    }
+}
+
+impl std::error::Error for ReadError {}
+
+impl SourceFile {
+    /// Wraps bytes already in memory. `name` is what diagnostics call the file.
+    pub fn from_bytes(name: impl Into<String>, bytes: Vec<u8>) -> SourceFile {
+        let name = name.into();
+        match String::from_utf8(bytes) {
+            Ok(text) => SourceFile {
+                name,
+                text,
+                invalid_utf8: Vec::new(),
+            },
+            Err(err) => {
+                let (text, invalid_utf8) = sanitize(err.into_bytes());
+                SourceFile {
+                    name,
+                    text,
+                    invalid_utf8,
+                }
+            }
+        }
+    }
+
+    /// Reads a file from disk, or standard input for `-`.
+    pub fn read(path: &Path) -> Result<SourceFile, ReadError> {
+        let fail = |reason: String| ReadError {
+            path: path.to_path_buf(),
+            reason,
+        };
+        if path == Path::new("-") {
+            let bytes = read_limited(std::io::stdin().lock()).map_err(fail)?;
+            return Ok(SourceFile::from_bytes("<stdin>", bytes));
+        }
+        let metadata = std::fs::metadata(path).map_err(|e| fail(describe_io_error(&e)))?;
+        if metadata.is_dir() {
+            return Err(fail("it is a directory; give a knowledge-base file".into()));
+        }
+        if metadata.is_file() && metadata.len() > MAX_FILE_SIZE {
+            return Err(fail(too_large()));
+        }
+        let file = std::fs::File::open(path).map_err(|e| fail(describe_io_error(&e)))?;
+        let bytes = read_limited(file).map_err(fail)?;
+        Ok(SourceFile::from_bytes(path.display().to_string(), bytes))
+    }
+
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+
+    /// Byte ranges of the original file that were not valid UTF-8 (replaced by `?` in `text`).
+    pub fn invalid_utf8(&self) -> &[Span] {
+        &self.invalid_utf8
+    }
+}
+
+fn too_large() -> String {
+    format!(
+        "it is larger than {} MiB, the most ekb reads; is it really a knowledge base?",
+        MAX_FILE_SIZE / (1024 * 1024)
+    )
+}
+
+fn read_limited(reader: impl Read) -> Result<Vec<u8>, String> {
+    let mut bytes = Vec::new();
+    reader
+        .take(MAX_FILE_SIZE + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| describe_io_error(&e))?;
+    if bytes.len() as u64 > MAX_FILE_SIZE {
+        return Err(too_large());
+    }
+    Ok(bytes)
+}
+
+fn describe_io_error(err: &std::io::Error) -> String {
+    match err.kind() {
+        std::io::ErrorKind::NotFound => "no such file".into(),
+        std::io::ErrorKind::PermissionDenied => "permission denied".into(),
+        _ if err.raw_os_error() == Some(21) => {
+            "it is a directory; give a knowledge-base file".into()
+        }
+        _ => err.to_string(),
+    }
+}
+
+/// Replaces every byte of every invalid UTF-8 sequence by `?`, keeping offsets intact.
+fn sanitize(mut bytes: Vec<u8>) -> (String, Vec<Span>) {
+    let mut invalid = Vec::new();
+    let mut offset = 0;
+    loop {
+        match std::str::from_utf8(&bytes[offset..]) {
+            Ok(_) => break,
+            Err(err) => {
+                let start = offset + err.valid_up_to();
+                let len = err.error_len().unwrap_or(bytes.len() - start);
+                for byte in &mut bytes[start..start + len] {
+                    *byte = b'?';
+                }
+                invalid.push(Span::new(start, start + len));
+                offset = start + len;
+            }
+        }
+    }
+    let text = String::from_utf8(bytes).expect("every invalid sequence was replaced");
+    (text, invalid)
+}
+
+/// Converts byte offsets to 1-based lines and columns (columns count Unicode scalar values).
+#[derive(Debug, Clone)]
+pub struct LineIndex {
+    line_starts: Vec<u32>,
+}
+
+/// A 1-based line and column.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub struct Position {
+    pub line: u32,
+    pub column: u32,
+}
+
+impl LineIndex {
+    pub fn new(text: &str) -> LineIndex {
+        let mut line_starts = vec![0];
+        line_starts.extend(memchr::memchr_iter(b'\n', text.as_bytes()).map(|i| i as u32 + 1));
+        LineIndex { line_starts }
+    }
+
+    /// The line and column of a byte offset into `text`.
+    pub fn position(&self, text: &str, offset: u32) -> Position {
+        let line = self.line_starts.partition_point(|&start| start <= offset) - 1;
+        let start = self.line_starts[line] as usize;
+        let end = (offset as usize).min(text.len());
+        let column = text.as_bytes()[start..end]
+            .iter()
+            .filter(|&&b| (b & 0xC0) != 0x80)
+            .count();
+        Position {
+            line: line as u32 + 1,
+            column: column as u32 + 1,
+        }
+    }
+
+    /// The byte offset where a 1-based line starts.
+    pub fn line_start(&self, line: u32) -> u32 {
+        self.line_starts[(line as usize - 1).min(self.line_starts.len() - 1)]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn invalid_bytes_become_question_marks_in_place() {
+        let file = SourceFile::from_bytes("t", b"ab\xffc\xe2\x82".to_vec());
+        assert_eq!(file.text(), "ab?c??");
+        assert_eq!(file.invalid_utf8(), &[Span::new(2, 3), Span::new(4, 6)]);
+    }
+
+    #[test]
+    fn positions_count_characters() {
+        let text = "ab\nÙmuntu x\n";
+        let index = LineIndex::new(text);
+        assert_eq!(index.position(text, 0), Position { line: 1, column: 1 });
+        let x = text.find('x').unwrap() as u32;
+        assert_eq!(index.position(text, x), Position { line: 2, column: 8 });
+        assert_eq!(index.position(text, text.len() as u32).line, 3);
+    }
+}
