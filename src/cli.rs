@@ -46,10 +46,30 @@ pub enum ColorChoice {
 pub enum Command {
     /// Validate knowledge-base files against every rule
     Check(commands::check::Args),
+    /// A table of all locations
+    Locations(commands::locations::Args),
+    /// One location in full
+    Show(commands::show::Args),
+    /// The tour in order, as the robot will say it in one language
+    Tour(commands::tour::Args),
+    /// What changed between two knowledge bases, location by location
+    Diff(commands::diff::Args),
+    /// The typed model as JSON
+    Export(commands::export::Args),
+    /// JSON back to a canonical knowledge-base file
+    Import(commands::import::Args),
+    /// Rewrite files in the canonical layout
+    Fmt(commands::fmt::Args),
+    /// Apply the machine-applicable fixes
+    Fix(commands::fix::Args),
     /// List the rule catalogue
     Rules(commands::rules::Args),
     /// Show one rule's documentation
     Explain(commands::explain::Args),
+    /// Print a shell completion script
+    Completions(commands::completions::Args),
+    /// Print the man page
+    Man(commands::man::Args),
 }
 
 /// Parses the command line, runs the command and turns the outcome into an exit code.
@@ -58,8 +78,18 @@ pub fn main() -> ExitCode {
     let context = Context::new(&cli);
     let outcome = match &cli.command {
         Command::Check(args) => commands::check::run(args, &context),
+        Command::Locations(args) => commands::locations::run(args, &context),
+        Command::Show(args) => commands::show::run(args, &context),
+        Command::Tour(args) => commands::tour::run(args, &context),
+        Command::Diff(args) => commands::diff::run(args, &context),
+        Command::Export(args) => commands::export::run(args, &context),
+        Command::Import(args) => commands::import::run(args, &context),
+        Command::Fmt(args) => commands::fmt::run(args, &context),
+        Command::Fix(args) => commands::fix::run(args, &context),
         Command::Rules(args) => commands::rules::run(args, &context),
         Command::Explain(args) => commands::explain::run(args, &context),
+        Command::Completions(args) => commands::completions::run(args, &context),
+        Command::Man(args) => commands::man::run(args, &context),
     };
     match outcome {
         Ok(exit) => exit.into(),

@@ -1,11 +1,21 @@
 //! One module per `ekb` subcommand, and what they share: the context and the exit codes.
 
 pub mod check;
+pub mod completions;
+pub mod diff;
 pub mod explain;
+pub mod export;
+pub mod fix;
+pub mod fmt;
+pub mod import;
+pub mod locations;
+pub mod man;
 pub mod rules;
+pub mod show;
+pub mod tour;
 
 use std::cell::OnceCell;
-use std::fmt;
+
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -36,8 +46,8 @@ impl From<Exit> for ExitCode {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct CommandError(pub String);
 
-impl fmt::Display for CommandError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl std::fmt::Display for CommandError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(&self.0)
     }
 }

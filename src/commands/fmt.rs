@@ -1,0 +1,10 @@
+//! `ekb fmt` (not implemented yet).
+
+use super::{CommandError, CommandResult, Context};
+
+#[derive(Debug, clap::Args)]
+pub struct Args {}
+
+pub fn run(_args: &Args, _context: &Context) -> CommandResult {
+    Err(CommandError("`ekb fmt` is not implemented yet".into()))
+}

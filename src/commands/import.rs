@@ -1,0 +1,10 @@
+//! `ekb import` (not implemented yet).
+
+use super::{CommandError, CommandResult, Context};
+
+#[derive(Debug, clap::Args)]
+pub struct Args {}
+
+pub fn run(_args: &Args, _context: &Context) -> CommandResult {
+    Err(CommandError("`ekb import` is not implemented yet".into()))
+}
