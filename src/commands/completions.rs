@@ -1,12 +1,40 @@
-//! `ekb completions` (not implemented yet).
+//! `ekb completions SHELL`: a shell completion script (the same scripts are kept in
+//! `completions/`, and a test fails when they are stale).
 
-use super::{CommandError, CommandResult, Context};
+use std::io::Write;
+
+use clap::CommandFactory;
+use clap_complete::Shell;
+
+use super::{CommandResult, Context, Exit};
+use crate::cli::Cli;
 
 #[derive(Debug, clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// The shell to complete for
+    #[arg(value_enum)]
+    pub shell: Shell,
+}
 
-pub fn run(_args: &Args, _context: &Context) -> CommandResult {
-    Err(CommandError(
-        "`ekb completions` is not implemented yet".into(),
-    ))
+pub fn run(args: &Args, _context: &Context) -> CommandResult {
+    let mut stdout = std::io::stdout().lock();
+    stdout.write_all(&script(args.shell))?;
+    Ok(Exit::Clean)
+}
+
+/// The completion script for `shell`.
+pub fn script(shell: Shell) -> Vec<u8> {
+    let mut out = Vec::new();
+    clap_complete::generate(shell, &mut Cli::command(), "ekb", &mut out);
+    out
+}
+
+/// The file name each shell's script is kept under in `completions/`.
+pub fn file_name(shell: Shell) -> String {
+    match shell {
+        Shell::Zsh => "_ekb".to_string(),
+        Shell::PowerShell => "_ekb.ps1".to_string(),
+        Shell::Elvish => "ekb.elv".to_string(),
+        other => format!("ekb.{other}"),
+    }
 }

@@ -1,0 +1,171 @@
+# Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
+function __fish_ekb_global_optspecs
+    string join \n config= color= v/verbose q/quiet h/help V/version
+end
+
+function __fish_ekb_needs_command
+    # Figure out if the current invocation already has a command.
+    set -l cmd (commandline -opc)
+    set -e cmd[1]
+    argparse -s (__fish_ekb_global_optspecs) -- $cmd 2>/dev/null
+    or return
+    if set -q argv[1]
+        # Also print the command, so this can be used to figure out what it is.
+        echo $argv[1]
+        return 1
+    end
+    return 0
+end
+
+function __fish_ekb_using_subcommand
+    set -l cmd (__fish_ekb_needs_command)
+    test -z "$cmd"
+    and return 1
+    contains -- $cmd[1] $argv
+end
+
+complete -c ekb -n "__fish_ekb_needs_command" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_needs_command" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_needs_command" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_needs_command" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_needs_command" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_needs_command" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "check" -d 'Validate knowledge-base files against every rule'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "locations" -d 'A table of all locations'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "show" -d 'One location in full'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "tour" -d 'The tour in order, as the robot will say it in one language'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "diff" -d 'What changed between two knowledge bases, location by location'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "export" -d 'The typed model as JSON'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "import" -d 'JSON back to a canonical knowledge-base file'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "fmt" -d 'Rewrite files in the canonical layout'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "fix" -d 'Apply the machine-applicable fixes'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "rules" -d 'List the rule catalogue'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "explain" -d 'Show one rule\'s documentation'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "completions" -d 'Print a shell completion script'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "man" -d 'Print the man page'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l format -d 'Output format' -r -f -a "concise\t'One line per finding: `file:line:col: severity[rule] message`'
+json\t'One JSON object (SPEC §5)'
+github\t'GitHub Actions workflow commands (annotations)'"
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l deny-warnings -d 'Exit 1 on warnings too'
+complete -c ekb -n "__fish_ekb_using_subcommand check" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand check" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand check" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c ekb -n "__fish_ekb_using_subcommand check" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand locations" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand locations" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand locations" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand locations" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand locations" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand locations" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand show" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand show" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand show" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand show" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand show" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand show" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand diff" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand diff" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand diff" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand diff" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand diff" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand diff" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand export" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand export" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand export" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand export" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand export" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand export" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand import" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand import" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand import" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand import" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand import" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand import" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand fmt" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand fmt" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand rules" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand rules" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand rules" -l markdown -d 'Print the catalogue as a Markdown table (as in the README)'
+complete -c ekb -n "__fish_ekb_using_subcommand rules" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand rules" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand rules" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand rules" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand explain" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand explain" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand explain" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand explain" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand explain" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand explain" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand completions" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand completions" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand completions" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand completions" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand completions" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand completions" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand man" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand man" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand man" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand man" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand man" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand man" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "check" -d 'Validate knowledge-base files against every rule'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "locations" -d 'A table of all locations'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "show" -d 'One location in full'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "tour" -d 'The tour in order, as the robot will say it in one language'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "diff" -d 'What changed between two knowledge bases, location by location'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "export" -d 'The typed model as JSON'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "import" -d 'JSON back to a canonical knowledge-base file'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "fmt" -d 'Rewrite files in the canonical layout'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "fix" -d 'Apply the machine-applicable fixes'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "rules" -d 'List the rule catalogue'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "explain" -d 'Show one rule\'s documentation'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "completions" -d 'Print a shell completion script'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "man" -d 'Print the man page'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'

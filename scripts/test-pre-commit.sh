@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# End-to-end test of .pre-commit-hooks.yaml with the real pre-commit tool (from PyPI), in a
+# throwaway git repository: a commit of the seed file is refused with the diagnostics shown;
+# once fixed, it commits. Needs network access to PyPI and crates.io (pre-commit builds ekb
+# with `cargo install`). The hooks are taken from this repository's HEAD commit.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+python3 -m venv "$work/venv"
+"$work/venv/bin/pip" install --quiet --disable-pip-version-check pre-commit
+export PATH="$work/venv/bin:$PATH"
+# pre-commit builds ekb with `cargo install`; keep its build between runs.
+export CARGO_TARGET_DIR="$root/target/pre-commit"
+export PRE_COMMIT_HOME="$root/target/pre-commit-home"
+
+repo="$work/content"
+mkdir -p "$repo/data"
+cd "$repo"
+git init --quiet
+git config user.email editor@example.org
+git config user.name "Content Editor"
+cat > .pre-commit-config.yaml <<YAML
+repos:
+  - repo: $root
+    rev: $(git -C "$root" rev-parse HEAD)
+    hooks:
+      - id: ekb-check
+YAML
+pre-commit install --install-hooks >/dev/null
+
+fail() { echo "test-pre-commit: FAILED: $*" >&2; exit 1; }
+
+cp "$root/data/environmentKnowledgeBaseInput.dat" data/
+git add .pre-commit-config.yaml data/environmentKnowledgeBaseInput.dat
+if git commit --quiet -m "Add the seed knowledge base" >"$work/refused.log" 2>&1; then
+  cat "$work/refused.log"; fail "the seed file was committed despite its errors"
+fi
+grep -q "key-case" "$work/refused.log" || { cat "$work/refused.log"; fail "the refusal did not show key-case"; }
+grep -q "missing-field" "$work/refused.log" || { cat "$work/refused.log"; fail "the refusal did not show missing-field"; }
+echo "ok: the seed file is refused, with its diagnostics"
+
+sed -i 's/^postGestureMessageenglish/postGestureMessageEnglish/' data/environmentKnowledgeBaseInput.dat
+git add data/environmentKnowledgeBaseInput.dat
+git commit --quiet -m "Add the fixed knowledge base" >"$work/accepted.log" 2>&1 ||
+  { cat "$work/accepted.log"; fail "the fixed file was refused"; }
+echo "ok: the fixed file commits"
+echo "pre-commit hooks: 2 passed, 0 failed"
