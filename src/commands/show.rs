@@ -15,7 +15,7 @@ use crate::render::escape::escape;
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The location's id
-    #[arg(value_name = "ID", value_parser = location_id)]
+    #[arg(value_name = "ID", value_parser = location_id, allow_negative_numbers = true)]
     pub id: u32,
 
     /// Knowledge-base file (`-` for standard input) [default: the configured knowledgeBase]
