@@ -10,7 +10,9 @@ use super::{CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::export::ExportedLocation;
 use crate::model::{Dialect, Language, Location, Phase};
-use crate::present::{self, json, language, table, Gesture, Message, MESSAGE_LEGEND};
+use crate::present::{
+    self, json, language, table, Gesture, Message, TourPositions, MESSAGE_LEGEND,
+};
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -58,6 +60,7 @@ fn render_table(checked: &Checked<'_>) -> String {
     }
     header.extend(["messages", "tour stop"]);
     let mut table = table::new(&header);
+    let positions = TourPositions::new(kb);
     for location in kb.locations() {
         let mut row = vec![
             location.id.to_string(),
@@ -80,7 +83,7 @@ fn render_table(checked: &Checked<'_>) -> String {
             );
         }
         row.push(message_marks(location));
-        row.push(tour_cell(&present::tour_positions(checked, location.id)));
+        row.push(tour_cell(positions.of(location.id)));
         table.add_row(row);
     }
     let count = kb.locations().len();
@@ -160,6 +163,7 @@ struct JsonStatuses {
 impl JsonLocations {
     fn new(checked: &Checked<'_>) -> JsonLocations {
         let lines = present::Lines::new(checked.source.text());
+        let positions = TourPositions::new(&checked.kb);
         let locations = checked
             .kb
             .locations()
@@ -180,7 +184,7 @@ impl JsonLocations {
                         pre_gesture_message: statuses(Phase::Pre),
                         post_gesture_message: statuses(Phase::Post),
                     },
-                    tour_positions: present::tour_positions(checked, location.id),
+                    tour_positions: positions.of(location.id).to_vec(),
                     lines: [first, last],
                 }
             })

@@ -126,9 +126,9 @@ fn describe(field: Field, value: &FieldValue<'_>) -> String {
 
 /// `stop 2 of 5 on the tour`, `stops 1 and 5 of 5 on the tour` or `not on the tour`.
 fn tour_sentence(checked: &Checked<'_>, id: u32) -> String {
-    let positions = present::tour_positions(checked, id);
+    let positions = present::TourPositions::new(&checked.kb);
     let total = checked.kb.tour_stops().count();
-    match positions.as_slice() {
+    match positions.of(id) {
         [] => "not on the tour".to_string(),
         [1] => format!("stop 1 of {total} on the tour (the start and home pose)"),
         [one] => format!("stop {one} of {total} on the tour"),

@@ -10,9 +10,12 @@ pub mod language;
 pub mod table;
 
 use std::borrow::Cow;
+use std::collections::HashMap;
 
 use crate::check::Checked;
-use crate::model::{is_placeholder, Arm, Language, Location, Phase, Point, Pose, Value};
+use crate::model::{
+    is_placeholder, Arm, KnowledgeBase, Language, Location, Phase, Point, Pose, Value,
+};
 use crate::render::escape::escape;
 use crate::source::LineIndex;
 use crate::syntax::Span;
@@ -195,15 +198,24 @@ pub fn line_range((first, last): (u32, u32)) -> String {
     }
 }
 
-/// The 1-based positions of `id` on the tour (a location may be visited more than once).
-pub fn tour_positions(checked: &Checked<'_>, id: u32) -> Vec<usize> {
-    checked
-        .kb
-        .tour_stops()
-        .enumerate()
-        .filter(|&(_, stop)| stop == id)
-        .map(|(index, _)| index + 1)
-        .collect()
+/// Where each location is on the tour: 1-based positions (a location may be visited more
+/// than once), computed once so that a long tour and many locations stay linear.
+#[derive(Debug, Default)]
+pub struct TourPositions(HashMap<u32, Vec<usize>>);
+
+impl TourPositions {
+    pub fn new(kb: &KnowledgeBase<'_>) -> TourPositions {
+        let mut positions: HashMap<u32, Vec<usize>> = HashMap::new();
+        for (index, id) in kb.tour_stops().enumerate() {
+            positions.entry(id).or_default().push(index + 1);
+        }
+        TourPositions(positions)
+    }
+
+    /// The positions of location `id`, empty when the tour does not visit it.
+    pub fn of(&self, id: u32) -> &[usize] {
+        self.0.get(&id).map_or(&[], Vec::as_slice)
+    }
 }
 
 /// Tells the user, on standard error, that the file has errors, so that a view that looks
