@@ -113,6 +113,24 @@ fn write_output(output: Option<&Path>, value: &impl serde::Serialize) -> Result<
     };
     let mut file = tempfile::NamedTempFile::new_in(dir).map_err(|e| fail(e.to_string()))?;
     json::write(value, &mut file).map_err(|e| fail(e.to_string()))?;
+    // A temporary file is private (0600); the export gets the permissions of the file it
+    // replaces, or those of an ordinary new file.
+    let permissions = match std::fs::metadata(path) {
+        Ok(metadata) => metadata.permissions(),
+        Err(_) => ordinary_permissions(file.as_file()).map_err(|e| fail(e.to_string()))?,
+    };
+    file.as_file()
+        .set_permissions(permissions)
+        .map_err(|e| fail(e.to_string()))?;
     file.persist(path).map_err(|e| fail(e.error.to_string()))?;
     Ok(())
+}
+
+/// The permissions of a new export: the temporary file's (0600) opened up to 0644 on Unix.
+fn ordinary_permissions(temporary: &std::fs::File) -> std::io::Result<std::fs::Permissions> {
+    #[allow(unused_mut)]
+    let mut permissions = temporary.metadata()?.permissions();
+    #[cfg(unix)]
+    std::os::unix::fs::PermissionsExt::set_mode(&mut permissions, 0o644);
+    Ok(permissions)
 }

@@ -121,3 +121,22 @@ fn control_characters_are_escaped_but_kept() {
         "Red\u{1b}[31m alert\u{202E} reversed"
     );
 }
+
+#[cfg(unix)]
+#[test]
+fn output_file_keeps_the_permissions_it_replaces() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    let fresh = dir.path().join("fresh.json");
+    let existing = dir.path().join("existing.json");
+    std::fs::write(&existing, "old").unwrap();
+    std::fs::set_permissions(&existing, std::fs::Permissions::from_mode(0o640)).unwrap();
+    for path in [&fresh, &existing] {
+        let out = run(&["export", &fixture("seed.dat"), "-o", path.to_str().unwrap()]);
+        assert_eq!(out.code, 0);
+    }
+    let mode =
+        |path: &std::path::Path| std::fs::metadata(path).unwrap().permissions().mode() & 0o777;
+    assert_eq!(mode(&fresh), 0o644);
+    assert_eq!(mode(&existing), 0o640);
+}
