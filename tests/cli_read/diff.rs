@@ -179,3 +179,18 @@ fn control_characters_are_escaped() {
     ]);
     assert_terminal_safe(&out.stdout);
 }
+
+#[test]
+fn standard_input_as_one_side() {
+    let seed = std::fs::read(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(SEED)).unwrap();
+    let out = crate::common::run_with(
+        crate::common::ekb()
+            .args(["diff", SEED, "-"])
+            .write_stdin(seed),
+    );
+    assert_eq!(out.code, 0);
+    assert!(out
+        .stdout
+        .ends_with("and <stdin> describe the same knowledge base\n"));
+    assert_eq!(run(&["diff", "-", "-"]).code, 2);
+}

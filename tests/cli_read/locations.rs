@@ -112,3 +112,14 @@ fn bad_format_and_missing_file_exit_2() {
     assert_eq!(out.code, 2);
     assert!(out.stderr.contains("no such file"), "{}", out.stderr);
 }
+
+#[test]
+fn without_a_file_the_configured_knowledge_base_is_read() {
+    // config/environmentKnowledgeBaseConfiguration.ini names data/environmentKnowledgeBaseInput.dat.
+    let configured = run(&["locations", "--format", "json"]);
+    assert_eq!(configured.code, 0);
+    assert_eq!(
+        configured.stdout,
+        run(&["locations", "--format", "json", SEED]).stdout
+    );
+}
