@@ -1,8 +1,9 @@
 //! Presenting a knowledge base to people: the pieces `locations`, `show`, `tour` and `diff`
 //! share, so that a pose, a gesture or a message reads the same in every command.
 //!
-//! Everything here that returns text taken from the file has already passed it through
-//! [`escape`]: callers may print it as it is.
+//! Every helper here that formats text from the file for people has passed it through
+//! [`escape`], so callers may print what it returns. Raw values ([`Message::value`],
+//! [`field::FieldValue`]) are for JSON, which [`json::write`] makes just as safe.
 
 pub mod field;
 pub mod json;
