@@ -124,13 +124,14 @@ fn describe(field: Field, value: &FieldValue<'_>) -> String {
     }
 }
 
-/// `stop 2 of 5 on the tour`, `stops 1 and 5 of 5 on the tour` or `not on the tour`.
+/// `stop 2 of 5 on the tour`, `stops 1 and 3 of 3 on the tour (the start and home pose)` or
+/// `not on the tour`.
 fn tour_sentence(checked: &Checked<'_>, id: u32) -> String {
     let positions = present::TourPositions::new(&checked.kb);
     let total = checked.kb.tour_stops().count();
-    match positions.of(id) {
-        [] => "not on the tour".to_string(),
-        [1] => format!("stop 1 of {total} on the tour (the start and home pose)"),
+    let positions = positions.of(id);
+    let mut sentence = match positions {
+        [] => return "not on the tour".to_string(),
         [one] => format!("stop {one} of {total} on the tour"),
         [init @ .., last] => {
             let init: Vec<String> = init.iter().map(usize::to_string).collect();
@@ -139,5 +140,9 @@ fn tour_sentence(checked: &Checked<'_>, id: u32) -> String {
                 init.join(", ")
             )
         }
+    };
+    if positions.first() == Some(&1) {
+        sentence.push_str(" (the start and home pose)");
     }
+    sentence
 }

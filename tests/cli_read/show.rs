@@ -20,6 +20,13 @@ fn the_first_stop_is_the_home_pose() {
     assert!(out
         .stdout
         .contains("stop 1 of 5 on the tour (the start and home pose)"));
+    // seed.dat's tour is 1 2 1.
+    let out = run(&["show", "1", &fixture("seed.dat")]);
+    assert!(out
+        .stdout
+        .contains("; stops 1 and 3 of 3 on the tour (the start and home pose)\n"));
+    let out = run(&["show", "2", &fixture("no-tour.dat")]);
+    assert!(out.stdout.contains("; not on the tour\n"));
 }
 
 #[test]
