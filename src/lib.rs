@@ -6,6 +6,8 @@
 //! - [`model`]: the typed knowledge base, as the robot's reader would load it;
 //! - [`rules`]: the rule catalogue, one module per rule;
 //! - [`render`]: output formats for findings;
+//! - [`present`]: how `locations`, `show`, `tour` and `diff` show a knowledge base;
+//! - [`diff`]: the semantic difference of two knowledge bases;
 //! - [`cli`]: the `ekb` command line, one module per command under `commands`.
 
 pub mod check;
@@ -13,7 +15,9 @@ pub mod cli;
 pub mod commands;
 pub mod config;
 pub mod diagnostic;
+pub mod diff;
 pub mod model;
+pub mod present;
 pub mod render;
 pub mod rules;
 pub mod source;

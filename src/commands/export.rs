@@ -1,10 +1,136 @@
-//! `ekb export` (not implemented yet).
+//! `ekb export [FILE] [-o OUT]`: the typed model as JSON (SPEC §5), or its JSON Schema.
 
-use super::{CommandError, CommandResult, Context};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use super::{CommandError, CommandResult, Context, Exit};
+use crate::check::{check, Checked};
+use crate::model::export::ExportedKnowledgeBase;
+use crate::present::json;
+use crate::render::{self, escape::escape, Format, RenderOptions};
+use crate::Severity;
 
 #[derive(Debug, clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// Knowledge-base file (`-` for standard input) [default: the configured knowledgeBase]
+    #[arg(value_name = "FILE", conflicts_with = "schema")]
+    pub file: Option<PathBuf>,
 
-pub fn run(_args: &Args, _context: &Context) -> CommandResult {
-    Err(CommandError("`ekb export` is not implemented yet".into()))
+    /// Output format (JSON is the only one)
+    #[arg(long, value_enum, default_value_t = ExportFormat::Json)]
+    pub format: ExportFormat,
+
+    /// Write to this file instead of standard output (`-` is standard output)
+    #[arg(short, long, value_name = "OUT")]
+    pub output: Option<PathBuf>,
+
+    /// Export even if the file has errors (what the robot would load of it)
+    #[arg(long)]
+    pub allow_errors: bool,
+
+    /// Print the JSON Schema of the export instead
+    #[arg(long)]
+    pub schema: bool,
+}
+
+/// `ekb export --format`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ExportFormat {
+    /// The JSON of SPEC §5
+    Json,
+}
+
+pub fn run(args: &Args, context: &Context) -> CommandResult {
+    if args.schema {
+        let schema = schemars::schema_for!(ExportedKnowledgeBase);
+        write_output(args.output.as_deref(), &schema)?;
+        return Ok(Exit::Clean);
+    }
+    let options = context.read_options()?;
+    let source = context.read(&context.input(args.file.as_deref())?)?;
+    let checked = check(&source, &options);
+    if checked.has_errors() && !args.allow_errors {
+        let summary = checked.summary();
+        // Only the errors stop the export; the warnings would bury them.
+        let errors = Checked {
+            diagnostics: checked
+                .diagnostics
+                .iter()
+                .filter(|d| d.severity() == Severity::Error)
+                .cloned()
+                .collect(),
+            kb: checked.kb.clone(),
+            source: checked.source,
+        };
+        let mut stderr = std::io::stderr().lock();
+        let render_options = RenderOptions {
+            color: context.color_stderr(),
+            quiet: true,
+        };
+        let files = std::slice::from_ref(&errors);
+        render::render(
+            Format::Concise,
+            files,
+            &summary,
+            &mut stderr,
+            &render_options,
+        )?;
+        writeln!(
+            stderr,
+            "ekb: not exported: {} has {} (fix them, or give --allow-errors to export what the robot would load)",
+            escape(source.name()),
+            plural(summary.errors, "error")
+        )?;
+        return Ok(Exit::Findings);
+    }
+    write_output(
+        args.output.as_deref(),
+        &ExportedKnowledgeBase::from(&checked.kb),
+    )?;
+    Ok(Exit::Clean)
+}
+
+fn plural(count: usize, word: &str) -> String {
+    if count == 1 {
+        format!("1 {word}")
+    } else {
+        format!("{count} {word}s")
+    }
+}
+
+/// Writes JSON to `output` (atomically: a temporary file, then a rename) or standard output.
+fn write_output(output: Option<&Path>, value: &impl serde::Serialize) -> Result<(), CommandError> {
+    let Some(path) = output.filter(|path| *path != Path::new("-")) else {
+        let mut stdout = std::io::stdout().lock();
+        json::write(value, &mut stdout)?;
+        stdout.flush()?;
+        return Ok(());
+    };
+    let fail = |reason: String| CommandError(format!("cannot write {}: {reason}", path.display()));
+    let dir = match path.parent() {
+        Some(parent) if !parent.as_os_str().is_empty() => parent,
+        _ => Path::new("."),
+    };
+    let mut file = tempfile::NamedTempFile::new_in(dir).map_err(|e| fail(e.to_string()))?;
+    json::write(value, &mut file).map_err(|e| fail(e.to_string()))?;
+    // A temporary file is private (0600); the export gets the permissions of the file it
+    // replaces, or those of an ordinary new file.
+    let permissions = match std::fs::metadata(path) {
+        Ok(metadata) => metadata.permissions(),
+        Err(_) => ordinary_permissions(file.as_file()).map_err(|e| fail(e.to_string()))?,
+    };
+    file.as_file()
+        .set_permissions(permissions)
+        .map_err(|e| fail(e.to_string()))?;
+    file.persist(path).map_err(|e| fail(e.error.to_string()))?;
+    Ok(())
+}
+
+/// The permissions of a new export: the temporary file's (0600) opened up to 0644 on Unix.
+fn ordinary_permissions(temporary: &std::fs::File) -> std::io::Result<std::fs::Permissions> {
+    #[allow(unused_mut)]
+    let mut permissions = temporary.metadata()?.permissions();
+    #[cfg(unix)]
+    std::os::unix::fs::PermissionsExt::set_mode(&mut permissions, 0o644);
+    Ok(permissions)
 }

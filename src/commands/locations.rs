@@ -1,12 +1,253 @@
-//! `ekb locations` (not implemented yet).
+//! `ekb locations [FILE]`: every location in id order, as a table, JSON, or the layout of
+//! the robot's own `printToScreen()`.
 
-use super::{CommandError, CommandResult, Context};
+use std::io::Write;
+use std::path::PathBuf;
+
+use serde::Serialize;
+
+use super::{CommandResult, Context, Exit};
+use crate::check::{check, Checked};
+use crate::model::export::ExportedLocation;
+use crate::model::{Dialect, Language, Location, Phase};
+use crate::present::{
+    self, json, language, table, Gesture, Message, TourPositions, MESSAGE_LEGEND,
+};
 
 #[derive(Debug, clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// Knowledge-base file (`-` for standard input) [default: the configured knowledgeBase]
+    #[arg(value_name = "FILE")]
+    pub file: Option<PathBuf>,
 
-pub fn run(_args: &Args, _context: &Context) -> CommandResult {
-    Err(CommandError(
-        "`ekb locations` is not implemented yet".into(),
-    ))
+    /// Output format
+    #[arg(long, value_enum, default_value_t = LocationsFormat::Table)]
+    pub format: LocationsFormat,
+}
+
+/// `ekb locations --format`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum LocationsFormat {
+    /// A table that fits the terminal
+    Table,
+    /// One JSON object: the export's locations, with message status and tour positions
+    Json,
+    /// The layout of the robot's printToScreen() (the document's Figure 3), to compare with its log
+    Classic,
+}
+
+pub fn run(args: &Args, context: &Context) -> CommandResult {
+    let options = context.read_options()?;
+    let source = context.read(&context.input(args.file.as_deref())?)?;
+    let checked = check(&source, &options);
+    present::note_errors(&checked, context.quiet);
+    let mut stdout = std::io::stdout().lock();
+    match args.format {
+        LocationsFormat::Table => stdout.write_all(render_table(&checked).as_bytes())?,
+        LocationsFormat::Json => json::write(&JsonLocations::new(&checked), &mut stdout)?,
+        LocationsFormat::Classic => stdout.write_all(render_classic(&checked).as_bytes())?,
+    }
+    stdout.flush()?;
+    Ok(Exit::Clean)
+}
+
+fn render_table(checked: &Checked<'_>) -> String {
+    let kb = &checked.kb;
+    let with_arm = kb.locations().iter().any(|l| l.gesture_arm.is_some());
+    let mut header = vec!["id", "description", "pose (x, y, θ)", "gesture target"];
+    if with_arm {
+        header.push("arm");
+    }
+    header.extend(["messages", "tour stop"]);
+    let mut table = table::new(&header);
+    let positions = TourPositions::new(kb);
+    for location in kb.locations() {
+        let mut row = vec![
+            location.id.to_string(),
+            location
+                .description
+                .map_or_else(|| "—".to_string(), |d| present::text(d.value).into_owned()),
+            location
+                .pose
+                .map_or_else(|| "—".to_string(), |p| present::pose(&p.value)),
+            location
+                .gesture_target
+                .map_or_else(|| "—".to_string(), |t| Gesture::of(&t.value).short()),
+        ];
+        if with_arm {
+            row.push(
+                location
+                    .gesture_arm
+                    .map_or("—", |arm| arm.value.name())
+                    .to_string(),
+            );
+        }
+        row.push(message_marks(location));
+        row.push(tour_cell(positions.of(location.id)));
+        table.add_row(row);
+    }
+    let count = kb.locations().len();
+    let plural = if count == 1 { "" } else { "s" };
+    format!("{table}\n{count} location{plural}. {MESSAGE_LEGEND}\n")
+}
+
+/// `before EN ✓ ZU ~ RW ~` and `after` on a second line.
+fn message_marks(location: &Location<'_>) -> String {
+    Phase::ALL
+        .iter()
+        .map(|&phase| {
+            let marks: Vec<String> = Language::ALL
+                .iter()
+                .map(|&lang| {
+                    let mark = Message::of(location, phase, lang).mark();
+                    format!("{} {mark}", language::code(lang))
+                })
+                .collect();
+            format!("{:<6} {}", phase.name(), marks.join(" "))
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// `1 (start)`, `2, 5` or `—` (not on the tour).
+fn tour_cell(positions: &[usize]) -> String {
+    if positions.is_empty() {
+        return "—".to_string();
+    }
+    positions
+        .iter()
+        .map(|&position| match position {
+            1 => "1 (start)".to_string(),
+            n => n.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// `ekb locations --format json`.
+#[derive(Serialize)]
+struct JsonLocations {
+    dialect: Option<Dialect>,
+    locations: Vec<JsonLocation>,
+    tour: Option<Vec<u32>>,
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct JsonLocation {
+    #[serde(flatten)]
+    location: ExportedLocation,
+    /// `written`, `placeholder` or `missing`, per message.
+    message_status: JsonMessageStatus,
+    /// 1-based positions on the tour.
+    tour_positions: Vec<usize>,
+    /// The first and last line of the location in the file.
+    lines: [u32; 2],
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct JsonMessageStatus {
+    pre_gesture_message: JsonStatuses,
+    post_gesture_message: JsonStatuses,
+}
+
+#[derive(Serialize)]
+struct JsonStatuses {
+    english: &'static str,
+    #[serde(rename = "isiZulu")]
+    isi_zulu: &'static str,
+    kinyarwanda: &'static str,
+}
+
+impl JsonLocations {
+    fn new(checked: &Checked<'_>) -> JsonLocations {
+        let lines = present::Lines::new(checked.source.text());
+        let positions = TourPositions::new(&checked.kb);
+        let locations = checked
+            .kb
+            .locations()
+            .iter()
+            .map(|location| {
+                let statuses = |phase| {
+                    let status = |lang| Message::of(location, phase, lang).status();
+                    JsonStatuses {
+                        english: status(Language::English),
+                        isi_zulu: status(Language::IsiZulu),
+                        kinyarwanda: status(Language::Kinyarwanda),
+                    }
+                };
+                let (first, last) = lines.range(location);
+                JsonLocation {
+                    location: ExportedLocation::from(location),
+                    message_status: JsonMessageStatus {
+                        pre_gesture_message: statuses(Phase::Pre),
+                        post_gesture_message: statuses(Phase::Post),
+                    },
+                    tour_positions: positions.of(location.id).to_vec(),
+                    lines: [first, last],
+                }
+            })
+            .collect();
+        JsonLocations {
+            dialect: checked.kb.dialect,
+            locations,
+            tour: checked
+                .kb
+                .tour
+                .as_ref()
+                .map(|_| checked.kb.tour_stops().collect()),
+        }
+    }
+}
+
+/// The labels of the robot's printout, each padded to the width of the longest.
+const CLASSIC_WIDTH: usize = 33;
+
+/// The layout of the robot's `printToScreen()` and of the document's example application
+/// (section 6): one block per location, in id order. As on the robot, numbers are 32-bit
+/// floats printed with one decimal, and what the file lacks prints as 0.0 or nothing.
+fn render_classic(checked: &Checked<'_>) -> String {
+    let mut out = String::new();
+    let float = |n: f64| format!("{:.1}", n as f32);
+    let triple = |[a, b, c]: [f64; 3]| format!("({}, {} {})", float(a), float(b), float(c));
+    for location in checked.kb.locations() {
+        let label = |name: &str| format!("{name:<CLASSIC_WIDTH$}");
+        let pose = location.pose.map(|p| p.value);
+        let target = location.gesture_target.map(|t| t.value);
+        out.push_str(&format!("{}{:<4} \n", label("Key"), location.id));
+        out.push_str(&format!(
+            "{}{} \n",
+            label("Location Description"),
+            location
+                .description
+                .map_or("".into(), |d| present::text(d.value))
+        ));
+        out.push_str(&format!(
+            "{}{}\n",
+            label("Robot Location"),
+            triple(pose.map_or([0.0; 3], |p| [p.x, p.y, p.theta]))
+        ));
+        out.push_str(&format!(
+            "{}{} \n",
+            label("Gesture Target"),
+            triple(target.map_or([0.0; 3], |t| [t.x, t.y, t.z]))
+        ));
+        for phase in Phase::ALL {
+            let prefix = match phase {
+                Phase::Pre => "Pre-Gesture Message",
+                Phase::Post => "Post-Gesture Message",
+            };
+            for lang in Language::ALL {
+                let text = location.message(phase, lang).map_or("", |m| m.value);
+                out.push_str(&format!(
+                    "{}{} \n",
+                    label(&format!("{prefix} {}", lang.name())),
+                    present::text(text)
+                ));
+            }
+        }
+        out.push('\n');
+    }
+    out
 }

@@ -1,10 +1,148 @@
-//! `ekb show` (not implemented yet).
+//! `ekb show ID [FILE]`: one location in full, every field with its line number, and what
+//! `ekb check` finds there.
 
-use super::{CommandError, CommandResult, Context};
+use std::io::Write;
+use std::path::PathBuf;
+
+use super::{CommandResult, Context, Exit};
+use crate::check::{check, Checked};
+use crate::model::build::parse_id;
+use crate::model::{Dialect, Location};
+use crate::present::field::{Field, FieldValue};
+use crate::present::{self, table, Lines};
+use crate::render::escape::escape;
 
 #[derive(Debug, clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// The location's id
+    #[arg(value_name = "ID", value_parser = location_id, allow_negative_numbers = true)]
+    pub id: u32,
 
-pub fn run(_args: &Args, _context: &Context) -> CommandResult {
-    Err(CommandError("`ekb show` is not implemented yet".into()))
+    /// Knowledge-base file (`-` for standard input) [default: the configured knowledgeBase]
+    #[arg(value_name = "FILE")]
+    pub file: Option<PathBuf>,
+}
+
+fn location_id(text: &str) -> Result<u32, String> {
+    parse_id(text.trim())
+        .ok_or_else(|| "a location id is a whole number from 1 to 2147483647".into())
+}
+
+pub fn run(args: &Args, context: &Context) -> CommandResult {
+    let options = context.read_options()?;
+    let source = context.read(&context.input(args.file.as_deref())?)?;
+    let checked = check(&source, &options);
+    let Some(location) = checked.kb.location(args.id) else {
+        eprintln!("ekb: {}", not_found(&checked, args.id));
+        return Ok(Exit::Findings);
+    };
+    let mut stdout = std::io::stdout().lock();
+    stdout.write_all(render(&checked, location).as_bytes())?;
+    stdout.flush()?;
+    Ok(Exit::Clean)
+}
+
+/// `no location 6 in FILE; the nearest ids are 5, 4 and 3`.
+fn not_found(checked: &Checked<'_>, id: u32) -> String {
+    let file = escape(checked.source.name());
+    let mut ids: Vec<u32> = checked.kb.locations().iter().map(|l| l.id).collect();
+    if ids.is_empty() {
+        return format!("no location {id} in {file}: it has no locations");
+    }
+    ids.sort_by_key(|&other| (other.abs_diff(id), other));
+    ids.truncate(3);
+    let listed: Vec<String> = ids.iter().map(u32::to_string).collect();
+    let listed = match listed.as_slice() {
+        [one] => format!("the only id is {one}"),
+        [init @ .., last] => format!("the nearest ids are {} and {last}", init.join(", ")),
+        [] => unreachable!("not empty"),
+    };
+    format!("no location {id} in {file}; {listed} (`ekb locations` lists them all)")
+}
+
+fn render(checked: &Checked<'_>, location: &Location<'_>) -> String {
+    let lines = Lines::new(checked.source.text());
+    let dialect = checked.kb.dialect.unwrap_or(Dialect::Seed);
+    let title = location.description.map_or_else(
+        || "(no description)".to_string(),
+        |d| present::text(d.value).into_owned(),
+    );
+    let mut out = format!(
+        "Location {}: {title}\n{}, {}; {}\n\n",
+        location.id,
+        escape(checked.source.name()),
+        present::line_range(lines.range(location)),
+        tour_sentence(checked, location.id),
+    );
+    let mut table = table::new(&["line", "field", "value"]);
+    for field in Field::ALL {
+        let given = field.has_line(location);
+        if field.is_current_only() && !given && dialect == Dialect::Seed {
+            continue;
+        }
+        let key = match field {
+            Field::Pose => location.pose_key.unwrap_or(dialect.pose_key()),
+            other => other.key(dialect),
+        };
+        let (line, value) = match field.get(location) {
+            Some((value, span)) => (lines.of(span).to_string(), describe(field, &value)),
+            None if given => ("–".into(), "invalid: see the findings below".into()),
+            None if field.is_current_only() => ("–".into(), "(not given)".into()),
+            None => ("–".into(), "MISSING".into()),
+        };
+        table.add_row([line, key.name().to_string(), value]);
+    }
+    out.push_str(&format!("{table}\n"));
+    let findings: Vec<_> = checked
+        .diagnostics
+        .iter()
+        .filter(|d| d.location_id == Some(location.id))
+        .collect();
+    if !findings.is_empty() {
+        out.push_str("\nFindings at this location (`ekb check`):\n");
+        for diagnostic in findings {
+            out.push_str(&format!(
+                "  line {}: {}[{}] {}\n",
+                lines.of(diagnostic.span),
+                diagnostic.severity().name(),
+                diagnostic.rule.name,
+                escape(&diagnostic.message)
+            ));
+        }
+    }
+    out
+}
+
+/// A field's value, with what it means where that is not plain.
+fn describe(field: Field, value: &FieldValue<'_>) -> String {
+    match (field, value) {
+        (Field::GestureTarget, FieldValue::Point(target)) => present::Gesture::of(target).short(),
+        (Field::Message(..), FieldValue::Text(text)) if crate::model::is_placeholder(text) => {
+            format!("{} (placeholder, untranslated)", value.human(false))
+        }
+        _ => value.human(false),
+    }
+}
+
+/// `stop 2 of 5 on the tour`, `stops 1 and 3 of 3 on the tour (the start and home pose)` or
+/// `not on the tour`.
+fn tour_sentence(checked: &Checked<'_>, id: u32) -> String {
+    let positions = present::TourPositions::new(&checked.kb);
+    let total = checked.kb.tour_stops().count();
+    let positions = positions.of(id);
+    let mut sentence = match positions {
+        [] => return "not on the tour".to_string(),
+        [one] => format!("stop {one} of {total} on the tour"),
+        [init @ .., last] => {
+            let init: Vec<String> = init.iter().map(usize::to_string).collect();
+            format!(
+                "stops {} and {last} of {total} on the tour",
+                init.join(", ")
+            )
+        }
+    };
+    if positions.first() == Some(&1) {
+        sentence.push_str(" (the start and home pose)");
+    }
+    sentence
 }

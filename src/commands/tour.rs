@@ -1,10 +1,298 @@
-//! `ekb tour` (not implemented yet).
+//! `ekb tour [FILE] --lang L`: the tour in order, as the robot will perform it in one
+//! language — where it stands, where it points, what it says — with every message that is
+//! missing or untranslated in that language shown as such.
 
-use super::{CommandError, CommandResult, Context};
+use std::io::Write;
+use std::path::PathBuf;
+
+use serde::Serialize;
+
+use super::{CommandResult, Context, Exit};
+use crate::check::{check, Checked};
+use crate::model::{Arm, Language, Location, Phase, Point, Pose};
+use crate::present::{self, json, language, Gesture, Lines, Message};
+use crate::render::escape::escape;
 
 #[derive(Debug, clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// Knowledge-base file (`-` for standard input) [default: the configured knowledgeBase]
+    #[arg(value_name = "FILE")]
+    pub file: Option<PathBuf>,
 
-pub fn run(_args: &Args, _context: &Context) -> CommandResult {
-    Err(CommandError("`ekb tour` is not implemented yet".into()))
+    /// The language the robot speaks: english, isizulu, kinyarwanda (any case), or en, zu, rw
+    #[arg(long, value_name = "L", ignore_case = true, value_parser = language::parser(), default_value = "english")]
+    pub lang: Language,
+
+    /// Output format
+    #[arg(long, value_enum, default_value_t = TourFormat::Text)]
+    pub format: TourFormat,
+}
+
+/// `ekb tour --format`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum TourFormat {
+    /// The tour as a script to read
+    Text,
+    /// One JSON object
+    Json,
+}
+
+pub fn run(args: &Args, context: &Context) -> CommandResult {
+    let options = context.read_options()?;
+    let source = context.read(&context.input(args.file.as_deref())?)?;
+    let checked = check(&source, &options);
+    present::note_errors(&checked, context.quiet);
+    let file = escape(source.name());
+    let Some(tour) = &checked.kb.tour else {
+        eprintln!("ekb: {file} has no tour: add a `tourSpecification` line");
+        return Ok(Exit::Findings);
+    };
+    if tour.stops.is_empty() {
+        eprintln!("ekb: the tour of {file} has no stops");
+        return Ok(Exit::Findings);
+    }
+    let tour = Tour::new(&checked, args.lang);
+    let mut stdout = std::io::stdout().lock();
+    match args.format {
+        TourFormat::Text => stdout.write_all(tour.text(&file).as_bytes())?,
+        TourFormat::Json => json::write(&tour, &mut stdout)?,
+    }
+    stdout.flush()?;
+    Ok(Exit::Clean)
+}
+
+/// The tour as the robot will perform it in one language.
+#[derive(Serialize)]
+struct Tour<'a> {
+    #[serde(serialize_with = "serialize_language")]
+    language: Language,
+    stops: Vec<Stop<'a>>,
+    /// Messages written in the language (placeholders and missing ones are not).
+    translated: usize,
+    /// Messages the tour says: two per stop.
+    messages: usize,
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct Stop<'a> {
+    /// 1-based.
+    stop: usize,
+    id: u32,
+    /// The first stop: its pose is the robot's initial pose and its home.
+    start: bool,
+    /// Whether the file has a location with this id.
+    found: bool,
+    description: Option<&'a str>,
+    pose: Option<Pose>,
+    gesture_target: Option<Point>,
+    /// Whether the robot points: the target is not `0 0 0` and does not sum to 0.
+    points: bool,
+    gesture_arm: Option<Arm>,
+    before: Said<'a>,
+    after: Said<'a>,
+}
+
+/// One message of a stop in the tour's language.
+#[derive(Serialize)]
+struct Said<'a> {
+    /// `written`, `placeholder` or `missing`.
+    status: &'static str,
+    /// The text in the file (a placeholder too); null when missing.
+    text: Option<&'a str>,
+    line: Option<u32>,
+    /// The English message, what a translator should translate (null for English itself).
+    english: Option<&'a str>,
+    #[serde(skip)]
+    message: Message<'a>,
+}
+
+fn serialize_language<S: serde::Serializer>(language: &Language, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(language.name())
+}
+
+impl<'a> Tour<'a> {
+    fn new(checked: &'a Checked<'a>, language: Language) -> Tour<'a> {
+        let lines = Lines::new(checked.source.text());
+        let stops: Vec<Stop> = checked
+            .kb
+            .tour_stops()
+            .enumerate()
+            .map(|(index, id)| {
+                let location = checked.kb.location(id);
+                let said = |phase| Said::new(location, phase, language, &lines);
+                Stop {
+                    stop: index + 1,
+                    id,
+                    start: index == 0,
+                    found: location.is_some(),
+                    description: location.and_then(|l| l.description).map(|d| d.value),
+                    pose: location.and_then(|l| l.pose).map(|p| p.value),
+                    gesture_target: location.and_then(|l| l.gesture_target).map(|t| t.value),
+                    points: location
+                        .and_then(|l| l.gesture_target)
+                        .is_some_and(|t| matches!(Gesture::of(&t.value), Gesture::At(_))),
+                    gesture_arm: location.and_then(|l| l.gesture_arm).map(|a| a.value),
+                    before: said(Phase::Pre),
+                    after: said(Phase::Post),
+                }
+            })
+            .collect();
+        let translated = stops
+            .iter()
+            .flat_map(|stop| [&stop.before, &stop.after])
+            .filter(|said| matches!(said.message, Message::Written(_)))
+            .count();
+        Tour {
+            language,
+            messages: stops.len() * 2,
+            stops,
+            translated,
+        }
+    }
+
+    fn text(&self, file: &str) -> String {
+        let order: Vec<String> = self.stops.iter().map(|s| s.id.to_string()).collect();
+        let count = self.stops.len();
+        let mut out = format!(
+            "Tour of {file} in {}: {count} stop{} ({})\n",
+            self.language.name(),
+            if count == 1 { "" } else { "s" },
+            order.join(" → ")
+        );
+        for stop in &self.stops {
+            out.push('\n');
+            out.push_str(&stop.text(self.language));
+        }
+        out.push('\n');
+        out.push_str(&self.closing());
+        out
+    }
+
+    /// `isiZulu: 0 of 10 messages translated (10 placeholders)`.
+    fn closing(&self) -> String {
+        let verb = match self.language {
+            Language::English => "written",
+            _ => "translated",
+        };
+        let count = |status| {
+            self.stops
+                .iter()
+                .flat_map(|stop| [&stop.before, &stop.after])
+                .filter(|said| said.status == status)
+                .count()
+        };
+        let mut parts = Vec::new();
+        for (status, word) in [("placeholder", "placeholder"), ("missing", "missing")] {
+            let n = count(status);
+            if n > 0 {
+                let plural = if n > 1 && word == "placeholder" {
+                    "s"
+                } else {
+                    ""
+                };
+                parts.push(format!("{n} {word}{plural}"));
+            }
+        }
+        let detail = if parts.is_empty() {
+            String::new()
+        } else {
+            format!(" ({})", parts.join(", "))
+        };
+        format!(
+            "{}: {} of {} messages {verb}{detail}\n",
+            self.language.name(),
+            self.translated,
+            self.messages
+        )
+    }
+}
+
+impl Stop<'_> {
+    fn text(&self, language: Language) -> String {
+        let start = if self.start {
+            "  [start: the robot's initial pose and home]"
+        } else {
+            ""
+        };
+        if !self.found {
+            return format!(
+                "Stop {}: location {} — NOT IN THE FILE: the robot has nothing to do or say here{start}\n",
+                self.stop, self.id
+            );
+        }
+        let description = self.description.map_or_else(
+            || "(no description)".to_string(),
+            |d| present::text(d).into_owned(),
+        );
+        let mut out = format!(
+            "Stop {}: location {}, {description}{start}\n",
+            self.stop, self.id
+        );
+        let stands = self.pose.map_or_else(
+            || "MISSING pose: the robot's reader leaves it at 0, 0, 0°".to_string(),
+            |pose| present::pose(&pose),
+        );
+        let gesture = self.gesture_target.map_or_else(
+            || "MISSING gesture target: the robot does not point".to_string(),
+            |target| Gesture::of(&target).sentence(self.gesture_arm),
+        );
+        out.push_str(&format!("  {:<13}{stands}\n", "stands at"));
+        out.push_str(&format!("  {:<13}{gesture}\n", "gesture"));
+        for (said, label) in [(&self.before, "says before"), (&self.after, "says after")] {
+            out.push_str(&said.text(label, language));
+        }
+        out
+    }
+}
+
+impl<'a> Said<'a> {
+    fn new(
+        location: Option<&Location<'a>>,
+        phase: Phase,
+        language: Language,
+        lines: &Lines<'_>,
+    ) -> Said<'a> {
+        let message = location.map_or(Message::Missing, |l| Message::of(l, phase, language));
+        let english = match language {
+            Language::English => None,
+            _ => location
+                .and_then(|l| l.message(phase, Language::English))
+                .map(|m| m.value),
+        };
+        Said {
+            status: message.status(),
+            text: message.value().map(|v| v.value),
+            line: message.value().map(|v| lines.of(v.span)),
+            english,
+            message,
+        }
+    }
+
+    fn text(&self, label: &str, language: Language) -> String {
+        let line = self
+            .line
+            .map(|n| format!(" (line {n})"))
+            .unwrap_or_default();
+        let first = match self.message {
+            Message::Written(value) => format!("{}{line}", present::quoted(value.value)),
+            Message::Placeholder(value) => format!(
+                "UNTRANSLATED: the file has the placeholder {}{line}",
+                present::quoted(value.value)
+            ),
+            Message::Missing => format!(
+                "MISSING: no {} message, the robot says nothing",
+                language.name()
+            ),
+        };
+        let mut out = format!("  {label:<13}{first}\n");
+        if !matches!(self.message, Message::Written(_)) && language != Language::English {
+            let hint = match self.english {
+                Some(english) => format!("translate from English: {}", present::quoted(english)),
+                None => "no English message either".to_string(),
+            };
+            out.push_str(&format!("  {:<13}{hint}\n", ""));
+        }
+        out
+    }
 }

@@ -5,7 +5,7 @@
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use crate::model::{Arm, Dialect, Point, Pose};
+use crate::model::{Arm, Dialect, KnowledgeBase, Language, Location, Phase, Point, Pose};
 
 /// A whole knowledge base as JSON.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
@@ -43,4 +43,45 @@ pub struct ExportedMessages {
     #[serde(rename = "isiZulu")]
     pub isi_zulu: Option<String>,
     pub kinyarwanda: Option<String>,
+}
+
+impl From<&KnowledgeBase<'_>> for ExportedKnowledgeBase {
+    /// The model as JSON: the values the robot would load, nothing of the layout.
+    fn from(kb: &KnowledgeBase<'_>) -> ExportedKnowledgeBase {
+        ExportedKnowledgeBase {
+            dialect: kb.dialect,
+            locations: kb.locations().iter().map(ExportedLocation::from).collect(),
+            tour: kb
+                .tour
+                .as_ref()
+                .map(|tour| tour.stops.iter().map(|stop| stop.value).collect()),
+        }
+    }
+}
+
+impl From<&Location<'_>> for ExportedLocation {
+    fn from(location: &Location<'_>) -> ExportedLocation {
+        let messages = |phase: Phase| {
+            let text = |language: Language| {
+                location
+                    .message(phase, language)
+                    .map(|value| value.value.to_string())
+            };
+            ExportedMessages {
+                english: text(Language::English),
+                isi_zulu: text(Language::IsiZulu),
+                kinyarwanda: text(Language::Kinyarwanda),
+            }
+        };
+        ExportedLocation {
+            id: location.id,
+            description: location.description.map(|value| value.value.to_string()),
+            pose: location.pose.map(|value| value.value),
+            gesture_target: location.gesture_target.map(|value| value.value),
+            gesture_arm: location.gesture_arm.map(|value| value.value),
+            pre_gesture_message: messages(Phase::Pre),
+            post_gesture_message: messages(Phase::Post),
+            cultural_knowledge: location.cultural_words().map(str::to_string).collect(),
+        }
+    }
 }

@@ -1,0 +1,269 @@
+//! Presenting a knowledge base to people: the pieces `locations`, `show`, `tour` and `diff`
+//! share, so that a pose, a gesture or a message reads the same in every command.
+//!
+//! Every helper here that formats text from the file for people has passed it through
+//! [`escape`], so callers may print what it returns. Raw values ([`Message::value`],
+//! [`field::FieldValue`]) are for JSON, which [`json::write`] makes just as safe.
+
+pub mod field;
+pub mod json;
+pub mod language;
+pub mod table;
+
+use std::borrow::Cow;
+use std::collections::HashMap;
+
+use crate::check::Checked;
+use crate::model::{
+    is_placeholder, Arm, KnowledgeBase, Language, Location, Phase, Point, Pose, Value,
+};
+use crate::render::escape::escape;
+use crate::source::LineIndex;
+use crate::syntax::Span;
+
+/// A number as engineers write it: `2.6`, `-90.0`, `0.82` (the shortest exact form, with a
+/// decimal point so that it reads as a coordinate).
+pub fn number(n: f64) -> String {
+    format!("{n:?}")
+}
+
+/// `2.6, 8.1, -90.0°`
+pub fn pose(pose: &Pose) -> String {
+    format!(
+        "{}, {}, {}°",
+        number(pose.x),
+        number(pose.y),
+        number(pose.theta)
+    )
+}
+
+/// `3.2, 8.4, 0.82`
+pub fn point(point: &Point) -> String {
+    format!(
+        "{}, {}, {}",
+        number(point.x),
+        number(point.y),
+        number(point.z)
+    )
+}
+
+/// Whether, and at what, the robot gestures at a location.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Gesture {
+    /// `0 0 0`: no gesture, by design.
+    None,
+    /// A target the robot's reader skips because its coordinates sum to 0 (SPEC §2.9).
+    Skipped(Point),
+    /// The robot points at this target.
+    At(Point),
+}
+
+impl Gesture {
+    pub fn of(target: &Point) -> Gesture {
+        if target.is_no_gesture() {
+            Gesture::None
+        } else if target.x + target.y + target.z == 0.0 {
+            Gesture::Skipped(*target)
+        } else {
+            Gesture::At(*target)
+        }
+    }
+
+    /// `no gesture`, `3.2, 8.4, 0.82` or `1, -1, 0 (sums to 0: the robot does not point)`.
+    pub fn short(&self) -> String {
+        match self {
+            Gesture::None => "no gesture".to_string(),
+            Gesture::Skipped(target) => {
+                format!("{} (sums to 0: the robot does not point)", point(target))
+            }
+            Gesture::At(target) => point(target),
+        }
+    }
+
+    /// A sentence for the tour: what the robot does with its arm.
+    pub fn sentence(&self, arm: Option<Arm>) -> String {
+        match self {
+            Gesture::None => "does not point (gesture target 0 0 0)".to_string(),
+            Gesture::Skipped(target) => format!(
+                "does not point: the target {} sums to 0, which the robot's reader takes for \"no gesture\"",
+                point(target)
+            ),
+            Gesture::At(target) => match arm {
+                Some(arm) => format!("points at {} with the {} arm", point(target), arm.name()),
+                None => format!("points at {}", point(target)),
+            },
+        }
+    }
+}
+
+/// What a location has for one message in one language.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Message<'a> {
+    /// A real message.
+    Written(Value<&'a str>),
+    /// A placeholder such as `No message in isiZulu`: the robot would say it as it is.
+    Placeholder(Value<&'a str>),
+    /// No message: the robot says nothing.
+    Missing,
+}
+
+impl<'a> Message<'a> {
+    pub fn of(location: &Location<'a>, phase: Phase, language: Language) -> Message<'a> {
+        match location.message(phase, language) {
+            Some(value) if is_placeholder(value.value) => Message::Placeholder(value),
+            Some(value) => Message::Written(value),
+            None => Message::Missing,
+        }
+    }
+
+    /// The mark of the locations table; see [`MESSAGE_LEGEND`].
+    pub fn mark(&self) -> &'static str {
+        match self {
+            Message::Written(_) => "✓",
+            Message::Placeholder(_) => "~",
+            Message::Missing => "✗",
+        }
+    }
+
+    /// `written`, `placeholder` or `missing`, as JSON outputs say it.
+    pub fn status(&self) -> &'static str {
+        match self {
+            Message::Written(_) => "written",
+            Message::Placeholder(_) => "placeholder",
+            Message::Missing => "missing",
+        }
+    }
+
+    /// The text in the file, if any (placeholders included).
+    pub fn value(&self) -> Option<Value<&'a str>> {
+        match self {
+            Message::Written(value) | Message::Placeholder(value) => Some(*value),
+            Message::Missing => None,
+        }
+    }
+}
+
+/// What the marks of [`Message::mark`] mean.
+pub const MESSAGE_LEGEND: &str =
+    "messages: ✓ written  ~ placeholder, untranslated  ✗ missing (the robot says nothing)";
+
+/// A text value from the file, escaped and in double quotes.
+pub fn quoted(text: &str) -> String {
+    format!("\"{}\"", escape(text))
+}
+
+/// A text value from the file, escaped.
+pub fn text(text: &str) -> Cow<'_, str> {
+    escape(text)
+}
+
+/// The 1-based line numbers of spans in one file.
+#[derive(Debug)]
+pub struct Lines<'a> {
+    text: &'a str,
+    index: LineIndex,
+}
+
+impl<'a> Lines<'a> {
+    pub fn new(text: &'a str) -> Lines<'a> {
+        Lines {
+            text,
+            index: LineIndex::new(text),
+        }
+    }
+
+    /// The line a span starts on.
+    pub fn of(&self, span: Span) -> u32 {
+        self.index.position(self.text, span.start).line
+    }
+
+    /// The first and last lines that hold a value of `location`.
+    pub fn range(&self, location: &Location<'_>) -> (u32, u32) {
+        field::Field::ALL
+            .iter()
+            .filter_map(|field| field.get(location))
+            .map(|(_, span)| self.of(span))
+            .chain([self.of(location.first_line)])
+            .fold((u32::MAX, 0), |(low, high), line| {
+                (low.min(line), high.max(line))
+            })
+    }
+}
+
+/// `lines 28–36`, or `line 46` when it is one.
+pub fn line_range((first, last): (u32, u32)) -> String {
+    if first == last {
+        format!("line {first}")
+    } else {
+        format!("lines {first}–{last}")
+    }
+}
+
+/// Where each location is on the tour: 1-based positions (a location may be visited more
+/// than once), computed once so that a long tour and many locations stay linear.
+#[derive(Debug, Default)]
+pub struct TourPositions(HashMap<u32, Vec<usize>>);
+
+impl TourPositions {
+    pub fn new(kb: &KnowledgeBase<'_>) -> TourPositions {
+        let mut positions: HashMap<u32, Vec<usize>> = HashMap::new();
+        for (index, id) in kb.tour_stops().enumerate() {
+            positions.entry(id).or_default().push(index + 1);
+        }
+        TourPositions(positions)
+    }
+
+    /// The positions of location `id`, empty when the tour does not visit it.
+    pub fn of(&self, id: u32) -> &[usize] {
+        self.0.get(&id).map_or(&[], Vec::as_slice)
+    }
+}
+
+/// Tells the user, on standard error, that the file has errors, so that a view that looks
+/// incomplete (a missing message, a pose at 0) is not taken for the whole story.
+pub fn note_errors(checked: &Checked<'_>, quiet: bool) {
+    let errors = checked
+        .diagnostics
+        .iter()
+        .filter(|d| d.severity() == crate::Severity::Error)
+        .count();
+    if errors > 0 && !quiet {
+        let plural = if errors == 1 { "" } else { "s" };
+        eprintln!(
+            "ekb: note: {} has {errors} error{plural}; `ekb check` lists them",
+            escape(checked.source.name())
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_read_as_written() {
+        assert_eq!(number(2.6), "2.6");
+        assert_eq!(number(-90.0), "-90.0");
+        assert_eq!(number(0.82), "0.82");
+        assert_eq!(
+            pose(&Pose {
+                x: 2.6,
+                y: 8.1,
+                theta: -90.0
+            }),
+            "2.6, 8.1, -90.0°"
+        );
+    }
+
+    #[test]
+    fn gestures() {
+        let at = |x, y, z| Gesture::of(&Point { x, y, z });
+        assert_eq!(at(0.0, 0.0, 0.0).short(), "no gesture");
+        assert_eq!(at(3.2, 8.4, 0.82).short(), "3.2, 8.4, 0.82");
+        assert!(matches!(at(1.0, -1.0, 0.0), Gesture::Skipped(_)));
+        assert_eq!(
+            at(3.2, 8.4, 0.82).sentence(Some(Arm::Left)),
+            "points at 3.2, 8.4, 0.82 with the left arm"
+        );
+    }
+}

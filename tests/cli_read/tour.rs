@@ -1,0 +1,155 @@
+use crate::common::{assert_terminal_safe, fixture, run, SEED};
+
+/// The `Stop N: location ID` headings, as (N, ID).
+fn stops(text: &str) -> Vec<(u32, u32)> {
+    text.lines()
+        .filter_map(|line| line.strip_prefix("Stop "))
+        .map(|rest| {
+            let (number, rest) = rest.split_once(": location ").unwrap();
+            let id: String = rest.chars().take_while(char::is_ascii_digit).collect();
+            (number.parse().unwrap(), id.parse().unwrap())
+        })
+        .collect()
+}
+
+#[test]
+fn isizulu_tour_of_the_seed() {
+    let out = run(&["tour", "--lang", "isizulu", SEED]);
+    assert_eq!(out.code, 0);
+    assert_eq!(stops(&out.stdout), [(1, 1), (2, 4), (3, 3), (4, 2), (5, 5)]);
+    assert!(out.stdout.contains(
+        "Stop 1: location 1, Pepper's starting location  [start: the robot's initial pose and home]\n"
+    ));
+    assert!(out
+        .stdout
+        .ends_with("\nisiZulu: 0 of 10 messages translated (10 placeholders)\n"));
+    assert!(out.stdout.contains(
+        "  says before  UNTRANSLATED: the file has the placeholder \"No message in isiZulu\" (line 5)\n               translate from English: \"Welcome the the robotics lab at Carnegie Mellon University Africa\"\n"
+    ));
+    insta::assert_snapshot!("tour_seed_isizulu", out.stdout);
+}
+
+#[test]
+fn languages_by_name_or_code_in_any_case() {
+    let reference = run(&["tour", "--lang", "isizulu", SEED]).stdout;
+    for spelling in ["isiZulu", "ISIZULU", "zu", "ZU"] {
+        assert_eq!(
+            run(&["tour", "--lang", spelling, SEED]).stdout,
+            reference,
+            "{spelling}"
+        );
+    }
+    let kinyarwanda = run(&["tour", "--lang", "RW", SEED]).stdout;
+    assert!(kinyarwanda.ends_with("Kinyarwanda: 0 of 10 messages translated (10 placeholders)\n"));
+}
+
+#[test]
+fn bad_language_lists_the_choices() {
+    let out = run(&["tour", "--lang", "french", SEED]);
+    assert_eq!(out.code, 2);
+    assert!(
+        out.stderr
+            .contains("invalid value 'french' for '--lang <L>'"),
+        "{}",
+        out.stderr
+    );
+    assert!(
+        out.stderr
+            .contains("[possible values: english, isizulu, kinyarwanda, en, zu, rw]"),
+        "{}",
+        out.stderr
+    );
+}
+
+#[test]
+fn english_shows_the_missing_message() {
+    let out = run(&["tour", "--lang", "en", SEED]);
+    assert_eq!(out.code, 0);
+    assert!(out.stdout.contains(
+        "Stop 2: location 4, Roomba\n  stands at    5.0, 3.9, 110.0°\n  gesture      points at 6.8, 4.8, 0.82\n  says before  \"This is the Roomba\" (line 31)\n  says after   MISSING: no English message, the robot says nothing\n"
+    ));
+    assert!(out
+        .stdout
+        .ends_with("English: 9 of 10 messages written (1 missing)\n"));
+}
+
+#[test]
+fn current_dialect_tour() {
+    let out = run(&["tour", "--lang", "zu", &fixture("current.dat")]);
+    assert_eq!(out.code, 0);
+    assert!(out
+        .stdout
+        .contains("  gesture      points at 4.4, 7.8, 0.82 with the left arm\n"));
+    assert!(out.stdout.contains(
+        "  gesture      does not point: the target 1.0, -1.0, 0.0 sums to 0, which the robot's reader takes for \"no gesture\"\n"
+    ));
+    assert!(out
+        .stdout
+        .ends_with("isiZulu: 2 of 6 messages translated (4 placeholders)\n"));
+    insta::assert_snapshot!("tour_current_isizulu", out.stdout);
+}
+
+#[test]
+fn json_format() {
+    let out = run(&["tour", "--lang", "zu", "--format", "json", SEED]);
+    assert_eq!(out.code, 0);
+    let json: serde_json::Value = serde_json::from_str(&out.stdout).unwrap();
+    assert_eq!(json["language"], "isiZulu");
+    assert_eq!(json["translated"], 0);
+    assert_eq!(json["messages"], 10);
+    let ids: Vec<u64> = json["stops"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["id"].as_u64().unwrap())
+        .collect();
+    assert_eq!(ids, [1, 4, 3, 2, 5]);
+    let first = &json["stops"][0];
+    assert_eq!(first["start"], true);
+    assert_eq!(first["points"], false);
+    assert_eq!(json["stops"][1]["start"], false);
+    assert_eq!(
+        first["before"],
+        serde_json::json!({
+            "status": "placeholder",
+            "text": "No message in isiZulu",
+            "line": 5,
+            "english": "Welcome the the robotics lab at Carnegie Mellon University Africa"
+        })
+    );
+    assert_eq!(
+        json["stops"][1]["after"]["english"],
+        serde_json::Value::Null
+    );
+}
+
+#[test]
+fn a_stop_with_no_location() {
+    let out = run(&["tour", &fixture("tour-unknown-stop.dat")]);
+    assert_eq!(out.code, 0);
+    assert!(out.stdout.contains(
+        "Stop 2: location 9 — NOT IN THE FILE: the robot has nothing to do or say here\n"
+    ));
+    assert!(out
+        .stdout
+        .ends_with("English: 4 of 6 messages written (2 missing)\n"));
+}
+
+#[test]
+fn no_tour() {
+    let out = run(&["tour", &fixture("no-tour.dat")]);
+    assert_eq!(out.code, 1);
+    assert_eq!(out.stdout, "");
+    assert!(out.stderr.contains(
+        "ekb: tests/fixtures/read/no-tour.dat has no tour: add a `tourSpecification` line"
+    ));
+}
+
+#[test]
+fn control_characters_are_escaped() {
+    for format in ["text", "json"] {
+        let out = run(&["tour", "--format", format, &fixture("control.dat")]);
+        assert_eq!(out.code, 0);
+        assert_terminal_safe(&out.stdout);
+    }
+}
