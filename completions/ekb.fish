@@ -58,13 +58,16 @@ complete -c ekb -n "__fish_ekb_using_subcommand check" -s v -l verbose -d 'Print
 complete -c ekb -n "__fish_ekb_using_subcommand check" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand locations" -l format -d 'Output format' -r -f -a "table\t'A table that fits the terminal'
+json\t'One JSON object: the export\'s locations, with message status and tour positions'
+classic\t'The layout of the robot\'s printToScreen() (the document\'s Figure 3), to compare with its log'"
 complete -c ekb -n "__fish_ekb_using_subcommand locations" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand locations" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand locations" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand locations" -s q -l quiet -d 'Print only findings and errors, no summary'
-complete -c ekb -n "__fish_ekb_using_subcommand locations" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand locations" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand locations" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand show" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
@@ -74,29 +77,43 @@ complete -c ekb -n "__fish_ekb_using_subcommand show" -s v -l verbose -d 'Print 
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s h -l help -d 'Print help'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l lang -d 'The language the robot speaks: english, isizulu, kinyarwanda (any case), or en, zu, rw' -r -f -a "english\t''
+isizulu\t''
+kinyarwanda\t''
+en\t''
+zu\t''
+rw\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l format -d 'Output format' -r -f -a "text\t'The tour as a script to read'
+json\t'One JSON object'"
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -s q -l quiet -d 'Print only findings and errors, no summary'
-complete -c ekb -n "__fish_ekb_using_subcommand tour" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand diff" -l format -d 'Output format' -r -f -a "human\t'What changed, for people'
+json\t'One JSON object'"
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -s q -l quiet -d 'Print only findings and errors, no summary'
-complete -c ekb -n "__fish_ekb_using_subcommand diff" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand diff" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand export" -l format -d 'Output format (JSON is the only one)' -r -f -a "json\t'The JSON of SPEC §5'"
+complete -c ekb -n "__fish_ekb_using_subcommand export" -s o -l output -d 'Write to this file instead of standard output (`-` is standard output)' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand export" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand export" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand export" -l allow-errors -d 'Export even if the file has errors (what the robot would load of it)'
+complete -c ekb -n "__fish_ekb_using_subcommand export" -l schema -d 'Print the JSON Schema of the export instead'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s q -l quiet -d 'Print only findings and errors, no summary'
-complete -c ekb -n "__fish_ekb_using_subcommand export" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand export" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand import" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand import" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
