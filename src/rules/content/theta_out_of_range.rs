@@ -41,9 +41,10 @@ pub fn check(kb: &KnowledgeBase<'_>, source: &str, out: &mut Vec<Diagnostic>) {
                 &THETA_OUT_OF_RANGE,
                 span,
                 format!(
-                    "heading {theta}° at location {} is outside -360..360: the robot would turn to {:.0}°",
+                    "heading {theta}° at location {} is outside -360..360: the robot would turn to {}°",
                     location.id,
-                    theta.rem_euclid(360.0)
+                    // Two decimals at most: 360.5 turns to 0.5, 1800 to 0.
+                    (theta.rem_euclid(360.0) * 100.0).round() / 100.0
                 ),
             )
             .at_location(Some(location.id))

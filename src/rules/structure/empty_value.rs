@@ -20,7 +20,7 @@ declare_rule! {
         category: Structure,
         severity: Error,
         fixable: false,
-        summary: "a key with no value",
+        summary: "a key with no value (an empty pose or target is `wrong-arity`)",
     };
 }
 

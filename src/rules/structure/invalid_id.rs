@@ -1,6 +1,6 @@
 use crate::diagnostic::Diagnostic;
 use crate::model::Key;
-use crate::rules::declare_rule;
+use crate::rules::{declare_rule, excerpt};
 use crate::syntax::Span;
 
 declare_rule! {
@@ -42,7 +42,10 @@ pub fn diagnostic(span: Span, token: &str, key: Key) -> Diagnostic {
     Diagnostic::new(
         &INVALID_ID,
         span,
-        format!("{subject} `{token}` {why}: the robot would read a different location or none"),
+        format!(
+            "{subject} `{}` {why}: the robot would read a different location or none",
+            excerpt(token)
+        ),
     )
     .with_help("ids are whole numbers from 1 to 2147483647")
 }

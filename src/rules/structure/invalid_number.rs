@@ -1,6 +1,6 @@
 use crate::diagnostic::Diagnostic;
 use crate::model::Key;
-use crate::rules::declare_rule;
+use crate::rules::{declare_rule, excerpt};
 use crate::syntax::Span;
 
 declare_rule! {
@@ -37,7 +37,8 @@ pub fn diagnostic(key: Key, id: Option<u32>, span: Span, token: &str) -> Diagnos
         &INVALID_NUMBER,
         span,
         format!(
-            "`{token}` in `{}` is not a finite decimal number: the robot would read some other value here",
+            "`{}` in `{}` is not a finite decimal number: the robot would read some other value here",
+            excerpt(token),
             key.name()
         ),
     )

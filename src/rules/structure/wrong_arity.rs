@@ -22,12 +22,15 @@ declare_rule! {
         category: Structure,
         severity: Error,
         fixable: false,
-        summary: "fewer or more values than the key needs",
+        summary: "fewer or more values than the key needs (pose, target: 3; `gestureArm`: 1)",
     };
 }
 
 pub fn diagnostic(key: Key, id: u32, span: Span, expected: usize, found: usize) -> Diagnostic {
-    let consequence = if found < expected {
+    let consequence = if key == Key::GestureArm {
+        // The robot compares the whole value with `left` and `right`.
+        "the robot would not recognise it and gesture with its default arm"
+    } else if found < expected {
         "the robot would fill the missing ones with undefined values"
     } else {
         "the robot would ignore the extra ones"

@@ -26,8 +26,9 @@ declare_rule! {
     };
 }
 
-pub fn check(tour: &Tour, out: &mut Vec<Diagnostic>) {
-    let stops = (tour.stops.len() as u64).max(tour.declared.map_or(0, |d| d.value));
+/// `listed` is the number of ids listed after `n` (see [`super::listed_stops`]).
+pub fn check(tour: &Tour, listed: u64, out: &mut Vec<Diagnostic>) {
+    let stops = listed.max(tour.declared.map_or(0, |d| d.value));
     if stops > MAX_STOPS {
         out.push(
             Diagnostic::new(
