@@ -225,7 +225,7 @@ rule_tests! {
     unused_location: "unused-location" => [(1, 1)];
     // Content
     untranslated_message: "untranslated-message" => [(6, 33), (22, 33)];
-    repeated_word: "repeated-word" => [(5, 41), (13, 33)];
+    repeated_word: "repeated-word" => [(5, 41), (13, 33), (20, 66)];
     trailing_whitespace: "trailing-whitespace" => [(1, 41), (12, 1), (14, 42)];
     theta_out_of_range: "theta-out-of-range" => [(2, 41), (14, 41)];
     gesture_target_sums_to_zero: "gesture-target-sums-to-zero" => [(15, 33)];
@@ -407,8 +407,8 @@ fn invalid_id_says_why_for_zero_negative_garbage_and_overflow() {
         .collect();
     assert!(messages[0]
         .starts_with("location id `0` is 0, which the robot's reader uses for \"not found\""));
-    assert!(messages[1].starts_with("location id `-1` is not a whole positive number"));
-    assert!(messages[2].starts_with("location id `4a` is not a whole positive number"));
+    assert!(messages[1].starts_with("location id `-1` is not a positive whole number"));
+    assert!(messages[2].starts_with("location id `4a` is not a positive whole number"));
     assert!(messages[3].starts_with("location id `2147483648` is larger than 2147483647"));
     assert!(messages[4].starts_with("tour stop `0` is 0"));
     // The tour lists 3 ids, one of them invalid: that is no count mismatch.
@@ -438,6 +438,10 @@ fn invalid_number_quotes_a_huge_number_shortened() {
         comma.help.as_deref(),
         Some("write decimals with a point, e.g. `8.1`")
     );
+    let tour = &of_rule(&all, "invalid-number")[5].diagnostic;
+    assert!(tour
+        .message
+        .starts_with("the number of tour stops `two` is not a whole number"));
 }
 
 #[test]
@@ -467,7 +471,9 @@ fn missing_field_names_the_field() {
 #[test]
 fn mixed_dialect_labels_the_other_spelling() {
     let all = findings("rules/mixed-dialect/bad.dat", Options::default());
-    assert_eq!(of_rule(&all, "mixed-dialect")[0].label_lines, [14]);
+    assert_eq!(of_rule(&all, "mixed-dialect")[0].label_lines, [12]);
+    // Location 1 has a pose of each spelling: each robot reads one, so no duplicate.
+    assert!(of_rule(&all, "duplicate-key").is_empty(), "{}", show(&all));
 }
 
 #[test]

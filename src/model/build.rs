@@ -207,7 +207,12 @@ impl<'a> Builder<'a> {
             }
         };
         let location = &mut self.locations[index];
-        let repeated = location.has_line(key);
+        // `robotLocation` then `robotLocationPose` share a slot but are no duplicate: each
+        // robot reads only one of them (`mixed-dialect` reports the pair).
+        let repeated = location.has_line(key)
+            && location
+                .pose_key
+                .is_none_or(|earlier| earlier == key || key.value_kind() != ValueKind::Pose);
         location.given |= 1 << key.order();
         let earlier = repeated.then(|| {
             earlier_span(location, key)

@@ -32,7 +32,7 @@ pub fn diagnostic(span: Span, token: &str, key: Key) -> Diagnostic {
     } else if token.bytes().all(|b| b == b'0') {
         "is 0, which the robot's reader uses for \"not found\""
     } else {
-        "is not a whole positive number"
+        "is not a positive whole number written in digits"
     };
     let subject = if key == Key::TourSpecification {
         "tour stop"
