@@ -213,7 +213,7 @@ rule_tests! {
     missing_field: "missing-field" => [(1, 1), (13, 1)];
     mixed_dialect: "mixed-dialect" => [(2, 1)];
     legacy_key: "legacy-key" [pinned(Dialect::Current)] => [(2, 1), (12, 1)];
-    control_character: "control-character" => [(5, 43), (13, 39), (18, 48)];
+    control_character: "control-character" => [(5, 43), (13, 39), (18, 48), (21, 49)];
     // Tour
     tour_missing: "tour-missing" => [(1, 1)];
     tour_duplicate_spec: "tour-duplicate-spec" => [(25, 19)];
@@ -578,6 +578,29 @@ fn compat_line_too_long_says_where_the_robot_stops() {
         "{}",
         messages[2]
     );
+}
+
+#[test]
+fn a_crlf_line_of_200_bytes_loses_no_letter() {
+    // 198 bytes, `\r`, `\n`: the robot reads the `\r` as the line's last byte and drops it.
+    let all = findings(
+        "rules/compat-line-too-long/bad-crlf.dat",
+        Options::default(),
+    );
+    let found = of_rule(&all, "compat-line-too-long");
+    assert_eq!((found.len(), found[0].line, found[0].column), (1, 8, 198));
+    assert!(found[0].diagnostic.message.ends_with(
+        "only its line ending does not fit, and the robot's reader reads it as an empty line"
+    ));
+}
+
+#[test]
+fn control_character_explains_a_text_direction_control() {
+    let all = findings("rules/control-character/bad.dat", Options::default());
+    let bidi = &of_rule(&all, "control-character")[3].diagnostic;
+    assert!(bidi
+        .message
+        .starts_with("invisible text-direction control U+202E inside a value"));
 }
 
 #[test]

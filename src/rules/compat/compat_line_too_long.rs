@@ -36,51 +36,56 @@ pub fn check(line: &Line, text: &str, out: &mut Vec<Diagnostic>) {
         return;
     }
     let content = line.content();
+    let content_end = content.end as usize;
     // The robot reads the first 199 bytes (here never half a character) ...
-    let mut cut = (line.span.start as usize + LINE_BUFFER - 1).min(content.end as usize);
+    let read_end = line.span.start as usize + LINE_BUFFER - 1;
+    let mut cut = read_end.min(content_end);
     while !text.is_char_boundary(cut) {
         cut -= 1;
     }
-    // ... and, for a text value, drops the last of them, taking it for the newline.
+    // ... and, for a text value, drops the last of them, taking it for the newline (unless
+    // that is the `\r` of a CRLF ending, which then costs no letter).
     let is_text = match line.body {
         Body::Entry { key, .. } => {
             Key::from_name(key.text(text)).is_some_and(|key| key.value_kind() == ValueKind::Text)
         }
         _ => false,
     };
-    let kept_end = match text[..cut].char_indices().next_back() {
-        Some((last, _)) if is_text && last >= content.start as usize => last,
-        _ => cut,
-    };
-    let kept = &text[content.start as usize..kept_end];
-    let what = match (cut == content.end as usize, is_text) {
-        (true, true) => {
-            "only its newline does not fit, so the robot's reader drops its last character instead"
-                .to_string()
-        }
-        (true, false) => {
-            "only its newline does not fit, and the robot's reader reads it as a line of its own"
-                .to_string()
-        }
-        (false, _) => format!(
-            "the robot's reader stops at \"…{}\" and reads the rest, \"{}\", as a line of its own",
-            tail(kept),
-            excerpt(&text[cut..content.end as usize])
-        ),
-    };
-    // Point at what the robot loses; when that is only the newline, at the last character.
-    let lost = if kept_end < content.end as usize {
-        kept_end
-    } else {
-        text[..kept_end]
+    let drops_letter = is_text && read_end <= content_end;
+    let last_char = |end: usize| {
+        text[..end]
             .char_indices()
             .next_back()
-            .map_or(kept_end, |(i, _)| i)
+            .map_or(end, |(i, _)| i)
+    };
+    let kept_end = if drops_letter {
+        last_char(cut).max(content.start as usize)
+    } else {
+        cut
+    };
+    let what = if cut < content_end {
+        format!(
+            "the robot's reader stops at \"…{}\" and reads the rest, \"{}\", as a line of its own",
+            tail(&text[content.start as usize..kept_end]),
+            excerpt(&text[cut..content_end])
+        )
+    } else if drops_letter {
+        "only its newline does not fit, so the robot's reader drops its last character instead"
+            .to_string()
+    } else {
+        "only its line ending does not fit, and the robot's reader reads it as an empty line"
+            .to_string()
+    };
+    // Point at what the robot loses; when that is only the newline, at the last character.
+    let lost = if kept_end < content_end {
+        kept_end
+    } else {
+        last_char(content_end)
     };
     out.push(
         Diagnostic::new(
             &COMPAT_LINE_TOO_LONG,
-            Span::new(lost, content.end as usize),
+            Span::new(lost, content_end),
             format!(
                 "this line is {length} bytes long, but the robot reads at most {} bytes per line: {what}",
                 LINE_BUFFER - 1
