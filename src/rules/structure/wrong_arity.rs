@@ -6,7 +6,8 @@ use crate::syntax::Span;
 declare_rule! {
     /// ## What it does
     /// Flags a value with fewer or more parts than its key needs: a pose (`x y theta`) and a
-    /// gesture target (`x y z`) take three numbers, `gestureArm` one word.
+    /// gesture target (`x y z`) take three numbers (an empty one has 0), `gestureArm` one
+    /// word. (A tour whose count is wrong is `tour-count-mismatch`.)
     ///
     /// ## Why it matters
     /// With too few numbers the robot's reader leaves the rest as whatever was in memory;
