@@ -780,3 +780,97 @@ fn the_readme_rule_table_is_generated_from_the_catalogue() {
          {end} with the output of `cargo run -- rules --markdown`"
     );
 }
+
+// ---------------------------------------------------------------------------------------
+// Any input
+
+mod any_input {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// Pieces of knowledge-base lines, good and bad, glued at random.
+    fn piece() -> impl Strategy<Value = Vec<u8>> {
+        let pieces: Vec<&'static [u8]> = vec![
+            b"robotLocationDescription",
+            b"robotLocation",
+            b"robotLocationPose",
+            b"gestureTarget",
+            b"gestureArm",
+            b"preGestureMessageEnglish",
+            b"postGestureMessageenglish",
+            b"culturalKnowledge",
+            b"tourSpecification",
+            b"colour",
+            b" ",
+            b"\t",
+            b"\n",
+            b"\r\n",
+            b"\r",
+            b"1",
+            b"2",
+            b"0",
+            b"-1",
+            b"2147483648",
+            b"4a",
+            b"2.6",
+            b"-90",
+            b".5",
+            b"8,1",
+            b"nan",
+            b"1e400",
+            b"left",
+            b"up",
+            b"the",
+            b"No message in isiZulu",
+            b"\xef\xbb\xbf",
+            b"\xff",
+            b"\xe2\x82",
+            b"\x1b[31m",
+            b"\x00",
+            "Ùmuntu".as_bytes(),
+            "\u{202e}".as_bytes(),
+            b"#",
+            b",",
+        ];
+        prop::sample::select(pieces).prop_map(<[u8]>::to_vec)
+    }
+
+    fn file() -> impl Strategy<Value = Vec<u8>> {
+        prop::collection::vec(piece(), 0..80).prop_map(|pieces| pieces.concat())
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(300))]
+
+        /// No input makes a rule panic, point outside the text or split a character, and
+        /// the edits of all fixes together do not overlap.
+        #[test]
+        fn every_finding_is_well_formed(bytes in file(), pin in prop::option::of(prop::bool::ANY)) {
+            let options = Options {
+                dialect: pin.map(|seed| if seed { Dialect::Seed } else { Dialect::Current }),
+                ..Options::default()
+            };
+            let source = SourceFile::from_bytes("any", bytes);
+            let text = source.text();
+            let checked = ekb::check(&source, &options);
+            for d in &checked.diagnostics {
+                let spans = std::iter::once(d.span)
+                    .chain(d.labels.iter().map(|l| l.span))
+                    .chain(d.fix.iter().flat_map(|f| f.edits.iter().map(|e| e.span)));
+                for span in spans {
+                    prop_assert!(span.start <= span.end && span.end as usize <= text.len(), "{d:?}");
+                    prop_assert!(text.is_char_boundary(span.start as usize), "{d:?}");
+                    prop_assert!(text.is_char_boundary(span.end as usize), "{d:?}");
+                }
+            }
+            // `ekb fix` applies every fix at once: together they must not overlap either.
+            let edits: Vec<&Edit> = checked
+                .diagnostics
+                .iter()
+                .filter_map(|d| d.fix.as_ref())
+                .flat_map(|fix| &fix.edits)
+                .collect();
+            apply(text, &edits);
+        }
+    }
+}
