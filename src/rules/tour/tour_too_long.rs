@@ -35,7 +35,7 @@ pub fn check(tour: &Tour, listed: u64, out: &mut Vec<Diagnostic>) {
                 &TOUR_TOO_LONG,
                 tour.span,
                 format!(
-                    "the tour has {stops} stops, but the robot holds at most {MAX_STOPS}: a longer tour overflows its buffer"
+                    "the tour has {stops} stops, but the robot holds at most {MAX_STOPS}: its reader would write past the end of its tour buffer and corrupt its memory"
                 ),
             )
             .with_help("split the tour, or drop stops to keep at most 20"),
