@@ -397,7 +397,8 @@ fn numbers(
     valid.then_some(values)
 }
 
-/// The id at the start of a line's arguments, if there is a valid one (for messages only).
+/// The id at the start of a line's arguments, if there is a valid one: what a finding about a
+/// line the robot ignores (a miscased, unknown or legacy key) says is lost.
 pub(crate) fn leading_id(args: &str) -> Option<u32> {
     syntax::tokens(args, 0)
         .next()
