@@ -32,6 +32,7 @@ pub fn build<'a>(text: &'a str, options: &Options, out: &mut Vec<Diagnostic>) ->
         tour: None,
         first_pose_key: [None, None],
         crlf_endings: Vec::new(),
+        rejected: HashMap::new(),
     };
     let mut last_line = None;
     for line in syntax::lines(text) {
@@ -56,6 +57,9 @@ struct Builder<'a> {
     /// The first `robotLocation` and `robotLocationPose` lines, and how many of each.
     first_pose_key: [Option<(Span, usize)>; 2],
     crlf_endings: Vec<Span>,
+    /// Lines whose value could not be loaded, by id and key slot: the model holds no span
+    /// for them, yet a later duplicate must point back at them.
+    rejected: HashMap<(u32, usize), Span>,
 }
 
 impl<'a> Builder<'a> {
@@ -88,7 +92,7 @@ impl<'a> Builder<'a> {
             eprintln!("ekb: read {key_text} {}", args.text(self.text));
         }
         if let Some(pinned) = self.options.dialect {
-            structure::legacy_key::check(key, key_span, pinned, out);
+            structure::legacy_key::check(key, key_span, args.text(self.text), pinned, out);
         }
         if key == Key::TourSpecification {
             self.tour(args, out);
@@ -126,7 +130,14 @@ impl<'a> Builder<'a> {
             ));
         }
         if text.is_empty() {
-            out.push(structure::empty_value::diagnostic(key_span, key, id));
+            out.push(match key.value_kind() {
+                // Numbers missing are numbers too few: `wrong-arity` (found 0).
+                ValueKind::Pose | ValueKind::Point => {
+                    structure::wrong_arity::diagnostic(key, id, key_span, 3, 0)
+                }
+                _ => structure::empty_value::diagnostic(key_span, key, id),
+            });
+            self.reject(id, key, line_span);
             return;
         }
         compat::compat_leading_symbol::check(key, id, span, text, out);
@@ -145,26 +156,34 @@ impl<'a> Builder<'a> {
                 self.note_pose_key(key, line_span);
                 let location = &mut self.locations[index];
                 location.pose_key = Some(key);
-                if let Some([x, y, theta]) = numbers(key, id, span, text, out) {
-                    location.pose = Some(Value {
-                        value: Pose { x, y, theta },
-                        span,
-                    });
+                match numbers(key, id, span, text, out) {
+                    Some([x, y, theta]) => {
+                        location.pose = Some(Value {
+                            value: Pose { x, y, theta },
+                            span,
+                        })
+                    }
+                    None => self.reject(id, key, line_span),
                 }
             }
-            ValueKind::Point => {
-                if let Some([x, y, z]) = numbers(key, id, span, text, out) {
+            ValueKind::Point => match numbers(key, id, span, text, out) {
+                Some([x, y, z]) => {
                     location.gesture_target = Some(Value {
                         value: Point { x, y, z },
                         span,
-                    });
+                    })
                 }
-            }
+                None => self.reject(id, key, line_span),
+            },
             ValueKind::Arm => match (Arm::parse(text), words(text).count()) {
                 (Some(arm), _) => location.gesture_arm = Some(Value { value: arm, span }),
-                (None, 1) => out.push(structure::invalid_value::diagnostic(key, id, span, text)),
                 (None, count) => {
-                    out.push(structure::wrong_arity::diagnostic(key, id, span, 1, count))
+                    out.push(if count == 1 {
+                        structure::invalid_value::diagnostic(key, id, span, text)
+                    } else {
+                        structure::wrong_arity::diagnostic(key, id, span, 1, count)
+                    });
+                    self.reject(id, key, line_span);
                 }
             },
             ValueKind::Words => location.cultural_knowledge = Some(Value { value: text, span }),
@@ -188,10 +207,24 @@ impl<'a> Builder<'a> {
             }
         };
         let location = &mut self.locations[index];
-        let repeated = location.has_line(key);
+        // `robotLocation` then `robotLocationPose` share a slot but are no duplicate: each
+        // robot reads only one of them (`mixed-dialect` reports the pair).
+        let repeated = location.has_line(key)
+            && location
+                .pose_key
+                .is_none_or(|earlier| earlier == key || key.value_kind() != ValueKind::Pose);
         location.given |= 1 << key.order();
-        let earlier = repeated.then(|| earlier_span(location, key).unwrap_or(location.first_line));
+        let earlier = repeated.then(|| {
+            earlier_span(location, key)
+                .or_else(|| self.rejected.get(&(id, key.order())).copied())
+                .unwrap_or(location.first_line)
+        });
         (index, earlier)
+    }
+
+    /// Remembers a line whose value was not loaded (see [`Builder::rejected`]).
+    fn reject(&mut self, id: u32, key: Key, line_span: Span) {
+        self.rejected.entry((id, key.order())).or_insert(line_span);
     }
 
     fn note_pose_key(&mut self, key: Key, line_span: Span) {
@@ -281,7 +314,7 @@ fn earlier_span(location: &Location<'_>, key: Key) -> Option<Span> {
 }
 
 /// The tour's items: blank- or comma-separated tokens.
-fn tour_items(text: &str, offset: usize) -> impl Iterator<Item = (Span, &str)> {
+pub(crate) fn tour_items(text: &str, offset: usize) -> impl Iterator<Item = (Span, &str)> {
     syntax::tokens(text, offset).flat_map(|(span, token)| {
         let base = span.start as usize;
         token
@@ -364,8 +397,9 @@ fn numbers(
     valid.then_some(values)
 }
 
-/// The id at the start of a line's arguments, if there is a valid one (for messages only).
-fn leading_id(args: &str) -> Option<u32> {
+/// The id at the start of a line's arguments, if there is a valid one: what a finding about a
+/// line the robot ignores (a miscased, unknown or legacy key) says is lost.
+pub(crate) fn leading_id(args: &str) -> Option<u32> {
     syntax::tokens(args, 0)
         .next()
         .and_then(|(_, token)| parse_id(token))

@@ -112,6 +112,15 @@ pub static ALL: &[&Rule] = &[
     &compat::compat_too_many_cultural_keys::COMPAT_TOO_MANY_CULTURAL_KEYS,
 ];
 
+/// `text` from the file, cut to a length that fits in a one-line message.
+pub(crate) fn excerpt(text: &str) -> std::borrow::Cow<'_, str> {
+    const MAX_CHARS: usize = 40;
+    match text.char_indices().nth(MAX_CHARS) {
+        Some((cut, _)) => format!("{}…", &text[..cut]).into(),
+        None => text.into(),
+    }
+}
+
 /// The rule with this name.
 pub fn by_name(name: &str) -> Option<&'static Rule> {
     ALL.iter().copied().find(|rule| rule.name == name)
@@ -123,8 +132,9 @@ pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, out: &mut Vec<Diagnosti
     tour::tour_missing::check(kb, out);
     if let Some(tour) = &kb.tour {
         tour::tour_empty::check(tour, out);
-        tour::tour_count_mismatch::check(tour, out);
-        tour::tour_too_long::check(tour, out);
+        let listed = tour::listed_stops(tour, source);
+        tour::tour_count_mismatch::check(tour, listed, out);
+        tour::tour_too_long::check(tour, listed, out);
         tour::tour_repeated_stop::check(tour, out);
     }
     tour::tour_unknown_location::check(kb, out);
@@ -156,5 +166,13 @@ mod tests {
                 assert!(rule.doc.contains(section), "{} lacks {section}", rule.name);
             }
         }
+    }
+
+    #[test]
+    fn excerpts_cut_long_text() {
+        assert_eq!(excerpt("8,1"), "8,1");
+        let long = "9".repeat(400);
+        assert_eq!(excerpt(&long), format!("{}…", "9".repeat(40)));
+        assert_eq!(excerpt(&"û".repeat(41)), format!("{}…", "û".repeat(40)));
     }
 }

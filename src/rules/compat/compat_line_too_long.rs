@@ -1,6 +1,7 @@
 use crate::diagnostic::Diagnostic;
-use crate::rules::declare_rule;
-use crate::syntax::{Line, Span};
+use crate::model::{Key, ValueKind};
+use crate::rules::{declare_rule, excerpt};
+use crate::syntax::{Body, Line, Span};
 
 /// The robot reads lines with a buffer of this many bytes (one of them the terminating NUL).
 pub const LINE_BUFFER: usize = 200;
@@ -35,34 +36,58 @@ pub fn check(line: &Line, text: &str, out: &mut Vec<Diagnostic>) {
         return;
     }
     let content = line.content();
-    // The part the robot would not read with the line: from byte 199 on.
-    let mut cut = (line.span.start as usize + LINE_BUFFER - 1).min(content.end as usize);
+    let content_end = content.end as usize;
+    // The robot reads the first 199 bytes (here never half a character) ...
+    let read_end = line.span.start as usize + LINE_BUFFER - 1;
+    let mut cut = read_end.min(content_end);
     while !text.is_char_boundary(cut) {
         cut -= 1;
     }
-    let mut start = cut;
-    if start == content.end as usize {
-        // Only the newline spills over: the last character is what gets lost.
-        start = text[..start]
+    // ... and, for a text value, drops the last of them, taking it for the newline (unless
+    // that is the `\r` of a CRLF ending, which then costs no letter).
+    let is_text = match line.body {
+        Body::Entry { key, .. } => {
+            Key::from_name(key.text(text)).is_some_and(|key| key.value_kind() == ValueKind::Text)
+        }
+        _ => false,
+    };
+    let drops_letter = is_text && read_end <= content_end;
+    let last_char = |end: usize| {
+        text[..end]
             .char_indices()
             .next_back()
-            .map_or(start, |(i, _)| i);
-    }
-    let kept = &text[content.start as usize..cut];
-    let kept_tail: String = kept
-        .chars()
-        .rev()
-        .take(24)
-        .collect::<Vec<_>>()
-        .into_iter()
-        .rev()
-        .collect();
+            .map_or(end, |(i, _)| i)
+    };
+    let kept_end = if drops_letter {
+        last_char(cut).max(content.start as usize)
+    } else {
+        cut
+    };
+    let what = if cut < content_end {
+        format!(
+            "the robot's reader stops at \"…{}\" and reads the rest, \"{}\", as a line of its own",
+            tail(&text[content.start as usize..kept_end]),
+            excerpt(&text[cut..content_end])
+        )
+    } else if drops_letter {
+        "only its newline does not fit, so the robot's reader drops its last character instead"
+            .to_string()
+    } else {
+        "only its line ending does not fit, and the robot's reader reads it as an empty line"
+            .to_string()
+    };
+    // Point at what the robot loses; when that is only the newline, at the last character.
+    let lost = if kept_end < content_end {
+        kept_end
+    } else {
+        last_char(content_end)
+    };
     out.push(
         Diagnostic::new(
             &COMPAT_LINE_TOO_LONG,
-            Span::new(start, content.end as usize),
+            Span::new(lost, content_end),
             format!(
-                "this line is {length} bytes long, but the robot reads at most {} per line: it would stop at \"…{kept_tail}\" and read the rest as another line",
+                "this line is {length} bytes long, but the robot reads at most {} bytes per line: {what}",
                 LINE_BUFFER - 1
             ),
         )
@@ -71,4 +96,10 @@ pub fn check(line: &Line, text: &str, out: &mut Vec<Diagnostic>) {
             length - (LINE_BUFFER - 1)
         )),
     );
+}
+
+/// The last few characters of `text`.
+fn tail(text: &str) -> &str {
+    let start = text.char_indices().rev().nth(23).map_or(0, |(i, _)| i);
+    &text[start..]
 }

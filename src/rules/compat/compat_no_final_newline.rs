@@ -1,6 +1,7 @@
 use crate::diagnostic::{Diagnostic, Edit};
+use crate::model::{Key, ValueKind};
 use crate::rules::declare_rule;
-use crate::syntax::{Body, Line, LineEnding, Span};
+use crate::syntax::{self, Body, Line, LineEnding, Span};
 
 declare_rule! {
     /// ## What it does
@@ -9,11 +10,11 @@ declare_rule! {
     /// ## Why it matters
     /// The robot's reader removes the last character of every text value, assuming it is
     /// the newline. On a last line without one, it removes a real letter: `Sawubona`
-    /// becomes `Sawubon`, and the last tour stop `5` can be lost.
+    /// becomes `Sawubon`.
     ///
     /// ## Example
     /// ```text
-    /// tourSpecification 5 1 4 3 2 5⟨end of file⟩
+    /// postGestureMessageIsiZulu     5 Sawubona⟨end of file⟩
     /// ```
     pub static COMPAT_NO_FINAL_NEWLINE = {
         name: "compat-no-final-newline",
@@ -30,28 +31,42 @@ pub fn check(last: &Line, text: &str, out: &mut Vec<Diagnostic>) {
         return;
     }
     let end = last.span.end as usize;
-    let message = match last.body {
-        Body::Entry { args, .. } if !args.is_empty() => {
-            let value = args.text(text);
+    let message = match text_value(last, text) {
+        Some(value) => {
             let mut shortened = value.chars();
             shortened.next_back();
             format!(
-                "the file does not end with a newline: the robot's reader drops the last character of the last line, reading `…{}` instead of `…{}`",
+                "the file does not end with a newline: the robot's reader takes the last character for one and drops it, loading `…{}` instead of `…{}`",
                 tail(shortened.as_str()),
                 tail(value)
             )
         }
-        _ => "the file does not end with a newline: the robot's reader drops the last character of the last line".to_string(),
+        None => "the file does not end with a newline: the robot's reader expects one after every line, and drops the last character of a text value that lacks it".to_string(),
     };
-    let crlf = text.contains("\r\n");
     out.push(
         Diagnostic::new(&COMPAT_NO_FINAL_NEWLINE, Span::empty_at(end), message)
             .with_help("end the file with a newline")
+            // LF even in a CRLF file: `compat-crlf` converts the other endings to LF.
             .with_fix(
                 "add a newline at the end of the file",
-                vec![Edit::insert(end as u32, if crlf { "\r\n" } else { "\n" })],
+                vec![Edit::insert(end as u32, "\n")],
             ),
     );
+}
+
+/// The text value of a line of a text key (after its id), if it is one.
+fn text_value<'a>(line: &Line, text: &'a str) -> Option<&'a str> {
+    let Body::Entry { key, args } = line.body else {
+        return None;
+    };
+    let key = Key::from_name(key.text(text))?;
+    if key.value_kind() != ValueKind::Text {
+        return None;
+    }
+    let mut tokens = syntax::tokens(args.text(text), args.start as usize);
+    tokens.next()?; // the id
+    let (first, _) = tokens.next()?;
+    Some(&text[first.start as usize..args.end as usize])
 }
 
 fn tail(text: &str) -> &str {

@@ -1,12 +1,15 @@
 use crate::diagnostic::Diagnostic;
-use crate::model::KnowledgeBase;
+use crate::model::{KnowledgeBase, Language};
 use crate::rules::content::messages;
 use crate::rules::declare_rule;
 use crate::syntax::{self, Span};
 
 declare_rule! {
     /// ## What it does
-    /// Flags the same word twice in a row, ignoring case, in a description or a message.
+    /// Flags the same word twice in a row, ignoring case and surrounding punctuation, in a
+    /// description or an English message. Words separated by punctuation (`that, that`)
+    /// are meant. isiZulu and Kinyarwanda messages are not checked: both languages repeat
+    /// words as grammar (`kancane kancane`, `buhoro buhoro`: "slowly").
     ///
     /// ## Why it matters
     /// The robot reads the text aloud exactly as written, so a slip that the eye skips over
@@ -28,10 +31,10 @@ declare_rule! {
 
 pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
     for location in kb.locations() {
-        let texts = location
-            .description
-            .into_iter()
-            .chain(messages(location).map(|(_, _, message)| message));
+        let english = messages(location)
+            .filter(|&(_, language, _)| language == Language::English)
+            .map(|(_, _, message)| message);
+        let texts = location.description.into_iter().chain(english);
         for text in texts {
             for (first, second, word) in repeats(text.value, text.span.start as usize) {
                 out.push(
@@ -50,22 +53,27 @@ pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
     }
 }
 
-/// Pairs of adjacent equal words (ignoring case) containing a letter.
+/// Pairs of adjacent equal words (ignoring case and the punctuation around them) that
+/// contain a letter, with no punctuation between them.
 fn repeats(text: &str, offset: usize) -> Vec<(Span, Span, &str)> {
     let mut found = Vec::new();
     let mut previous: Option<(Span, &str)> = None;
-    for (span, word) in syntax::tokens(text, offset) {
+    for (span, token) in syntax::tokens(text, offset) {
+        let word = token.trim_matches(|c: char| !c.is_alphanumeric());
         if let Some((previous_span, previous_word)) = previous {
-            if word.eq_ignore_ascii_case(previous_word)
-                && (word.is_ascii() || word.to_lowercase() == previous_word.to_lowercase())
-                && word.chars().any(char::is_alphabetic)
-            {
+            if same_word(word, previous_word) && word.chars().any(char::is_alphabetic) {
                 found.push((previous_span, span, word));
             }
         }
-        previous = Some((span, word));
+        // `that, that` is meant: a word followed by punctuation starts afresh.
+        let ends_word = token.ends_with(|c: char| c.is_alphanumeric());
+        previous = ends_word.then_some((span, word));
     }
     found
+}
+
+fn same_word(a: &str, b: &str) -> bool {
+    a.eq_ignore_ascii_case(b) || (!a.is_ascii() && a.to_lowercase() == b.to_lowercase())
 }
 
 #[cfg(test)]
@@ -81,5 +89,9 @@ mod tests {
         assert!(repeats("the robot and the lab", 0).is_empty());
         assert!(repeats("1 1", 0).is_empty());
         assert!(repeats("that, that", 0).is_empty());
+        assert_eq!(repeats("see the the.", 0).len(), 1);
+        assert_eq!(repeats("(the the)", 0).len(), 1);
+        assert!(repeats("the. The robot", 0).is_empty());
+        assert_eq!(repeats("Ùmuntu ùmuntu", 0).len(), 1);
     }
 }

@@ -1,6 +1,6 @@
 use crate::diagnostic::Diagnostic;
 use crate::model::KnowledgeBase;
-use crate::rules::declare_rule;
+use crate::rules::{declare_rule, excerpt};
 use crate::syntax::{self, Span};
 
 declare_rule! {
@@ -33,17 +33,19 @@ pub fn check(kb: &KnowledgeBase<'_>, source: &str, out: &mut Vec<Diagnostic>) {
         if (-360.0..=360.0).contains(&theta) {
             continue;
         }
-        let span = syntax::tokens(pose.span.text(source), pose.span.start as usize)
+        let (span, written) = syntax::tokens(pose.span.text(source), pose.span.start as usize)
             .nth(2)
-            .map_or(pose.span, |(span, _): (Span, _)| span);
+            .map_or((pose.span, ""), |(span, token): (Span, _)| (span, token));
         out.push(
             Diagnostic::new(
                 &THETA_OUT_OF_RANGE,
                 span,
                 format!(
-                    "heading {theta}° at location {} is outside -360..360: the robot would turn to {:.0}°",
+                    "heading {}° at location {} is outside -360..360: the robot would turn to {}°",
+                    excerpt(written),
                     location.id,
-                    theta.rem_euclid(360.0)
+                    // Two decimals at most: 360.5 turns to 0.5, 1800 to 0.
+                    (theta.rem_euclid(360.0) * 100.0).round() / 100.0
                 ),
             )
             .at_location(Some(location.id))

@@ -1,4 +1,5 @@
 use crate::diagnostic::{Diagnostic, Edit};
+use crate::model::{Key, ValueKind};
 use crate::rules::declare_rule;
 use crate::syntax::{Body, Line, Span, BOM};
 
@@ -41,9 +42,16 @@ pub fn check(line: &Line, text: &str, out: &mut Vec<Diagnostic>) {
     if span.is_empty() {
         return;
     }
-    let consequence = match line.body {
-        Body::Entry { .. } => "the robot's reader keeps it as part of the value",
-        _ => "it is invisible and makes diffs noisy",
+    let keeps_it = match line.body {
+        Body::Entry { key, .. } => {
+            Key::from_name(key.text(text)).is_some_and(|key| key.value_kind() == ValueKind::Text)
+        }
+        _ => false,
+    };
+    let consequence = if keeps_it {
+        "the robot's reader keeps it at the end of the text"
+    } else {
+        "the robot's reader skips it, but it is invisible and makes diffs noisy"
     };
     out.push(
         Diagnostic::new(

@@ -5,7 +5,8 @@ use crate::syntax::Span;
 declare_rule! {
     /// ## What it does
     /// Flags a control character (other than tab) inside a line's values: NUL, a lone
-    /// carriage return, escape sequences, DEL, or a C1 control.
+    /// carriage return, escape sequences, DEL, a C1 control, or an invisible
+    /// text-direction control (U+202A–U+202E, U+2066–U+2069).
     ///
     /// ## Why it matters
     /// Control characters are invisible in most editors. The robot's text-to-speech may
@@ -37,7 +38,7 @@ pub fn check(span: Span, text: &str, out: &mut Vec<Diagnostic>) {
     }
     let Some((offset, ch)) = value
         .char_indices()
-        .find(|&(_, ch)| ch.is_control() && ch != '\t')
+        .find(|&(_, ch)| (ch.is_control() && ch != '\t') || is_bidi_control(ch))
     else {
         return;
     };
@@ -46,11 +47,24 @@ pub fn check(span: Span, text: &str, out: &mut Vec<Diagnostic>) {
         Diagnostic::new(
             &CONTROL_CHARACTER,
             Span::new(start, start + ch.len_utf8()),
-            format!(
-                "control character U+{:04X} inside a value: the robot would speak or print it as noise",
-                ch as u32
-            ),
+            if is_bidi_control(ch) {
+                format!(
+                    "invisible text-direction control U+{:04X} inside a value: it reorders the text on screen, so what you read is not what the robot says",
+                    ch as u32
+                )
+            } else {
+                format!(
+                    "control character U+{:04X} inside a value: the robot would speak or print it as noise",
+                    ch as u32
+                )
+            },
         )
         .with_help("delete it; if it came from a copy and paste, retype the text around it"),
     );
+}
+
+/// The bidirectional embedding, override and isolate controls: invisible, they reorder the
+/// text around them on screen (the "Trojan Source" trick) while the robot says it in order.
+fn is_bidi_control(ch: char) -> bool {
+    matches!(ch, '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
 }

@@ -5,7 +5,9 @@ use crate::syntax::Span;
 
 declare_rule! {
     /// ## What it does
-    /// Flags a key and id with nothing after them.
+    /// Flags a key and id with nothing after them: a description, a message,
+    /// `gestureArm` or `culturalKnowledge`. (An empty pose or gesture target has too few
+    /// numbers: that is `wrong-arity`.)
     ///
     /// ## Why it matters
     /// An empty message is silence; an empty description leaves the location unnamed in
@@ -20,7 +22,7 @@ declare_rule! {
         category: Structure,
         severity: Error,
         fixable: false,
-        summary: "a key with no value",
+        summary: "a key with no value (an empty pose or target is `wrong-arity`)",
     };
 }
 

@@ -1,6 +1,6 @@
 use crate::diagnostic::Diagnostic;
 use crate::model::Key;
-use crate::rules::declare_rule;
+use crate::rules::{declare_rule, excerpt};
 use crate::syntax::Span;
 
 declare_rule! {
@@ -32,7 +32,7 @@ pub fn diagnostic(span: Span, token: &str, key: Key) -> Diagnostic {
     } else if token.bytes().all(|b| b == b'0') {
         "is 0, which the robot's reader uses for \"not found\""
     } else {
-        "is not a whole positive number"
+        "is not a positive whole number written in digits"
     };
     let subject = if key == Key::TourSpecification {
         "tour stop"
@@ -42,7 +42,10 @@ pub fn diagnostic(span: Span, token: &str, key: Key) -> Diagnostic {
     Diagnostic::new(
         &INVALID_ID,
         span,
-        format!("{subject} `{token}` {why}: the robot would read a different location or none"),
+        format!(
+            "{subject} `{}` {why}: the robot would read a different location or none",
+            excerpt(token)
+        ),
     )
     .with_help("ids are whole numbers from 1 to 2147483647")
 }

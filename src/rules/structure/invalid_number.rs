@@ -1,6 +1,6 @@
 use crate::diagnostic::Diagnostic;
 use crate::model::Key;
-use crate::rules::declare_rule;
+use crate::rules::{declare_rule, excerpt};
 use crate::syntax::Span;
 
 declare_rule! {
@@ -28,19 +28,26 @@ declare_rule! {
 }
 
 pub fn diagnostic(key: Key, id: Option<u32>, span: Span, token: &str) -> Diagnostic {
-    let help = if token.contains(',') {
-        "write decimals with a point, e.g. `8.1`".to_string()
+    let token = excerpt(token);
+    let (message, help) = if key == Key::TourSpecification {
+        (
+            format!("the number of tour stops `{token}` is not a whole number: the robot would read some other number of stops"),
+            "write how many ids follow, e.g. `tourSpecification 5 1 4 3 2 5`",
+        )
     } else {
-        "numbers are decimal, e.g. `2.6`, `-90` or `0.82`".to_string()
+        (
+            format!(
+                "`{token}` in `{}` is not a finite decimal number: the robot would read some other value here",
+                key.name()
+            ),
+            if token.contains(',') {
+                "write decimals with a point, e.g. `8.1`"
+            } else {
+                "numbers are decimal, e.g. `2.6`, `-90` or `0.82`"
+            },
+        )
     };
-    Diagnostic::new(
-        &INVALID_NUMBER,
-        span,
-        format!(
-            "`{token}` in `{}` is not a finite decimal number: the robot would read some other value here",
-            key.name()
-        ),
-    )
-    .at_location(id)
-    .with_help(help)
+    Diagnostic::new(&INVALID_NUMBER, span, message)
+        .at_location(id)
+        .with_help(help)
 }

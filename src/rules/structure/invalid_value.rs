@@ -1,6 +1,6 @@
 use crate::diagnostic::Diagnostic;
 use crate::model::Key;
-use crate::rules::declare_rule;
+use crate::rules::{declare_rule, excerpt};
 use crate::syntax::Span;
 
 declare_rule! {
@@ -30,7 +30,8 @@ pub fn diagnostic(key: Key, id: u32, span: Span, text: &str) -> Diagnostic {
         &INVALID_VALUE,
         span,
         format!(
-            "`{text}` is not a valid `{}`: the robot would gesture with its default arm",
+            "`{}` is not a valid `{}`: the robot would gesture with its default arm",
+            excerpt(text),
             key.name()
         ),
     )

@@ -1,6 +1,7 @@
 use crate::diagnostic::{Diagnostic, Edit};
-use crate::model::{Dialect, Key};
-use crate::rules::declare_rule;
+use crate::model::build::leading_id;
+use crate::model::{Dialect, Key, ValueKind};
+use crate::rules::{consequence, declare_rule};
 use crate::syntax::Span;
 
 declare_rule! {
@@ -28,21 +29,25 @@ declare_rule! {
     };
 }
 
-pub fn check(key: Key, span: Span, pinned: Dialect, out: &mut Vec<Diagnostic>) {
+/// `args` is the rest of the line, whose first word should be the location's id.
+pub fn check(key: Key, span: Span, args: &str, pinned: Dialect, out: &mut Vec<Diagnostic>) {
     if key.dialect() != Some(pinned.other()) {
         return;
     }
+    let id = leading_id(args);
     let diagnostic = Diagnostic::new(
         &LEGACY_KEY,
         span,
         format!(
-            "`{}` belongs to the {} dialect, but the configuration pins the {} dialect: its robot ignores this line",
+            "`{}` belongs to the {} dialect, but the configuration pins the {} dialect: that robot's reader ignores this line, so {}",
             key.name(),
             pinned.other().name(),
-            pinned.name()
+            pinned.name(),
+            consequence::lost(key, id)
         ),
-    );
-    out.push(if key.value_kind() == crate::model::ValueKind::Pose {
+    )
+    .at_location(id);
+    out.push(if key.value_kind() == ValueKind::Pose {
         let replacement = pinned.pose_key().name();
         diagnostic
             .with_help(format!("write `{replacement}`"))

@@ -1,6 +1,6 @@
 use crate::diagnostic::Diagnostic;
 use crate::model::Key;
-use crate::rules::declare_rule;
+use crate::rules::{consequence, declare_rule, excerpt};
 use crate::syntax::Span;
 
 declare_rule! {
@@ -26,19 +26,27 @@ declare_rule! {
 }
 
 pub fn diagnostic(span: Span, key: &str, id: Option<u32>) -> Diagnostic {
-    let diagnostic = Diagnostic::new(
-        &UNKNOWN_KEY,
-        span,
-        format!("`{key}` is not a key of the knowledge base: the robot's reader ignores this line"),
-    )
-    .at_location(id);
+    let ignored = format!(
+        "`{}` is not a key of the knowledge base: the robot's reader ignores this line",
+        excerpt(key)
+    );
     match nearest(key) {
-        Some(near) => diagnostic.with_help(format!("did you mean `{}`?", near.name())),
-        None => diagnostic.with_help(format!(
+        Some(near) => Diagnostic::new(
+            &UNKNOWN_KEY,
+            span,
+            format!(
+                "{ignored}; if it is meant as `{}`, {}",
+                near.name(),
+                consequence::lost(near, id.filter(|_| near != Key::TourSpecification))
+            ),
+        )
+        .with_help(format!("did you mean `{}`?", near.name())),
+        None => Diagnostic::new(&UNKNOWN_KEY, span, ignored).with_help(format!(
             "the keys are: {}",
             Key::ALL.map(Key::name).join(", ")
         )),
     }
+    .at_location(id)
 }
 
 /// The known key closest to `key`, if one is close enough to be a likely typo.

@@ -6,7 +6,8 @@ use crate::syntax::Span;
 declare_rule! {
     /// ## What it does
     /// Flags a value with fewer or more parts than its key needs: a pose (`x y theta`) and a
-    /// gesture target (`x y z`) take three numbers, `gestureArm` one word.
+    /// gesture target (`x y z`) take three numbers (an empty one has 0), `gestureArm` one
+    /// word. (A tour whose count is wrong is `tour-count-mismatch`.)
     ///
     /// ## Why it matters
     /// With too few numbers the robot's reader leaves the rest as whatever was in memory;
@@ -22,12 +23,15 @@ declare_rule! {
         category: Structure,
         severity: Error,
         fixable: false,
-        summary: "fewer or more values than the key needs",
+        summary: "fewer or more values than the key needs (pose, target: 3; `gestureArm`: 1)",
     };
 }
 
 pub fn diagnostic(key: Key, id: u32, span: Span, expected: usize, found: usize) -> Diagnostic {
-    let consequence = if found < expected {
+    let consequence = if key == Key::GestureArm {
+        // The robot compares the whole value with `left` and `right`.
+        "the robot would not recognise it and gesture with its default arm"
+    } else if found < expected {
         "the robot would fill the missing ones with undefined values"
     } else {
         "the robot would ignore the extra ones"

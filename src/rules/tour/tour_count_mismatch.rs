@@ -23,11 +23,11 @@ declare_rule! {
     };
 }
 
-pub fn check(tour: &Tour, out: &mut Vec<Diagnostic>) {
+/// `found` is the number of ids listed after `n` (see [`super::listed_stops`]).
+pub fn check(tour: &Tour, found: u64, out: &mut Vec<Diagnostic>) {
     let Some(declared) = tour.declared else {
         return;
     };
-    let found = tour.stops.len() as u64;
     if declared.value == found || declared.value == 0 {
         return;
     }

@@ -26,15 +26,16 @@ declare_rule! {
     };
 }
 
-pub fn check(tour: &Tour, out: &mut Vec<Diagnostic>) {
-    let stops = (tour.stops.len() as u64).max(tour.declared.map_or(0, |d| d.value));
+/// `listed` is the number of ids listed after `n` (see [`super::listed_stops`]).
+pub fn check(tour: &Tour, listed: u64, out: &mut Vec<Diagnostic>) {
+    let stops = listed.max(tour.declared.map_or(0, |d| d.value));
     if stops > MAX_STOPS {
         out.push(
             Diagnostic::new(
                 &TOUR_TOO_LONG,
                 tour.span,
                 format!(
-                    "the tour has {stops} stops, but the robot holds at most {MAX_STOPS}: a longer tour overflows its buffer"
+                    "the tour has {stops} stops, but the robot holds at most {MAX_STOPS}: its reader would write past the end of its tour buffer and corrupt its memory"
                 ),
             )
             .with_help("split the tour, or drop stops to keep at most 20"),

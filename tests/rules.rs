@@ -1,0 +1,876 @@
+//! The rule catalogue, proven rule by rule.
+//!
+//! Every rule of `ekb::rules::ALL` has a folder `tests/fixtures/rules/<rule>/` with
+//! - `bad.dat`, which must raise the rule exactly at the listed lines and columns, and
+//! - `good.dat`, its near miss (a 199-byte line instead of a 200-byte one, 20 tour stops
+//!   instead of 21, …), which must raise nothing at all.
+//!
+//! Then: the fixes of the fixable rules, applied to the text; the real files of the corpus
+//! (`tests/fixtures/corpus/`, copied unchanged); and the README's rule table.
+
+use std::path::{Path, PathBuf};
+
+use ekb::commands::rules::markdown_table;
+use ekb::diagnostic::{Diagnostic, Edit};
+use ekb::model::build::Options;
+use ekb::model::Dialect;
+use ekb::rules::{self, Rule};
+use ekb::source::{LineIndex, Position};
+use ekb::{Severity, SourceFile};
+
+// ---------------------------------------------------------------------------------------
+// Helpers
+
+fn fixtures() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures")
+}
+
+/// A fixture, read the way `ekb` reads a file (bytes, so invalid UTF-8 survives).
+fn read(relative: &str) -> SourceFile {
+    let path = fixtures().join(relative);
+    let bytes = std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    SourceFile::from_bytes(relative, bytes)
+}
+
+/// One finding, located: what the tests compare.
+#[derive(Debug, Clone)]
+struct Finding {
+    rule: &'static str,
+    line: u32,
+    column: u32,
+    /// Lines of the labels (secondary places), in order.
+    label_lines: Vec<u32>,
+    diagnostic: Diagnostic,
+}
+
+/// Checks `source` and locates every finding.
+fn findings_of(source: &SourceFile, options: Options) -> Vec<Finding> {
+    let checked = ekb::check(source, &options);
+    let text = source.text();
+    let index = LineIndex::new(text);
+    let at = |offset: u32| -> Position { index.position(text, offset) };
+    checked
+        .diagnostics
+        .iter()
+        .map(|d| {
+            let start = at(d.span.start);
+            Finding {
+                rule: d.rule.name,
+                line: start.line,
+                column: start.column,
+                label_lines: d.labels.iter().map(|l| at(l.span.start).line).collect(),
+                diagnostic: d.clone(),
+            }
+        })
+        .collect()
+}
+
+fn findings(relative: &str, options: Options) -> Vec<Finding> {
+    findings_of(&read(relative), options)
+}
+
+fn of_rule<'f>(all: &'f [Finding], rule: &str) -> Vec<&'f Finding> {
+    all.iter().filter(|f| f.rule == rule).collect()
+}
+
+fn show(all: &[Finding]) -> String {
+    all.iter()
+        .map(|f| {
+            format!(
+                "  {}:{} {} {}\n",
+                f.line, f.column, f.rule, f.diagnostic.message
+            )
+        })
+        .collect()
+}
+
+fn pinned(dialect: Dialect) -> Options {
+    Options {
+        dialect: Some(dialect),
+        ..Options::default()
+    }
+}
+
+/// The rule's `bad.dat` raises it at exactly `expected` (line, column) places, each message
+/// naming what the robot would do; its `good.dat` raises nothing at all.
+fn assert_rule(name: &str, options: Options, expected: &[(u32, u32)]) {
+    let rule: &Rule = rules::by_name(name).unwrap_or_else(|| panic!("no rule `{name}`"));
+    let bad = findings(&format!("rules/{name}/bad.dat"), options);
+    let found: Vec<(u32, u32)> = of_rule(&bad, name)
+        .iter()
+        .map(|f| (f.line, f.column))
+        .collect();
+    assert_eq!(
+        found,
+        expected,
+        "`{name}` in rules/{name}/bad.dat; all findings:\n{}",
+        show(&bad)
+    );
+    for finding in of_rule(&bad, name) {
+        assert_eq!(finding.diagnostic.severity(), rule.severity);
+        assert_eq!(
+            finding.diagnostic.fix.is_some(),
+            rule.fixable,
+            "{finding:?}"
+        );
+        let message = &finding.diagnostic.message;
+        assert!(
+            message.contains("robot") || message.contains(" will "),
+            "a message must say what the robot would do: {message}"
+        );
+        assert!(finding.diagnostic.help.is_some(), "no help: {finding:?}");
+    }
+    let good = findings(&format!("rules/{name}/good.dat"), options);
+    assert!(
+        good.is_empty(),
+        "rules/{name}/good.dat must raise nothing; it raised:\n{}",
+        show(&good)
+    );
+}
+
+/// Applies edits that do not overlap to `text`.
+fn apply(text: &str, edits: &[&Edit]) -> String {
+    let mut edits = edits.to_vec();
+    edits.sort_by_key(|edit| (edit.span.start, edit.span.end));
+    for pair in edits.windows(2) {
+        assert!(
+            pair[0].span.end <= pair[1].span.start,
+            "overlapping edits {pair:?}"
+        );
+    }
+    let mut out = String::new();
+    let mut at = 0;
+    for edit in edits {
+        out.push_str(&text[at..edit.span.start as usize]);
+        out.push_str(&edit.replacement);
+        at = edit.span.end as usize;
+    }
+    out.push_str(&text[at..]);
+    out
+}
+
+/// Applies every fix of `rule` in `source`'s findings.
+fn fix(source: &SourceFile, options: Options, rule: &str) -> String {
+    let all = findings_of(source, options);
+    let edits: Vec<&Edit> = of_rule(&all, rule)
+        .iter()
+        .flat_map(|f| &f.diagnostic.fix.as_ref().expect("a fix").edits)
+        .collect();
+    assert!(!edits.is_empty(), "`{rule}` offers no fix:\n{}", show(&all));
+    apply(source.text(), &edits)
+}
+
+/// The fixes of `rule` turn its `bad.dat` into exactly its `good.dat`, which is clean.
+fn assert_fix_gives_good(rule: &str, options: Options) {
+    let bad = read(&format!("rules/{rule}/bad.dat"));
+    let good = read(&format!("rules/{rule}/good.dat"));
+    let fixed = fix(&bad, options, rule);
+    assert_eq!(fixed, good.text(), "fixing `{rule}`");
+    let again = findings_of(
+        &SourceFile::from_bytes("fixed", fixed.into_bytes()),
+        options,
+    );
+    assert!(
+        of_rule(&again, rule).is_empty(),
+        "`{rule}` is still reported after its fix:\n{}",
+        show(&again)
+    );
+}
+
+// ---------------------------------------------------------------------------------------
+// One test per rule
+
+/// `rule_tests! { test_name: "rule-name" [options] => [(line, column), …]; … }` declares one
+/// test per rule, and the list of the rules tested, so that a rule without a test fails.
+macro_rules! rule_tests {
+    ($($test:ident: $rule:literal $([$options:expr])? => [$(($line:expr, $column:expr)),* $(,)?];)*) => {
+        $(
+            #[test]
+            fn $test() {
+                #[allow(unused_variables)]
+                let options = Options::default();
+                $(let options = $options;)?
+                assert_rule($rule, options, &[$(($line, $column)),*]);
+            }
+        )*
+        /// Every rule with a test above.
+        const TESTED: &[&str] = &[$($rule),*];
+    };
+}
+
+rule_tests! {
+    // Structure
+    invalid_utf8: "invalid-utf8" => [(1, 36), (5, 18), (15, 32)];
+    unknown_key: "unknown-key" => [(5, 1), (12, 1)];
+    key_case: "key-case" => [(2, 1), (7, 1), (15, 1)];
+    missing_id: "missing-id" => [(1, 1), (3, 1)];
+    invalid_id: "invalid-id" => [(1, 31), (2, 31), (3, 31), (4, 31), (25, 25)];
+    invalid_number: "invalid-number" => [(2, 37), (3, 33), (14, 33), (14, 41), (15, 37), (25, 19)];
+    wrong_arity: "wrong-arity" => [(2, 33), (3, 1), (15, 33), (16, 33)];
+    empty_value: "empty-value" => [(5, 1), (11, 1), (13, 1)];
+    invalid_value: "invalid-value" => [(4, 33), (16, 33)];
+    duplicate_key: "duplicate-key" => [(12, 1), (24, 1)];
+    missing_field: "missing-field" => [(1, 1), (13, 1)];
+    mixed_dialect: "mixed-dialect" => [(2, 1)];
+    legacy_key: "legacy-key" [pinned(Dialect::Current)] => [(2, 1), (12, 1)];
+    control_character: "control-character" => [(5, 43), (13, 39), (18, 48), (21, 49)];
+    // Tour
+    tour_missing: "tour-missing" => [(1, 1)];
+    tour_duplicate_spec: "tour-duplicate-spec" => [(25, 19)];
+    tour_count_mismatch: "tour-count-mismatch" => [(25, 19)];
+    tour_empty: "tour-empty" => [(25, 19)];
+    tour_unknown_location: "tour-unknown-location" => [(25, 23)];
+    tour_too_long: "tour-too-long" => [(25, 19)];
+    tour_repeated_stop: "tour-repeated-stop" => [(25, 23)];
+    unused_location: "unused-location" => [(1, 1)];
+    // Content
+    untranslated_message: "untranslated-message" => [(6, 33), (22, 33)];
+    repeated_word: "repeated-word" => [(5, 41), (13, 33), (20, 66)];
+    trailing_whitespace: "trailing-whitespace" => [(1, 41), (12, 1), (14, 42)];
+    theta_out_of_range: "theta-out-of-range" => [(2, 41), (14, 41)];
+    gesture_target_sums_to_zero: "gesture-target-sums-to-zero" => [(15, 33)];
+    gesture_behind_robot: "gesture-behind-robot" => [(3, 33), (15, 33)];
+    // Reference-reader compatibility
+    compat_line_too_long: "compat-line-too-long" => [(8, 199), (18, 178), (20, 199)];
+    compat_leading_symbol: "compat-leading-symbol" => [(2, 33), (5, 33), (13, 33), (14, 33)];
+    compat_no_final_newline: "compat-no-final-newline" => [(25, 24)];
+    compat_crlf: "compat-crlf" => [(1, 41)];
+    compat_bom: "compat-bom" => [(1, 1)];
+    compat_too_many_cultural_keys: "compat-too-many-cultural-keys" => [(11, 71)];
+}
+
+#[test]
+fn every_rule_has_fixtures_and_a_test() {
+    for rule in rules::ALL {
+        let dir = fixtures().join("rules").join(rule.name);
+        for file in ["bad.dat", "good.dat"] {
+            assert!(
+                dir.join(file).is_file(),
+                "rule `{}` has no {}: add it with a test in tests/rules.rs",
+                rule.name,
+                dir.join(file).display()
+            );
+        }
+        assert!(
+            TESTED.contains(&rule.name),
+            "rule `{}` has no test in rule_tests! (tests/rules.rs)",
+            rule.name
+        );
+    }
+    assert_eq!(TESTED.len(), rules::ALL.len(), "a test names no rule");
+}
+
+/// Names, severities and fixability exactly as SPEC §4, in its order.
+#[test]
+fn the_catalogue_is_the_specified_one() {
+    use Severity::{Error, Info, Warning};
+    let spec: &[(&str, Severity, bool)] = &[
+        ("invalid-utf8", Error, false),
+        ("unknown-key", Error, false),
+        ("key-case", Error, true),
+        ("missing-id", Error, false),
+        ("invalid-id", Error, false),
+        ("invalid-number", Error, false),
+        ("wrong-arity", Error, false),
+        ("empty-value", Error, false),
+        ("invalid-value", Error, false),
+        ("duplicate-key", Warning, false),
+        ("missing-field", Error, false),
+        ("mixed-dialect", Warning, false),
+        ("legacy-key", Error, true),
+        ("control-character", Error, false),
+        ("tour-missing", Error, false),
+        ("tour-duplicate-spec", Warning, false),
+        ("tour-count-mismatch", Error, false),
+        ("tour-empty", Error, false),
+        ("tour-unknown-location", Error, false),
+        ("tour-too-long", Error, false),
+        ("tour-repeated-stop", Warning, false),
+        ("unused-location", Info, false),
+        ("untranslated-message", Warning, false),
+        ("repeated-word", Warning, false),
+        ("trailing-whitespace", Warning, true),
+        ("theta-out-of-range", Warning, false),
+        ("gesture-target-sums-to-zero", Warning, false),
+        ("gesture-behind-robot", Warning, false),
+        ("compat-line-too-long", Error, false),
+        ("compat-leading-symbol", Error, false),
+        ("compat-no-final-newline", Error, true),
+        ("compat-crlf", Error, true),
+        ("compat-bom", Error, true),
+        ("compat-too-many-cultural-keys", Error, false),
+    ];
+    let actual: Vec<(&str, Severity, bool)> = rules::ALL
+        .iter()
+        .map(|rule| (rule.name, rule.severity, rule.fixable))
+        .collect();
+    assert_eq!(actual, spec);
+}
+
+// ---------------------------------------------------------------------------------------
+// The details of each rule's findings
+
+#[test]
+fn invalid_utf8_gives_the_byte_offset_in_a_value_a_key_and_an_id() {
+    let all = findings("rules/invalid-utf8/bad.dat", Options::default());
+    let messages: Vec<&str> = of_rule(&all, "invalid-utf8")
+        .iter()
+        .map(|f| f.diagnostic.message.as_str())
+        .collect();
+    assert_eq!(messages.len(), 3);
+    for (message, offset) in messages.iter().zip([35, 189, 758]) {
+        assert!(
+            message.contains(&format!("at byte offset {offset} ")),
+            "{message}"
+        );
+    }
+    // The key and the id with a bad byte are no key and no id.
+    let rules_at = |line| -> Vec<&str> {
+        all.iter()
+            .filter(|f| f.line == line)
+            .map(|f| f.rule)
+            .collect()
+    };
+    assert_eq!(rules_at(5), ["unknown-key", "invalid-utf8"]);
+    assert_eq!(rules_at(15), ["invalid-id", "invalid-utf8"]);
+}
+
+#[test]
+fn unknown_key_suggests_the_nearest_key_and_says_what_goes_missing() {
+    let all = findings("rules/unknown-key/bad.dat", Options::default());
+    let found = of_rule(&all, "unknown-key");
+    let typo = &found[0].diagnostic;
+    assert_eq!(
+        typo.help.as_deref(),
+        Some("did you mean `preGestureMessageEnglish`?")
+    );
+    assert!(
+        typo.message
+            .ends_with("location 1 will say nothing before the gesture in English"),
+        "{}",
+        typo.message
+    );
+    assert_eq!(typo.location_id, Some(1));
+    let garbage = &found[1].diagnostic;
+    assert!(garbage
+        .help
+        .as_deref()
+        .unwrap()
+        .starts_with("the keys are: robotLocationDescription, robotLocation, "));
+}
+
+#[test]
+fn key_case_fix_renames_the_key() {
+    let all = findings("rules/key-case/bad.dat", Options::default());
+    let replacements: Vec<&str> = of_rule(&all, "key-case")
+        .iter()
+        .map(|f| {
+            f.diagnostic.fix.as_ref().unwrap().edits[0]
+                .replacement
+                .as_str()
+        })
+        .collect();
+    assert_eq!(
+        replacements,
+        [
+            "robotLocation",
+            "postGestureMessageEnglish",
+            "preGestureMessageIsiZulu"
+        ]
+    );
+    // The robot ignores the miscased lines, so those fields are missing too.
+    assert_eq!(of_rule(&all, "missing-field").len(), 3);
+}
+
+#[test]
+fn a_missing_id_is_not_an_invalid_one_and_the_other_way_round() {
+    let missing = findings("rules/missing-id/bad.dat", Options::default());
+    assert!(
+        of_rule(&missing, "invalid-id").is_empty(),
+        "{}",
+        show(&missing)
+    );
+    let invalid = findings("rules/invalid-id/bad.dat", Options::default());
+    assert!(
+        of_rule(&invalid, "missing-id").is_empty(),
+        "{}",
+        show(&invalid)
+    );
+}
+
+#[test]
+fn invalid_id_says_why_for_zero_negative_garbage_and_overflow() {
+    let all = findings("rules/invalid-id/bad.dat", Options::default());
+    let messages: Vec<&str> = of_rule(&all, "invalid-id")
+        .iter()
+        .map(|f| f.diagnostic.message.as_str())
+        .collect();
+    assert!(messages[0]
+        .starts_with("location id `0` is 0, which the robot's reader uses for \"not found\""));
+    assert!(messages[1].starts_with("location id `-1` is not a positive whole number"));
+    assert!(messages[2].starts_with("location id `4a` is not a positive whole number"));
+    assert!(messages[3].starts_with("location id `2147483648` is larger than 2147483647"));
+    assert!(messages[4].starts_with("tour stop `0` is 0"));
+    // The tour lists 3 ids, one of them invalid: that is no count mismatch.
+    assert!(
+        of_rule(&all, "tour-count-mismatch").is_empty(),
+        "{}",
+        show(&all)
+    );
+}
+
+#[test]
+fn invalid_number_quotes_a_huge_number_shortened() {
+    let all = findings("rules/invalid-number/bad.dat", Options::default());
+    let huge = of_rule(&all, "invalid-number")
+        .into_iter()
+        .find(|f| f.line == 15)
+        .unwrap();
+    assert!(
+        huge.diagnostic
+            .message
+            .starts_with(&format!("`{}…` in `gestureTarget`", "9".repeat(40))),
+        "{}",
+        huge.diagnostic.message
+    );
+    let comma = &of_rule(&all, "invalid-number")[0].diagnostic;
+    assert_eq!(
+        comma.help.as_deref(),
+        Some("write decimals with a point, e.g. `8.1`")
+    );
+    let tour = &of_rule(&all, "invalid-number")[5].diagnostic;
+    assert!(tour
+        .message
+        .starts_with("the number of tour stops `two` is not a whole number"));
+}
+
+#[test]
+fn duplicate_key_points_at_the_later_line_with_a_label_at_the_earlier() {
+    let all = findings("rules/duplicate-key/bad.dat", Options::default());
+    let found = of_rule(&all, "duplicate-key");
+    assert_eq!(found[0].label_lines, [1]);
+    // The earlier line's value was invalid: the label still finds it.
+    assert_eq!(found[1].label_lines, [14]);
+    assert_eq!(found[1].diagnostic.location_id, Some(2));
+}
+
+#[test]
+fn missing_field_names_the_field() {
+    let all = findings("rules/missing-field/bad.dat", Options::default());
+    let found = of_rule(&all, "missing-field");
+    assert!(found[0]
+        .diagnostic
+        .message
+        .starts_with("location 1 has no `postGestureMessageEnglish`"));
+    assert!(found[1]
+        .diagnostic
+        .message
+        .starts_with("location 2 has no `gestureTarget`"));
+}
+
+#[test]
+fn mixed_dialect_labels_the_other_spelling() {
+    let all = findings("rules/mixed-dialect/bad.dat", Options::default());
+    assert_eq!(of_rule(&all, "mixed-dialect")[0].label_lines, [12]);
+    // Location 1 has a pose of each spelling: each robot reads one, so no duplicate.
+    assert!(of_rule(&all, "duplicate-key").is_empty(), "{}", show(&all));
+}
+
+#[test]
+fn legacy_key_needs_a_pinned_dialect() {
+    let auto = findings("rules/legacy-key/bad.dat", Options::default());
+    assert!(auto.is_empty(), "{}", show(&auto));
+    let seed = findings("rules/legacy-key/bad-seed.dat", pinned(Dialect::Seed));
+    let found: Vec<(u32, bool)> = of_rule(&seed, "legacy-key")
+        .iter()
+        .map(|f| (f.line, f.diagnostic.fix.is_some()))
+        .collect();
+    // robotLocationPose is renamed; gestureArm and culturalKnowledge cannot be.
+    assert_eq!(
+        found,
+        [
+            (2, true),
+            (4, false),
+            (11, false),
+            (14, true),
+            (16, false),
+            (23, false)
+        ]
+    );
+    assert!(of_rule(&seed, "legacy-key")[0]
+        .diagnostic
+        .message
+        .ends_with("the robot will stand at (0, 0) facing 0° at location 1"));
+}
+
+#[test]
+fn tour_findings_point_at_the_earlier_tour_and_stop() {
+    let duplicate = findings("rules/tour-duplicate-spec/bad.dat", Options::default());
+    assert_eq!(
+        of_rule(&duplicate, "tour-duplicate-spec")[0].label_lines,
+        [24]
+    );
+    let repeated = findings("rules/tour-repeated-stop/bad.dat", Options::default());
+    assert_eq!(
+        of_rule(&repeated, "tour-repeated-stop")[0].label_lines,
+        [25]
+    );
+    let unknown = findings("rules/tour-unknown-location/bad.dat", Options::default());
+    assert_eq!(
+        of_rule(&unknown, "tour-unknown-location")[0]
+            .diagnostic
+            .location_id,
+        Some(7)
+    );
+}
+
+#[test]
+fn a_tour_line_with_no_number_is_empty() {
+    let all = findings("rules/tour-empty/bad-no-number.dat", Options::default());
+    let found: Vec<(u32, u32)> = of_rule(&all, "tour-empty")
+        .iter()
+        .map(|f| (f.line, f.column))
+        .collect();
+    assert_eq!(found, [(25, 18)]);
+}
+
+#[test]
+fn gesture_behind_robot_labels_the_pose() {
+    let all = findings("rules/gesture-behind-robot/bad.dat", Options::default());
+    let lines: Vec<Vec<u32>> = of_rule(&all, "gesture-behind-robot")
+        .iter()
+        .map(|f| f.label_lines.clone())
+        .collect();
+    assert_eq!(lines, [vec![2], vec![14]]);
+}
+
+#[test]
+fn line_length_fixtures_are_exact_in_bytes() {
+    let lengths = |relative: &str| -> Vec<usize> {
+        std::fs::read(fixtures().join(relative))
+            .unwrap()
+            .split_inclusive(|&b| b == b'\n')
+            .map(<[u8]>::len)
+            .collect()
+    };
+    let bad = lengths("rules/compat-line-too-long/bad.dat");
+    assert_eq!((bad[7], bad[17], bad[19]), (200, 220, 230));
+    let good = lengths("rules/compat-line-too-long/good.dat");
+    assert_eq!((good[7], good[17]), (199, 199));
+    assert!(good.iter().all(|&length| length < 200));
+    // Line 18 has multi-byte letters: fewer characters than bytes.
+    let text = read("rules/compat-line-too-long/bad.dat");
+    let line_18 = text.text().lines().nth(17).unwrap();
+    assert!(line_18.chars().count() < 199, "{}", line_18.chars().count());
+}
+
+#[test]
+fn compat_line_too_long_says_where_the_robot_stops() {
+    let all = findings("rules/compat-line-too-long/bad.dat", Options::default());
+    let messages: Vec<&str> = of_rule(&all, "compat-line-too-long")
+        .iter()
+        .map(|f| f.diagnostic.message.as_str())
+        .collect();
+    assert!(messages[0]
+        .contains("only its newline does not fit, so the robot's reader drops its last character"));
+    assert!(
+        messages[2].contains("stops at \"…search in social robotic\""),
+        "{}",
+        messages[2]
+    );
+}
+
+#[test]
+fn a_crlf_line_of_200_bytes_loses_no_letter() {
+    // 198 bytes, `\r`, `\n`: the robot reads the `\r` as the line's last byte and drops it.
+    let all = findings(
+        "rules/compat-line-too-long/bad-crlf.dat",
+        Options::default(),
+    );
+    let found = of_rule(&all, "compat-line-too-long");
+    assert_eq!((found.len(), found[0].line, found[0].column), (1, 8, 198));
+    assert!(found[0].diagnostic.message.ends_with(
+        "only its line ending does not fit, and the robot's reader reads it as an empty line"
+    ));
+}
+
+#[test]
+fn control_character_explains_a_text_direction_control() {
+    let all = findings("rules/control-character/bad.dat", Options::default());
+    let bidi = &of_rule(&all, "control-character")[3].diagnostic;
+    assert!(bidi
+        .message
+        .starts_with("invisible text-direction control U+202E inside a value"));
+}
+
+#[test]
+fn compat_no_final_newline_shows_the_lost_letter_of_a_text() {
+    let all = findings(
+        "rules/compat-no-final-newline/bad-text.dat",
+        Options::default(),
+    );
+    let found = of_rule(&all, "compat-no-final-newline");
+    assert_eq!((found[0].line, found[0].column), (24, 41));
+    assert!(
+        found[0]
+            .diagnostic
+            .message
+            .ends_with("loading `…Sawubon` instead of `…Sawubona`"),
+        "{}",
+        found[0].diagnostic.message
+    );
+}
+
+// ---------------------------------------------------------------------------------------
+// Fixes
+
+#[test]
+fn key_case_fix() {
+    assert_fix_gives_good("key-case", Options::default());
+}
+
+#[test]
+fn trailing_whitespace_fix() {
+    assert_fix_gives_good("trailing-whitespace", Options::default());
+}
+
+#[test]
+fn compat_crlf_fix() {
+    assert_fix_gives_good("compat-crlf", Options::default());
+}
+
+#[test]
+fn compat_no_final_newline_fix() {
+    assert_fix_gives_good("compat-no-final-newline", Options::default());
+}
+
+#[test]
+fn compat_bom_fix() {
+    assert_fix_gives_good("compat-bom", Options::default());
+}
+
+#[test]
+fn legacy_key_fix() {
+    assert_fix_gives_good("legacy-key", pinned(Dialect::Current));
+}
+
+#[test]
+fn all_fixes_of_a_windows_file_together_give_a_clean_file() {
+    // A byte-order mark, CRLF endings, trailing blanks and no final newline at once.
+    let good = read("rules/compat-bom/good.dat");
+    let mut windows = format!("\u{feff}{}", good.text().replace('\n', "  \r\n"));
+    windows.truncate(windows.len() - 2);
+    let source = SourceFile::from_bytes("windows", windows.into_bytes());
+    let all = findings_of(&source, Options::default());
+    let edits: Vec<&Edit> = all
+        .iter()
+        .filter_map(|f| f.diagnostic.fix.as_ref())
+        .flat_map(|fix| &fix.edits)
+        .collect();
+    assert_eq!(apply(source.text(), &edits), good.text());
+}
+
+// ---------------------------------------------------------------------------------------
+// Acceptance: the real files
+
+fn summary(all: &[Finding]) -> Vec<(&'static str, u32)> {
+    all.iter().map(|f| (f.rule, f.line)).collect()
+}
+
+fn errors(all: &[Finding]) -> Vec<&Finding> {
+    all.iter()
+        .filter(|f| f.diagnostic.severity() == Severity::Error)
+        .collect()
+}
+
+#[test]
+fn the_seed_file() {
+    let all = findings(
+        "corpus/environmentKnowledgeBaseInput.dat",
+        Options::default(),
+    );
+    let errors = errors(&all);
+    assert_eq!(errors.len(), 2, "{}", show(&all));
+    let key_case = errors[1];
+    assert_eq!((key_case.rule, key_case.line), ("key-case", 34));
+    let fix = key_case.diagnostic.fix.as_ref().unwrap();
+    assert_eq!(fix.edits.len(), 1);
+    assert_eq!(fix.edits[0].replacement, "postGestureMessageEnglish");
+    assert_eq!(errors[0].rule, "missing-field");
+    assert_eq!(errors[0].diagnostic.location_id, Some(4));
+    assert_eq!(of_rule(&all, "untranslated-message").len(), 20);
+    let repeated: Vec<u32> = of_rule(&all, "repeated-word")
+        .iter()
+        .map(|f| f.line)
+        .collect();
+    assert_eq!(repeated, [4]);
+    assert_eq!(all.len(), 2 + 20 + 1, "{}", show(&all));
+}
+
+#[test]
+fn the_2025_06_file_has_no_errors() {
+    let all = findings(
+        "corpus/upstream-2025-06-environmentKnowledgeBaseInput.dat",
+        Options::default(),
+    );
+    assert!(errors(&all).is_empty(), "{}", show(&all));
+}
+
+#[test]
+fn the_2026_03_gesture_arm_file_has_three_long_lines() {
+    let all = findings(
+        "corpus/upstream-2026-03-gesture-arm-environmentKnowledgeBaseInput.dat",
+        Options::default(),
+    );
+    let errors: Vec<(&str, u32)> = summary(&all)
+        .into_iter()
+        .filter(|(rule, _)| rules::by_name(rule).unwrap().severity == Severity::Error)
+        .collect();
+    assert_eq!(
+        errors,
+        [
+            ("compat-line-too-long", 17),
+            ("compat-line-too-long", 29),
+            ("compat-line-too-long", 41)
+        ],
+        "{}",
+        show(&all)
+    );
+}
+
+#[test]
+fn the_2026_02_file_has_two_long_lines_and_a_short_tour() {
+    let all = findings(
+        "corpus/upstream-2026-02-environmentKnowledgeBaseInput.dat",
+        Options::default(),
+    );
+    let errors: Vec<(&str, u32)> = errors(&all).iter().map(|f| (f.rule, f.line)).collect();
+    assert_eq!(
+        errors,
+        [("compat-line-too-long", 18), ("compat-line-too-long", 40)],
+        "{}",
+        show(&all)
+    );
+    let unused: Vec<Option<u32>> = of_rule(&all, "unused-location")
+        .iter()
+        .map(|f| f.diagnostic.location_id)
+        .collect();
+    assert_eq!(unused, [Some(1), Some(3), Some(4), Some(5)]);
+}
+
+// ---------------------------------------------------------------------------------------
+// The README
+
+#[test]
+fn the_readme_rule_table_is_generated_from_the_catalogue() {
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
+    let (start, end) = ("<!-- rules:start -->", "<!-- rules:end -->");
+    let from = readme
+        .find(start)
+        .expect("README.md has no <!-- rules:start -->")
+        + start.len();
+    let to = readme
+        .find(end)
+        .expect("README.md has no <!-- rules:end -->");
+    let table = markdown_table(rules::ALL);
+    assert!(
+        readme[from..to].trim() == table.trim(),
+        "the rule table in README.md is out of date: replace the lines between {start} and \
+         {end} with the output of `cargo run -- rules --markdown`"
+    );
+}
+
+// ---------------------------------------------------------------------------------------
+// Any input
+
+mod any_input {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// Pieces of knowledge-base lines, good and bad, glued at random.
+    fn piece() -> impl Strategy<Value = Vec<u8>> {
+        let pieces: Vec<&'static [u8]> = vec![
+            b"robotLocationDescription",
+            b"robotLocation",
+            b"robotLocationPose",
+            b"gestureTarget",
+            b"gestureArm",
+            b"preGestureMessageEnglish",
+            b"postGestureMessageenglish",
+            b"culturalKnowledge",
+            b"tourSpecification",
+            b"colour",
+            b" ",
+            b"\t",
+            b"\n",
+            b"\r\n",
+            b"\r",
+            b"1",
+            b"2",
+            b"0",
+            b"-1",
+            b"2147483648",
+            b"4a",
+            b"2.6",
+            b"-90",
+            b".5",
+            b"8,1",
+            b"nan",
+            b"1e400",
+            b"left",
+            b"up",
+            b"the",
+            b"No message in isiZulu",
+            b"\xef\xbb\xbf",
+            b"\xff",
+            b"\xe2\x82",
+            b"\x1b[31m",
+            b"\x00",
+            "Ùmuntu".as_bytes(),
+            "\u{202e}".as_bytes(),
+            b"#",
+            b",",
+        ];
+        prop::sample::select(pieces).prop_map(<[u8]>::to_vec)
+    }
+
+    fn file() -> impl Strategy<Value = Vec<u8>> {
+        prop::collection::vec(piece(), 0..80).prop_map(|pieces| pieces.concat())
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(300))]
+
+        /// No input makes a rule panic, point outside the text or split a character, and
+        /// the edits of all fixes together do not overlap.
+        #[test]
+        fn every_finding_is_well_formed(bytes in file(), pin in prop::option::of(prop::bool::ANY)) {
+            let options = Options {
+                dialect: pin.map(|seed| if seed { Dialect::Seed } else { Dialect::Current }),
+                ..Options::default()
+            };
+            let source = SourceFile::from_bytes("any", bytes);
+            let text = source.text();
+            let checked = ekb::check(&source, &options);
+            for d in &checked.diagnostics {
+                let spans = std::iter::once(d.span)
+                    .chain(d.labels.iter().map(|l| l.span))
+                    .chain(d.fix.iter().flat_map(|f| f.edits.iter().map(|e| e.span)));
+                for span in spans {
+                    prop_assert!(span.start <= span.end && span.end as usize <= text.len(), "{d:?}");
+                    prop_assert!(text.is_char_boundary(span.start as usize), "{d:?}");
+                    prop_assert!(text.is_char_boundary(span.end as usize), "{d:?}");
+                }
+            }
+            // `ekb fix` applies every fix at once: together they must not overlap either.
+            let edits: Vec<&Edit> = checked
+                .diagnostics
+                .iter()
+                .filter_map(|d| d.fix.as_ref())
+                .flat_map(|fix| &fix.edits)
+                .collect();
+            apply(text, &edits);
+        }
+    }
+}
