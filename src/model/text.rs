@@ -8,8 +8,13 @@ pub fn words(text: &str) -> impl Iterator<Item = &str> {
 /// Whether a message is a placeholder such as `No message in isiZulu` rather than a message.
 pub fn is_placeholder(text: &str) -> bool {
     let lower = text.trim().to_ascii_lowercase();
-    lower.starts_with("no message")
-        || lower.starts_with("no translation")
+    let starts_with_phrase = |phrase: &str| {
+        lower
+            .strip_prefix(phrase)
+            .is_some_and(|rest| rest.is_empty() || rest.starts_with(' '))
+    };
+    starts_with_phrase("no message")
+        || starts_with_phrase("no translation")
         || matches!(
             lower.as_str(),
             "todo" | "tbd" | "-" | "n/a" | "none" | "..."
@@ -25,6 +30,7 @@ mod tests {
         assert!(is_placeholder("No message in isiZulu"));
         assert!(is_placeholder("TODO"));
         assert!(!is_placeholder("Nomessage is fine as a word"));
+        assert!(!is_placeholder("No messages are lost when you follow me"));
         assert!(!is_placeholder("Murakaza neza"));
     }
 }
