@@ -45,6 +45,14 @@ impl Point {
     pub fn is_no_gesture(&self) -> bool {
         self.x == 0.0 && self.y == 0.0 && self.z == 0.0
     }
+
+    /// The robot's own test for "no gesture", in its own arithmetic: it stores coordinates
+    /// as C `float`s and compares `x + y + z == 0`, so `1.0 -1.0 0.0` counts as no gesture,
+    /// and so does `1 1e-8 -1`.
+    pub fn robot_sees_no_gesture(&self) -> bool {
+        let (x, y, z) = (self.x as f32, self.y as f32, self.z as f32);
+        x + y + z == 0.0
+    }
 }
 
 /// The arm the robot gestures with.
@@ -179,5 +187,19 @@ impl<'a> KnowledgeBase<'a> {
         self.tour
             .iter()
             .flat_map(|tour| tour.stops.iter().map(|stop| stop.value))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_robot_sums_in_single_precision() {
+        let sums_to_zero = |x, y, z| Point { x, y, z }.robot_sees_no_gesture();
+        assert!(sums_to_zero(1.0, -1.0, 0.0));
+        assert!(sums_to_zero(0.1, 0.2, -0.3));
+        assert!(sums_to_zero(1.0, 1e-8, -1.0));
+        assert!(!sums_to_zero(1.0, -1.0, 0.01));
     }
 }

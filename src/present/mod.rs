@@ -62,7 +62,7 @@ impl Gesture {
     pub fn of(target: &Point) -> Gesture {
         if target.is_no_gesture() {
             Gesture::None
-        } else if target.x + target.y + target.z == 0.0 {
+        } else if target.robot_sees_no_gesture() {
             Gesture::Skipped(*target)
         } else {
             Gesture::At(*target)

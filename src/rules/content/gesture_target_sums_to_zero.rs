@@ -1,5 +1,5 @@
 use crate::diagnostic::Diagnostic;
-use crate::model::{KnowledgeBase, Point};
+use crate::model::KnowledgeBase;
 use crate::rules::declare_rule;
 
 declare_rule! {
@@ -29,7 +29,7 @@ pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
             continue;
         };
         let point = target.value;
-        if point.is_no_gesture() || !robot_sees_no_gesture(&point) {
+        if point.is_no_gesture() || !point.robot_sees_no_gesture() {
             continue;
         }
         out.push(
@@ -44,26 +44,5 @@ pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
             .at_location(Some(location.id))
             .with_help("move the target slightly (e.g. change z by 0.01) so its coordinates do not sum to 0"),
         );
-    }
-}
-
-/// The robot's own test, in its own arithmetic: it stores coordinates as C `float`s and
-/// compares `x + y + z == 0`, so `0.1 0.2 -0.3` counts as zero there and `1 1e-8 -1` too.
-fn robot_sees_no_gesture(point: &Point) -> bool {
-    let (x, y, z) = (point.x as f32, point.y as f32, point.z as f32);
-    x + y + z == 0.0
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn sums_in_single_precision_like_the_robot() {
-        let sums_to_zero = |x, y, z| robot_sees_no_gesture(&Point { x, y, z });
-        assert!(sums_to_zero(1.0, -1.0, 0.0));
-        assert!(sums_to_zero(0.1, 0.2, -0.3));
-        assert!(sums_to_zero(1.0, 1e-8, -1.0));
-        assert!(!sums_to_zero(1.0, -1.0, 0.01));
     }
 }
