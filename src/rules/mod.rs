@@ -29,6 +29,20 @@ pub struct Rule {
     pub doc: &'static str,
 }
 
+impl Rule {
+    /// [`Rule::doc`] as plain Markdown (doc comments keep the space after `///`).
+    pub fn markdown(&self) -> String {
+        let lines = self.doc.lines();
+        lines
+            .map(|line| line.strip_prefix(' ').unwrap_or(line))
+            .fold(String::with_capacity(self.doc.len()), |mut out, line| {
+                out.push_str(line);
+                out.push('\n');
+                out
+            })
+    }
+}
+
 /// The sections of the catalogue.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Category {
