@@ -49,7 +49,8 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     };
     let failed = summary.errors > 0 || (args.deny_warnings && summary.warnings > 0);
     let exit = if failed { Exit::Findings } else { Exit::Clean };
-    let mut stdout = std::io::stdout().lock();
+    // Buffered: a large file can have hundreds of thousands of findings, one line each.
+    let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
     let written = render::render(
         args.format,
         &checked,
