@@ -26,7 +26,7 @@ pub enum Format {
     Human,
     /// One line per finding: `file:line:col: severity[rule] message`
     Concise,
-    /// One JSON object (SPEC §5)
+    /// One JSON object: every finding, with its fix, and a summary
     Json,
     /// GitHub Actions workflow commands (annotations)
     Github,

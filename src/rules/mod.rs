@@ -32,14 +32,12 @@ pub struct Rule {
 impl Rule {
     /// [`Rule::doc`] as plain Markdown (doc comments keep the space after `///`).
     pub fn markdown(&self) -> String {
-        let lines = self.doc.lines();
-        lines
-            .map(|line| line.strip_prefix(' ').unwrap_or(line))
-            .fold(String::with_capacity(self.doc.len()), |mut out, line| {
-                out.push_str(line);
-                out.push('\n');
-                out
-            })
+        let mut out = String::with_capacity(self.doc.len());
+        for line in self.doc.lines() {
+            out.push_str(line.strip_prefix(' ').unwrap_or(line));
+            out.push('\n');
+        }
+        out
     }
 }
 
