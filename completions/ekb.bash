@@ -136,7 +136,7 @@ _ekb() {
             fi
             case "${prev}" in
                 --format)
-                    COMPREPLY=($(compgen -W "concise json github" -- "${cur}"))
+                    COMPREPLY=($(compgen -W "human concise json github sarif" -- "${cur}"))
                     return 0
                     ;;
                 --config)

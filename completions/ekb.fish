@@ -46,9 +46,11 @@ complete -c ekb -n "__fish_ekb_needs_command" -f -a "explain" -d 'Show one rule\
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "completions" -d 'Print a shell completion script'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "man" -d 'Print the man page'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c ekb -n "__fish_ekb_using_subcommand check" -l format -d 'Output format' -r -f -a "concise\t'One line per finding: `file:line:col: severity[rule] message`'
-json\t'One JSON object (SPEC §5)'
-github\t'GitHub Actions workflow commands (annotations)'"
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l format -d 'Output format' -r -f -a "human\t'For people: each finding with the lines around it, underlined, and what to do'
+concise\t'One line per finding: `file:line:col: severity[rule] message`'
+json\t'One JSON object: every finding, with its fix, and a summary'
+github\t'GitHub Actions workflow commands (annotations)'
+sarif\t'SARIF 2.1.0, for GitHub code scanning and other SARIF viewers'"
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''

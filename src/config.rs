@@ -56,10 +56,13 @@ impl Config {
     /// Reads the configuration at `path`.
     pub fn load(path: &Path) -> Result<Config, ConfigError> {
         let text = std::fs::read_to_string(path).map_err(|e| {
+            let reason = match e.kind() {
+                std::io::ErrorKind::NotFound => "no such file".to_string(),
+                _ => e.to_string().to_lowercase(),
+            };
             ConfigError(format!(
-                "cannot read configuration {}: {}",
-                path.display(),
-                e.to_string().to_lowercase()
+                "cannot read configuration {}: {reason}",
+                path.display()
             ))
         })?;
         let mut config = Config::parse(&text)

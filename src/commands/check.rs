@@ -3,7 +3,7 @@
 use std::io::Write;
 use std::path::PathBuf;
 
-use super::{CommandResult, Context, Exit};
+use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::diagnostic::Summary;
 use crate::render::{self, Format, RenderOptions};
@@ -16,7 +16,7 @@ pub struct Args {
     pub files: Vec<PathBuf>,
 
     /// Output format
-    #[arg(long, value_enum, default_value_t = Format::Concise)]
+    #[arg(long, value_enum, default_value_t = Format::Human)]
     pub format: Format,
 
     /// Exit 1 on warnings too
@@ -47,15 +47,22 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         color: context.color_stdout(),
         quiet: context.quiet,
     };
-    let mut stdout = std::io::stdout().lock();
-    render::render(
+    let failed = summary.errors > 0 || (args.deny_warnings && summary.warnings > 0);
+    let exit = if failed { Exit::Findings } else { Exit::Clean };
+    // Buffered: a large file can have hundreds of thousands of findings, one line each.
+    let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
+    let written = render::render(
         args.format,
         &checked,
         &summary,
         &mut stdout,
         &render_options,
-    )?;
-    stdout.flush()?;
-    let failed = summary.errors > 0 || (args.deny_warnings && summary.warnings > 0);
-    Ok(if failed { Exit::Findings } else { Exit::Clean })
+    )
+    .and_then(|()| stdout.flush());
+    match written {
+        // A reader that stops early (`ekb check | head`) is not a failure of the check.
+        Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => Ok(exit),
+        Err(error) => Err(CommandError(format!("cannot write the report: {error}"))),
+        Ok(()) => Ok(exit),
+    }
 }

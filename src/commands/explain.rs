@@ -41,9 +41,6 @@ pub fn run(args: &Args, _context: &Context) -> CommandResult {
         rule.summary,
         fix
     )?;
-    // Doc comments keep the space after `///`; strip it for plain Markdown.
-    for line in rule.doc.lines() {
-        writeln!(stdout, "{}", line.strip_prefix(' ').unwrap_or(line))?;
-    }
+    stdout.write_all(rule.markdown().as_bytes())?;
     Ok(Exit::Clean)
 }

@@ -6,8 +6,10 @@
 pub mod concise;
 pub mod escape;
 pub mod github;
+pub mod human;
 pub mod json;
 pub mod located;
+pub mod sarif;
 
 use std::io::{self, Write};
 
@@ -20,12 +22,16 @@ pub use located::{FileReport, LocatedDiagnostic};
 /// `ekb check --format`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum Format {
+    /// For people: each finding with the lines around it, underlined, and what to do
+    Human,
     /// One line per finding: `file:line:col: severity[rule] message`
     Concise,
-    /// One JSON object (SPEC §5)
+    /// One JSON object: every finding, with its fix, and a summary
     Json,
     /// GitHub Actions workflow commands (annotations)
     Github,
+    /// SARIF 2.1.0, for GitHub code scanning and other SARIF viewers
+    Sarif,
 }
 
 /// Writes the findings of `files` in `format`.
@@ -36,11 +42,15 @@ pub fn render(
     out: &mut dyn Write,
     options: &RenderOptions,
 ) -> io::Result<()> {
-    let reports: Vec<FileReport> = files.iter().map(FileReport::new).collect();
+    let mut reports: Vec<FileReport> = files.iter().map(FileReport::new).collect();
+    // Findings are sorted by file, then position (SPEC §5); each file's are already in order.
+    reports.sort_by(|a, b| a.checked.source.name().cmp(b.checked.source.name()));
     match format {
+        Format::Human => human::render(&reports, summary, out, options),
         Format::Concise => concise::render(&reports, summary, out, options),
         Format::Json => json::render(&reports, summary, out),
         Format::Github => github::render(&reports, out),
+        Format::Sarif => sarif::render(&reports, out),
     }
 }
 

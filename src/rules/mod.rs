@@ -29,6 +29,18 @@ pub struct Rule {
     pub doc: &'static str,
 }
 
+impl Rule {
+    /// [`Rule::doc`] as plain Markdown (doc comments keep the space after `///`).
+    pub fn markdown(&self) -> String {
+        let mut out = String::with_capacity(self.doc.len());
+        for line in self.doc.lines() {
+            out.push_str(line.strip_prefix(' ').unwrap_or(line));
+            out.push('\n');
+        }
+        out
+    }
+}
+
 /// The sections of the catalogue.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Category {

@@ -1,0 +1,176 @@
+//! `--format sarif`: SARIF 2.1.0, the format GitHub code scanning uploads
+//! (`github/codeql-action/upload-sarif`) and other SARIF viewers read.
+//!
+//! The run lists the whole rule catalogue, so a result's `ruleIndex` is its rule's place in
+//! [`rules::ALL`]; columns count Unicode code points, as everywhere in `ekb`.
+
+use std::io::{self, Write};
+use std::path::{Path, MAIN_SEPARATOR_STR};
+
+use serde_json::{json, Value};
+
+use super::located::Region;
+use super::{FileReport, LocatedDiagnostic};
+use crate::diagnostic::Severity;
+use crate::rules::{self, Rule};
+
+const SCHEMA: &str = "https://json.schemastore.org/sarif-2.1.0.json";
+
+/// What `ekb` calls standard input; kept as is rather than made into a file URI.
+const STDIN: &str = "<stdin>";
+
+pub fn render(reports: &[FileReport<'_>], out: &mut dyn Write) -> io::Result<()> {
+    let mut driver = json!({
+        "name": "ekb",
+        "version": env!("CARGO_PKG_VERSION"),
+        "semanticVersion": env!("CARGO_PKG_VERSION"),
+        "rules": rules::ALL.iter().map(|rule| descriptor(rule)).collect::<Vec<_>>(),
+    });
+    let homepage = option_env!("CARGO_PKG_REPOSITORY").unwrap_or_default();
+    if !homepage.is_empty() {
+        driver["informationUri"] = json!(homepage);
+    }
+    let results: Vec<Value> = reports
+        .iter()
+        .flat_map(|report| &report.diagnostics)
+        .map(result)
+        .collect();
+    let log = json!({
+        "$schema": SCHEMA,
+        "version": "2.1.0",
+        "runs": [{
+            "tool": { "driver": driver },
+            "columnKind": "unicodeCodePoints",
+            "results": results,
+        }],
+    });
+    serde_json::to_writer_pretty(&mut *out, &log)?;
+    writeln!(out)
+}
+
+/// A `reportingDescriptor`: the rule as code scanning lists it.
+fn descriptor(rule: &Rule) -> Value {
+    let markdown = rule.markdown();
+    json!({
+        "id": rule.name,
+        "shortDescription": { "text": rule.summary },
+        "fullDescription": { "text": section(&markdown, "What it does").unwrap_or(rule.summary) },
+        "help": { "text": markdown, "markdown": markdown },
+        "defaultConfiguration": { "level": level(rule.severity) },
+        "properties": { "tags": [rule.category.title()] },
+    })
+}
+
+fn result(diagnostic: &LocatedDiagnostic<'_>) -> Value {
+    let uri = artifact_uri(diagnostic.file);
+    let mut result = json!({
+        "ruleId": diagnostic.rule,
+        "ruleIndex": rules::ALL.iter().position(|rule| std::ptr::eq(*rule, diagnostic.diagnostic.rule)),
+        "level": level(diagnostic.severity),
+        "message": { "text": diagnostic.message },
+        "locations": [{
+            "physicalLocation": {
+                "artifactLocation": { "uri": uri },
+                "region": region(diagnostic.region),
+            },
+        }],
+    });
+    if let Some(fix) = &diagnostic.fix {
+        result["fixes"] = json!([{
+            "description": { "text": fix.message },
+            "artifactChanges": [{
+                "artifactLocation": { "uri": uri },
+                "replacements": fix.edits.iter().map(|edit| json!({
+                    "deletedRegion": region(edit.region),
+                    "insertedContent": { "text": edit.replacement },
+                })).collect::<Vec<_>>(),
+            }],
+        }]);
+    }
+    result
+}
+
+fn region(region: Region) -> Value {
+    json!({
+        "startLine": region.line,
+        "startColumn": region.column,
+        "endLine": region.end_line,
+        "endColumn": region.end_column,
+    })
+}
+
+fn level(severity: Severity) -> &'static str {
+    match severity {
+        Severity::Error => "error",
+        Severity::Warning => "warning",
+        Severity::Info => "note",
+    }
+}
+
+/// The text of a `## title` section of a rule's Markdown, on one line.
+fn section<'a>(markdown: &'a str, title: &str) -> Option<&'a str> {
+    let heading = format!("## {title}\n");
+    let start = markdown.find(&heading)? + heading.len();
+    let rest = &markdown[start..];
+    let end = rest.find("\n## ").unwrap_or(rest.len());
+    Some(rest[..end].trim())
+}
+
+/// A file name as a URI reference: relative paths stay relative (code scanning resolves them
+/// against the repository), with forward slashes, no leading `./`, and percent-encoding;
+/// absolute paths become `file:` URIs.
+fn artifact_uri(file: &str) -> String {
+    if file == STDIN {
+        return file.to_string();
+    }
+    let slashed = file.replace(MAIN_SEPARATOR_STR, "/");
+    let mut relative = slashed.as_str();
+    while let Some(rest) = relative.strip_prefix("./") {
+        relative = rest.trim_start_matches('/');
+    }
+    let encoded = percent_encode(relative);
+    match Path::new(file).is_absolute() {
+        true if encoded.starts_with('/') => format!("file://{encoded}"),
+        true => format!("file:///{encoded}"),
+        false => encoded,
+    }
+}
+
+/// Percent-encodes every byte but the URI's unreserved characters and `/`.
+fn percent_encode(path: &str) -> String {
+    let mut out = String::with_capacity(path.len());
+    for byte in path.bytes() {
+        match byte {
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' | b'/' => {
+                out.push(byte as char)
+            }
+            _ => out.push_str(&format!("%{byte:02X}")),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn uris_are_relative_slashed_and_encoded() {
+        assert_eq!(artifact_uri("./data/kb.dat"), "data/kb.dat");
+        assert_eq!(artifact_uri("data/my kb%.dat"), "data/my%20kb%25.dat");
+        assert_eq!(artifact_uri("data/Ùmuntu.dat"), "data/%C3%99muntu.dat");
+        assert_eq!(artifact_uri("<stdin>"), "<stdin>");
+        if cfg!(unix) {
+            assert_eq!(artifact_uri("/srv/kb.dat"), "file:///srv/kb.dat");
+        }
+    }
+
+    #[test]
+    fn full_description_is_what_the_rule_does() {
+        let markdown = rules::by_name("key-case").unwrap().markdown();
+        assert_eq!(
+            section(&markdown, "What it does"),
+            Some("Flags a known key written in the wrong case, and fixes it.")
+        );
+    }
+}

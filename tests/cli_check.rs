@@ -1,0 +1,665 @@
+//! `ekb check` end to end: exit codes, every output format, standard input, several files,
+//! and how the configuration is found and read.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use assert_cmd::Command;
+use serde_json::{json, Value};
+
+fn fixtures() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/check")
+}
+
+fn seed_text() -> String {
+    fs::read_to_string(fixtures().join("seed.dat")).unwrap()
+}
+
+/// `ekb` run in `dir`, with no configuration or colour settings inherited from the caller.
+fn ekb_in(dir: &Path) -> Command {
+    let mut command = Command::cargo_bin("ekb").unwrap();
+    command
+        .current_dir(dir)
+        .env_remove("EKB_CONFIG")
+        .env_remove("NO_COLOR");
+    command
+}
+
+/// `ekb` run in the fixtures folder, so that file names in the output are short.
+fn ekb() -> Command {
+    ekb_in(&fixtures())
+}
+
+struct Run {
+    code: i32,
+    stdout: String,
+    stderr: String,
+}
+
+fn run(command: &mut Command) -> Run {
+    let output = command.output().unwrap();
+    Run {
+        code: output.status.code().expect("exited"),
+        stdout: String::from_utf8(output.stdout).unwrap(),
+        stderr: String::from_utf8(output.stderr).unwrap(),
+    }
+}
+
+/// Asserts exit code 2 with exactly one `ekb: error:` line on standard error containing
+/// `reason`, and nothing on standard output.
+fn assert_failure(run: &Run, reason: &str) {
+    assert_eq!(run.code, 2, "stderr: {}", run.stderr);
+    assert_eq!(run.stdout, "");
+    assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
+    assert!(run.stderr.starts_with("ekb: error: "), "{}", run.stderr);
+    assert!(run.stderr.contains(reason), "{}", run.stderr);
+}
+
+fn placeholder(line: u32, language: &str, phase: &str, location: u32) -> String {
+    let column = 33;
+    format!(
+        "seed.dat:{line}:{column}: warning[untranslated-message] the {language} message {phase} the gesture at location {location} is a placeholder: the robot would say \"No message in {language}\"\n"
+    )
+}
+
+/// The whole concise report of the seed file.
+fn seed_concise() -> String {
+    let mut expected = String::from(
+        "seed.dat:4:41: warning[repeated-word] \"the\" is repeated: the robot would say it twice\n",
+    );
+    for (location, first) in [(1, 5), (2, 14), (3, 23), (4, 32), (5, 41)] {
+        if location == 4 {
+            expected.push_str("seed.dat:28:1: error[missing-field] location 4 has no `postGestureMessageEnglish`: location 4 will say nothing after the gesture in English\n");
+        }
+        expected.push_str(&placeholder(first, "isiZulu", "before", location));
+        expected.push_str(&placeholder(first + 1, "Kinyarwanda", "before", location));
+        if location == 4 {
+            expected.push_str("seed.dat:34:1: error[key-case] `postGestureMessageenglish` is `postGestureMessageEnglish` in the wrong case: the robot's reader ignores this line, so location 4 will say nothing after the gesture in English\n");
+        }
+        expected.push_str(&placeholder(first + 3, "isiZulu", "after", location));
+        expected.push_str(&placeholder(first + 4, "Kinyarwanda", "after", location));
+    }
+    expected.push_str("Found 2 errors, 21 warnings (1 fixable with ekb fix)\n");
+    expected
+}
+
+// ---------------------------------------------------------------- exit codes and inputs
+
+#[test]
+fn clean_files_of_both_dialects_exit_0() {
+    for file in ["clean-seed.dat", "clean-current.dat"] {
+        let run = run(ekb().args(["check", "--format", "concise", file]));
+        assert_eq!(run.code, 0, "{file}: {}", run.stdout);
+        assert_eq!(run.stdout, "No problems found\n");
+        assert_eq!(run.stderr, "");
+        let run = run_human(file);
+        assert_eq!(run.code, 0);
+        assert_eq!(run.stdout, "No problems found\n");
+    }
+}
+
+fn run_human(file: &str) -> Run {
+    run(ekb().args(["--color", "never", "check", file]))
+}
+
+#[test]
+fn the_seed_exits_1_with_every_finding_in_concise_form() {
+    let run = run(ekb().args(["check", "--format", "concise", "seed.dat"]));
+    assert_eq!(run.code, 1);
+    assert_eq!(run.stdout, seed_concise());
+    assert_eq!(run.stderr, "");
+}
+
+#[test]
+fn a_missing_file_exits_2_with_one_line() {
+    let run = run(ekb().args(["check", "no-such.dat"]));
+    assert_failure(&run, "cannot read no-such.dat: no such file");
+}
+
+#[test]
+fn a_directory_exits_2_with_one_line() {
+    let run = run(ekb().args(["check", "."]));
+    assert_failure(&run, "is a directory");
+}
+
+#[test]
+fn an_unknown_format_is_a_usage_error() {
+    let run = run(ekb().args(["check", "--format", "xml", "seed.dat"]));
+    assert_eq!(run.code, 2);
+    assert!(run.stderr.contains("xml"), "{}", run.stderr);
+}
+
+#[test]
+fn warnings_fail_only_with_deny_warnings() {
+    let expected = "warning-only.dat:4:44: warning[repeated-word] \"the\" is repeated: the robot would say it twice\nFound 1 warning\n";
+    let run_plain = run(ekb().args(["check", "--format", "concise", "warning-only.dat"]));
+    assert_eq!(run_plain.code, 0);
+    assert_eq!(run_plain.stdout, expected);
+    let denied = run(ekb().args([
+        "check",
+        "--deny-warnings",
+        "--format",
+        "concise",
+        "warning-only.dat",
+    ]));
+    assert_eq!(denied.code, 1);
+    assert_eq!(denied.stdout, expected);
+    let clean = run(ekb().args(["check", "--deny-warnings", "clean-current.dat"]));
+    assert_eq!(clean.code, 0);
+}
+
+#[test]
+fn several_files_are_reported_in_file_order_and_counted() {
+    // Given out of order: the report is sorted by file name.
+    let run = run(ekb().args([
+        "check",
+        "--format",
+        "json",
+        "warning-only.dat",
+        "seed.dat",
+        "clean-seed.dat",
+    ]));
+    assert_eq!(run.code, 1);
+    let report: Value = serde_json::from_str(&run.stdout).unwrap();
+    assert_eq!(
+        report["summary"],
+        json!({ "files": 3, "errors": 2, "warnings": 22, "infos": 0 })
+    );
+    let files: Vec<&str> = report["diagnostics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| d["file"].as_str().unwrap())
+        .collect();
+    assert_eq!(files.len(), 24);
+    assert!(files[..23].iter().all(|&file| file == "seed.dat"));
+    assert_eq!(files[23], "warning-only.dat");
+
+    let concise = run_concise(&["clean-seed.dat", "warning-only.dat"]);
+    assert_eq!(concise.code, 0);
+    assert!(concise.stdout.ends_with("\nFound 1 warning\n"));
+}
+
+fn run_concise(files: &[&str]) -> Run {
+    run(ekb().args(["check", "--format", "concise"]).args(files))
+}
+
+#[test]
+fn one_unreadable_file_among_several_exits_2() {
+    let run = run(ekb().args(["check", "clean-seed.dat", "no-such.dat"]));
+    assert_failure(&run, "no-such.dat");
+}
+
+#[test]
+fn a_dash_reads_standard_input() {
+    let run = run(ekb()
+        .args(["check", "--format", "concise", "-"])
+        .write_stdin(seed_text()));
+    assert_eq!(run.code, 1);
+    assert_eq!(run.stdout, seed_concise().replace("seed.dat:", "<stdin>:"));
+}
+
+#[test]
+fn quiet_leaves_out_the_summary() {
+    let concise = run(ekb().args(["-q", "check", "--format", "concise", "seed.dat"]));
+    assert_eq!(concise.code, 1);
+    assert!(!concise.stdout.contains("Found"));
+    assert_eq!(concise.stdout.lines().count(), 23);
+    let human = run(ekb().args(["--quiet", "--color", "never", "check", "seed.dat"]));
+    assert!(human.stdout.contains("error[key-case]"));
+    assert!(!human.stdout.contains("Found"));
+    let clean = run(ekb().args(["-q", "check", "clean-seed.dat"]));
+    assert_eq!((clean.code, clean.stdout.as_str()), (0, ""));
+}
+
+// ---------------------------------------------------------------- formats
+
+#[test]
+fn json_has_the_exact_shape_of_the_spec() {
+    let run = run(ekb().args(["check", "--format", "json", "seed.dat"]));
+    assert_eq!(run.code, 1);
+    let report: Value = serde_json::from_str(&run.stdout).unwrap();
+    let object = report.as_object().unwrap();
+    assert_eq!(
+        object.keys().collect::<Vec<_>>(),
+        ["diagnostics", "summary"]
+    );
+    assert_eq!(
+        report["summary"],
+        json!({ "files": 1, "errors": 2, "warnings": 21, "infos": 0 })
+    );
+    let diagnostics = report["diagnostics"].as_array().unwrap();
+    assert_eq!(diagnostics.len(), 23);
+    for diagnostic in diagnostics {
+        let mut keys: Vec<&str> = diagnostic
+            .as_object()
+            .unwrap()
+            .keys()
+            .map(String::as_str)
+            .collect();
+        keys.sort_unstable();
+        assert_eq!(
+            keys,
+            [
+                "column",
+                "end_column",
+                "end_line",
+                "file",
+                "fix",
+                "help",
+                "line",
+                "location_id",
+                "message",
+                "rule",
+                "severity"
+            ]
+        );
+    }
+    let positions: Vec<(u64, u64)> = diagnostics
+        .iter()
+        .map(|d| (d["line"].as_u64().unwrap(), d["column"].as_u64().unwrap()))
+        .collect();
+    let mut sorted = positions.clone();
+    sorted.sort_unstable();
+    assert_eq!(positions, sorted);
+
+    let key_case = diagnostics
+        .iter()
+        .find(|d| d["rule"] == "key-case")
+        .unwrap();
+    assert_eq!(
+        *key_case,
+        json!({
+            "file": "seed.dat",
+            "rule": "key-case",
+            "severity": "error",
+            "message": "`postGestureMessageenglish` is `postGestureMessageEnglish` in the wrong case: the robot's reader ignores this line, so location 4 will say nothing after the gesture in English",
+            "line": 34, "column": 1, "end_line": 34, "end_column": 26,
+            "location_id": 4,
+            "help": "write the key as `postGestureMessageEnglish`",
+            "fix": {
+                "message": "rename to `postGestureMessageEnglish`",
+                "edits": [{
+                    "line": 34, "column": 1, "end_line": 34, "end_column": 26,
+                    "replacement": "postGestureMessageEnglish"
+                }]
+            }
+        })
+    );
+    let repeated = &diagnostics[0];
+    assert_eq!(repeated["rule"], "repeated-word");
+    assert_eq!(repeated["fix"], Value::Null);
+}
+
+#[test]
+fn json_of_a_clean_file_is_empty_with_a_summary() {
+    let run = run(ekb().args(["check", "--format", "json", "clean-current.dat"]));
+    assert_eq!(run.code, 0);
+    let report: Value = serde_json::from_str(&run.stdout).unwrap();
+    assert_eq!(
+        report,
+        json!({
+            "diagnostics": [],
+            "summary": { "files": 1, "errors": 0, "warnings": 0, "infos": 0 }
+        })
+    );
+}
+
+#[test]
+fn github_prints_one_workflow_command_per_finding() {
+    let run = run(ekb().args(["check", "--format", "github", "seed.dat"]));
+    assert_eq!(run.code, 1);
+    let lines: Vec<&str> = run.stdout.lines().collect();
+    assert_eq!(lines.len(), 23, "no summary line: {}", run.stdout);
+    assert!(lines.contains(&"::error file=seed.dat,line=34,col=1,endLine=34,endColumn=26,title=ekb key-case::`postGestureMessageenglish` is `postGestureMessageEnglish` in the wrong case: the robot's reader ignores this line, so location 4 will say nothing after the gesture in English"));
+    assert_eq!(
+        lines[0],
+        "::warning file=seed.dat,line=4,col=41,endLine=4,endColumn=48,title=ekb repeated-word::\"the\" is repeated: the robot would say it twice"
+    );
+    assert_eq!(
+        lines.iter().filter(|l| l.starts_with("::error ")).count(),
+        2
+    );
+}
+
+#[test]
+fn sarif_is_what_github_code_scanning_reads() {
+    let run = run(ekb().args(["check", "--format", "sarif", "./seed.dat"]));
+    assert_eq!(run.code, 1);
+    let log: Value = serde_json::from_str(&run.stdout).unwrap();
+    assert_eq!(
+        log["$schema"],
+        "https://json.schemastore.org/sarif-2.1.0.json"
+    );
+    assert_eq!(log["version"], "2.1.0");
+    let runs = log["runs"].as_array().unwrap();
+    assert_eq!(runs.len(), 1);
+    let driver = &runs[0]["tool"]["driver"];
+    assert_eq!(driver["name"], "ekb");
+    assert_eq!(driver["version"], env!("CARGO_PKG_VERSION"));
+    let rules = driver["rules"].as_array().unwrap();
+    assert!(rules.len() >= 34);
+    for rule in rules {
+        for field in ["shortDescription", "fullDescription", "help"] {
+            assert!(!rule[field]["text"].as_str().unwrap().is_empty(), "{rule}");
+        }
+        assert!(rule["help"]["markdown"]
+            .as_str()
+            .unwrap()
+            .contains("## Why it matters"));
+        let level = rule["defaultConfiguration"]["level"].as_str().unwrap();
+        assert!(["error", "warning", "note"].contains(&level));
+    }
+    let unused = rules.iter().find(|r| r["id"] == "unused-location").unwrap();
+    assert_eq!(unused["defaultConfiguration"]["level"], "note");
+
+    let results = runs[0]["results"].as_array().unwrap();
+    assert_eq!(results.len(), 23);
+    let key_case = results.iter().find(|r| r["ruleId"] == "key-case").unwrap();
+    let index = key_case["ruleIndex"].as_u64().unwrap() as usize;
+    assert_eq!(rules[index]["id"], "key-case");
+    assert_eq!(rules[index]["defaultConfiguration"]["level"], "error");
+    assert_eq!(
+        rules[index]["shortDescription"]["text"],
+        "a known key in the wrong case"
+    );
+    assert_eq!(key_case["level"], "error");
+    assert!(key_case["message"]["text"]
+        .as_str()
+        .unwrap()
+        .starts_with("`postGestureMessageenglish` is `postGestureMessageEnglish`"));
+    assert_eq!(
+        key_case["locations"][0]["physicalLocation"],
+        json!({
+            "artifactLocation": { "uri": "seed.dat" },
+            "region": { "startLine": 34, "startColumn": 1, "endLine": 34, "endColumn": 26 }
+        })
+    );
+    let warning = results
+        .iter()
+        .find(|r| r["ruleId"] == "repeated-word")
+        .unwrap();
+    assert_eq!(warning["level"], "warning");
+}
+
+#[test]
+fn sarif_names_standard_input_stdin() {
+    let run = run(ekb()
+        .args(["check", "--format", "sarif", "-"])
+        .write_stdin(seed_text()));
+    let log: Value = serde_json::from_str(&run.stdout).unwrap();
+    let uri = &log["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["artifactLocation"]
+        ["uri"];
+    assert_eq!(uri, "<stdin>");
+}
+
+#[test]
+fn human_is_the_default_and_says_what_to_change() {
+    let run = run_human("seed.dat");
+    assert_eq!(run.code, 1);
+    let out = &run.stdout;
+    for expected in [
+        "error[key-case]",
+        "× `postGestureMessageenglish` is `postGestureMessageEnglish` in the wrong case",
+        "╭─[seed.dat:34:1]",
+        " 34 │ postGestureMessageenglish     4 We use it for teaching mobile robotics",
+        "╰── rename to `postGestureMessageEnglish`",
+        "help: write the key as `postGestureMessageEnglish`",
+        "fix available: rename to `postGestureMessageEnglish` (run `ekb fix`)",
+        "warning[repeated-word]",
+        "error[missing-field]",
+        "help: add a line `postGestureMessageEnglish 4 …`",
+    ] {
+        assert!(out.contains(expected), "missing {expected:?} in\n{out}");
+    }
+    assert_eq!(out.matches("warning[untranslated-message]").count(), 20);
+    assert!(out.ends_with("\nFound 2 errors, 21 warnings (1 fixable with ekb fix)\n"));
+    assert_eq!(run.stderr, "");
+}
+
+#[test]
+fn human_shows_the_lines_around_the_finding() {
+    let out = run_human("seed.dat").stdout;
+    let report = out
+        .split("\n\n")
+        .skip_while(|part| !part.ends_with("error[key-case]"))
+        .nth(1)
+        .unwrap();
+    let numbered: Vec<u32> = report
+        .lines()
+        .filter_map(|line| line.split_once(" │ ")?.0.trim().parse().ok())
+        .collect();
+    assert_eq!(numbered, [33, 34, 35], "{report}");
+}
+
+#[test]
+fn colour_follows_the_color_option_and_no_color() {
+    let esc = |run: &Run| run.stdout.contains('\x1b');
+    assert!(!esc(&run(
+        ekb().args(["--color", "never", "check", "seed.dat"])
+    )));
+    assert!(esc(&run(
+        ekb().args(["--color", "always", "check", "seed.dat"])
+    )));
+    assert!(!esc(&run(ekb()
+        .env("NO_COLOR", "1")
+        .args(["check", "seed.dat"]))));
+    assert!(
+        !esc(&run(ekb().args(["check", "seed.dat"]))),
+        "not a terminal"
+    );
+}
+
+#[test]
+fn control_characters_in_the_file_never_reach_the_terminal() {
+    let evil = "robotLocationDescription      1 Ro\x1b]0;pwned\x07omba\u{202E}\nrobotlocation 1 \x1b[2J 1 2\n";
+    for format in ["human", "concise", "github", "json", "sarif"] {
+        let run = run(ekb()
+            .args(["--color", "never", "check", "--format", format, "-"])
+            .write_stdin(evil));
+        assert_eq!(run.code, 1, "{format}");
+        assert!(
+            !run.stdout.contains(['\x1b', '\x07', '\u{202E}']),
+            "{format}: {}",
+            run.stdout
+        );
+    }
+    let human = run(ekb()
+        .args(["--color", "never", "check", "-"])
+        .write_stdin(evil))
+    .stdout;
+    assert!(
+        human.contains(
+            " 1 │ robotLocationDescription      1 Ro\\u{001B}]0;pwned\\u{0007}omba\\u{202E}"
+        ),
+        "{human}"
+    );
+    assert!(human.contains("╭─[<stdin>:1:35]"), "{human}");
+}
+
+// ---------------------------------------------------------------- configuration
+
+/// A robot folder: `config/environmentKnowledgeBaseConfiguration.ini` holding `config`, and
+/// `data/kb.dat` holding the seed.
+fn robot_folder(config: &str) -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    fs::create_dir(dir.path().join("config")).unwrap();
+    fs::create_dir(dir.path().join("data")).unwrap();
+    fs::write(
+        dir.path()
+            .join("config/environmentKnowledgeBaseConfiguration.ini"),
+        config,
+    )
+    .unwrap();
+    fs::write(dir.path().join("data/kb.dat"), seed_text()).unwrap();
+    dir
+}
+
+fn assert_checked_configured_seed(run: &Run, shown_as: &str) {
+    assert_eq!(run.code, 1, "stderr: {}", run.stderr);
+    assert!(
+        run.stdout.contains(&format!(
+            "{shown_as}:34:1: error[key-case] `postGestureMessageenglish`"
+        )),
+        "{}",
+        run.stdout
+    );
+}
+
+#[test]
+fn with_no_file_the_configured_knowledge_base_is_checked() {
+    // The robot's own whitespace form, as in its repository.
+    let robot =
+        robot_folder("knowledgeBase environmentKnowledgeBaseInput.dat\nverboseMode   false\n");
+    fs::rename(
+        robot.path().join("data/kb.dat"),
+        robot.path().join("data/environmentKnowledgeBaseInput.dat"),
+    )
+    .unwrap();
+    let run = run(ekb_in(robot.path()).args(["check", "--format", "concise"]));
+    assert_checked_configured_seed(&run, "data/environmentKnowledgeBaseInput.dat");
+    assert_eq!(run.stderr, "");
+}
+
+#[test]
+fn standard_ini_form_works_too() {
+    let robot =
+        robot_folder("; ekb settings\n[robot]\nknowledgeBase = kb.dat\nverboseMode = false\n");
+    let run = run(ekb_in(robot.path()).args(["check", "--format", "concise"]));
+    assert_checked_configured_seed(&run, "data/kb.dat");
+}
+
+#[test]
+fn a_file_argument_wins_over_the_configured_one() {
+    let robot = robot_folder("knowledgeBase kb.dat\n");
+    fs::write(
+        robot.path().join("clean.dat"),
+        fs::read(fixtures().join("clean-seed.dat")).unwrap(),
+    )
+    .unwrap();
+    let run = run(ekb_in(robot.path()).args(["check", "clean.dat"]));
+    assert_eq!(run.code, 0, "{}", run.stdout);
+}
+
+#[test]
+fn config_option_and_environment_variable_are_found_in_that_order() {
+    let robot = robot_folder("knowledgeBase kb.dat\n");
+    let other = robot_folder("knowledgeBase clean.dat\n");
+    fs::write(
+        other.path().join("data/clean.dat"),
+        fs::read(fixtures().join("clean-current.dat")).unwrap(),
+    )
+    .unwrap();
+    let robot_config = robot
+        .path()
+        .join("config/environmentKnowledgeBaseConfiguration.ini");
+    let other_config = other
+        .path()
+        .join("config/environmentKnowledgeBaseConfiguration.ini");
+    let elsewhere = tempfile::tempdir().unwrap();
+
+    // --config: knowledgeBase is resolved in the data/ folder beside the config/ folder.
+    let run_option = run(ekb_in(elsewhere.path())
+        .arg("--config")
+        .arg(&robot_config)
+        .args(["check", "--format", "concise"]));
+    let expected_path = robot.path().join("data/kb.dat");
+    assert_checked_configured_seed(&run_option, &expected_path.display().to_string());
+
+    // EKB_CONFIG when there is no --config.
+    let run_env = run(ekb_in(elsewhere.path())
+        .env("EKB_CONFIG", &other_config)
+        .args(["check"]));
+    assert_eq!(run_env.code, 0, "{}", run_env.stdout);
+
+    // --config before EKB_CONFIG.
+    let run_both = run(ekb_in(elsewhere.path())
+        .env("EKB_CONFIG", &other_config)
+        .arg("--config")
+        .arg(&robot_config)
+        .args(["check"]));
+    assert_eq!(run_both.code, 1);
+
+    // EKB_CONFIG before the default path under the current folder.
+    let run_env_over_default = run(ekb_in(robot.path())
+        .env("EKB_CONFIG", &other_config)
+        .args(["check"]));
+    assert_eq!(run_env_over_default.code, 0);
+}
+
+#[test]
+fn a_missing_knowledge_base_exits_2_with_one_line() {
+    let robot = robot_folder("knowledgeBase missing.dat\n");
+    let run = run(ekb_in(robot.path()).arg("check"));
+    assert_failure(&run, "data/missing.dat");
+}
+
+#[test]
+fn an_unreadable_or_bad_configuration_exits_2_with_one_line() {
+    let fixtures = fixtures();
+    let missing = run(ekb().args(["--config", "no-such.ini", "check", "seed.dat"]));
+    assert_failure(
+        &missing,
+        "cannot read configuration no-such.ini: no such file",
+    );
+    let missing_env = run(ekb()
+        .env("EKB_CONFIG", "no-such.ini")
+        .args(["check", "seed.dat"]));
+    assert_failure(&missing_env, "no-such.ini");
+    let directory = run(ekb()
+        .arg("--config")
+        .arg(&fixtures)
+        .args(["check", "seed.dat"]));
+    assert_failure(&directory, "cannot read configuration");
+    let bad = robot_folder("knowledgeBase kb.dat\nverboseMode perhaps\n");
+    let run_bad = run(ekb_in(bad.path()).arg("check"));
+    assert_failure(&run_bad, "verboseMode must be true or false, not `perhaps`");
+    let bad_dialect = robot_folder("knowledgeBase = kb.dat\ndialect = klingon\n");
+    let run_bad_dialect = run(ekb_in(bad_dialect.path()).arg("check"));
+    assert_failure(&run_bad_dialect, "dialect must be seed, current or auto");
+}
+
+#[test]
+fn no_file_and_no_configuration_exits_2_with_one_line() {
+    let empty = tempfile::tempdir().unwrap();
+    let run = run(ekb_in(empty.path()).arg("check"));
+    assert_failure(&run, "no FILE given and no configuration found");
+}
+
+#[test]
+fn verbose_mode_prints_what_is_read_on_standard_error() {
+    let quiet = robot_folder("knowledgeBase kb.dat\nverboseMode false\n");
+    let verbose = robot_folder("knowledgeBase kb.dat\nverboseMode   true\n");
+    let expected = [
+        "ekb: reading data/kb.dat",
+        "ekb: read robotLocation 1 2.6 8.1 -90",
+        "ekb: read tourSpecification 5 1 4 3 2 5",
+    ];
+    let from_config = run(ekb_in(verbose.path()).args(["check", "--format", "concise"]));
+    let from_option = run(ekb_in(quiet.path()).args(["-v", "check", "--format", "concise"]));
+    for run in [&from_config, &from_option] {
+        assert_eq!(run.code, 1);
+        for line in expected {
+            assert!(run.stderr.lines().any(|l| l == line), "{}", run.stderr);
+        }
+        assert!(run.stdout.contains("error[key-case]"));
+    }
+    let silent = run(ekb_in(quiet.path()).args(["check", "--format", "concise"]));
+    assert_eq!(silent.stderr, "");
+}
+
+#[test]
+fn the_dialect_key_pins_a_dialect() {
+    let pinned = robot_folder("knowledgeBase = kb.dat\ndialect = current\n");
+    let run_pinned = run(ekb_in(pinned.path()).args(["check", "--format", "concise"]));
+    assert_eq!(run_pinned.code, 1);
+    assert_eq!(run_pinned.stdout.matches("error[legacy-key]").count(), 5);
+    assert!(run_pinned.stdout.contains(
+        "data/kb.dat:2:1: error[legacy-key] `robotLocation` belongs to the seed dialect"
+    ));
+    for dialect in ["seed", "auto"] {
+        let robot = robot_folder(&format!("knowledgeBase = kb.dat\ndialect = {dialect}\n"));
+        let run = run(ekb_in(robot.path()).args(["check", "--format", "concise"]));
+        assert!(!run.stdout.contains("legacy-key"), "{dialect}");
+    }
+}
