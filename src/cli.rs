@@ -9,6 +9,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand, ValueEnum};
 
 use crate::commands::{self, Context};
+use crate::render::escape::escape;
 
 /// Author and validate the environment knowledge base of a tour-guide robot.
 #[derive(Debug, Parser)]
@@ -27,7 +28,7 @@ pub struct Cli {
     pub verbose: bool,
 
     /// Print only findings and errors, no summary
-    #[arg(short, long, global = true, conflicts_with = "verbose")]
+    #[arg(short, long, global = true)]
     pub quiet: bool,
 
     #[command(subcommand)]
@@ -93,8 +94,10 @@ pub fn main() -> ExitCode {
     };
     match outcome {
         Ok(exit) => exit.into(),
+        Err(error) if error.is_broken_pipe() => commands::Exit::Clean.into(),
         Err(error) => {
-            eprintln!("ekb: error: {error}");
+            // Errors quote file names and file text: never let them drive the terminal.
+            eprintln!("ekb: error: {}", escape(&error.to_string()));
             commands::Exit::Failure.into()
         }
     }

@@ -23,6 +23,7 @@ use std::process::ExitCode;
 use crate::cli::{Cli, ColorChoice};
 use crate::config::Config;
 use crate::model::build::Options;
+use crate::render::escape::escape;
 use crate::source::SourceFile;
 
 /// The exit codes of SPEC §5.
@@ -52,8 +53,23 @@ impl std::fmt::Display for CommandError {
     }
 }
 
-impl<E: std::error::Error> From<E> for CommandError {
+impl CommandError {
+    /// Whoever read our output went away (`ekb … | head`): not a failure of `ekb`.
+    pub fn broken_pipe() -> CommandError {
+        CommandError(String::new())
+    }
+
+    pub fn is_broken_pipe(&self) -> bool {
+        self.0.is_empty()
+    }
+}
+
+impl<E: std::error::Error + 'static> From<E> for CommandError {
     fn from(error: E) -> CommandError {
+        let io_error = (&error as &dyn std::error::Error).downcast_ref::<std::io::Error>();
+        if io_error.is_some_and(|e| e.kind() == std::io::ErrorKind::BrokenPipe) {
+            return CommandError::broken_pipe();
+        }
         CommandError(error.to_string())
     }
 }
@@ -130,7 +146,7 @@ impl Context {
     /// Reads a knowledge base (`-` is standard input).
     pub fn read(&self, path: &Path) -> Result<SourceFile, CommandError> {
         if self.read_options()?.verbose {
-            eprintln!("ekb: reading {}", path.display());
+            eprintln!("ekb: reading {}", escape(&path.display().to_string()));
         }
         Ok(SourceFile::read(path)?)
     }

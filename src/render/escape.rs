@@ -3,10 +3,18 @@
 
 use std::borrow::Cow;
 
-/// Whether `ch` could change what a terminal shows (controls, bidi overrides and isolates).
+/// Whether `ch` could change what a terminal shows, or hide: controls, bidi overrides and
+/// isolates, and zero-width characters (including the byte-order mark).
 pub fn is_unsafe(ch: char) -> bool {
     (ch.is_control() && ch != '\n')
-        || matches!(ch, '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}' | '\u{200E}' | '\u{200F}' | '\u{061C}')
+        || matches!(
+            ch,
+            '\u{202A}'..='\u{202E}'
+                | '\u{2066}'..='\u{2069}'
+                | '\u{200B}'..='\u{200F}'
+                | '\u{061C}'
+                | '\u{FEFF}'
+        )
 }
 
 /// `text` with every unsafe character written as `\u{…}` (tab as `\t`).
@@ -35,5 +43,6 @@ mod tests {
         assert_eq!(escape("a\x1b[31mb"), "a\\u{001B}[31mb");
         assert_eq!(escape("x\u{202E}y\tz"), "x\\u{202E}y\\tz");
         assert_eq!(escape("a\rb\0"), "a\\u{000D}b\\u{0000}");
+        assert_eq!(escape("\u{FEFF}key"), "\\u{FEFF}key");
     }
 }
