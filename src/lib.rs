@@ -6,18 +6,24 @@
 //! - [`model`]: the typed knowledge base, as the robot's reader would load it;
 //! - [`rules`]: the rule catalogue, one module per rule;
 //! - [`render`]: output formats for findings;
+//! - [`canonical`]: the canonical layout that `fmt` and `import` write; [`fixing`]: `fix`;
+//!   [`rewrite`] and [`write`]: how both show and safely write their result;
 //! - [`cli`]: the `ekb` command line, one module per command under `commands`.
 
+pub mod canonical;
 pub mod check;
 pub mod cli;
 pub mod commands;
 pub mod config;
 pub mod diagnostic;
+pub mod fixing;
 pub mod model;
 pub mod render;
+pub mod rewrite;
 pub mod rules;
 pub mod source;
 pub mod syntax;
+pub mod write;
 
 pub use check::{check, Checked};
 pub use diagnostic::{Diagnostic, Severity};
