@@ -82,6 +82,23 @@ pub fn for_each_file(
     worst
 }
 
+/// How many lines a refusal names before it says "and N more".
+const NAMED_LINES: usize = 5;
+
+/// `line 4 (`gestureArm`), line 11 (`culturalKnowledge`) and 3 more`: the lines a refusal is
+/// about, each with a short description.
+pub fn name_lines(lines: &[(u32, String)]) -> String {
+    let named: Vec<String> = lines
+        .iter()
+        .take(NAMED_LINES)
+        .map(|(number, what)| format!("line {number} (`{what}`)"))
+        .collect();
+    match lines.len().saturating_sub(NAMED_LINES) {
+        0 => named.join(", "),
+        more => format!("{} and {more} more", named.join(", ")),
+    }
+}
+
 /// A unified diff of `old` and `new`, as `patch` reads it.
 pub fn unified_diff(name: &str, old: &str, new: &str) -> String {
     TextDiff::from_lines(old, new)
@@ -118,6 +135,16 @@ fn print_diff(name: &str, old: &str, new: &str, style: DiffStyle) -> io::Result<
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn names_a_few_lines() {
+        let lines: Vec<(u32, String)> = (1..=7).map(|n| (n, format!("k{n}"))).collect();
+        assert_eq!(name_lines(&lines[..1]), "line 1 (`k1`)");
+        assert_eq!(
+            name_lines(&lines),
+            "line 1 (`k1`), line 2 (`k2`), line 3 (`k3`), line 4 (`k4`), line 5 (`k5`) and 2 more"
+        );
+    }
 
     #[test]
     fn diff_has_headers_and_hunks() {

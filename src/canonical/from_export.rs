@@ -114,6 +114,16 @@ fn block<'a>(
             location.cultural_knowledge.join(" ").into(),
         ));
     }
+    if values.is_empty() {
+        return Err(error(
+            path.to_string(),
+            format!(
+                "location {} has no field at all; a file cannot hold an empty location, so give \
+                 it a description or leave it out",
+                location.id
+            ),
+        ));
+    }
     let id: Cow<'a, str> = location.id.to_string().into();
     Ok(Block {
         entries: values

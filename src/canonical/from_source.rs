@@ -13,10 +13,8 @@ use super::{Block, Document, Entry};
 use crate::model::build::{parse_id, tour_items};
 use crate::model::{Key, ValueKind};
 use crate::render::escape::escape;
+use crate::rewrite::name_lines;
 use crate::syntax::{self, Body, Span};
-
-/// How many unplaceable lines an error names before it says "and N more".
-const NAMED_LINES: usize = 5;
 
 /// Entries without a valid id: the file cannot be laid out without guessing.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -27,21 +25,11 @@ pub struct Unplaceable {
 
 impl fmt::Display for Unplaceable {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let named: Vec<String> = self
-            .lines
-            .iter()
-            .take(NAMED_LINES)
-            .map(|(number, text)| format!("line {number} (`{text}`)"))
-            .collect();
-        let more = match self.lines.len().saturating_sub(NAMED_LINES) {
-            0 => String::new(),
-            n => format!(" and {n} more"),
-        };
         write!(
             f,
-            "{}{more} {} no valid location id, so there is no telling which location {} to; \
+            "{} {} no valid location id, so there is no telling which location {} to; \
              correct {} (see `ekb check`) and run again",
-            named.join(", "),
+            name_lines(&self.lines),
             if self.lines.len() == 1 { "has" } else { "have" },
             if self.lines.len() == 1 {
                 "it belongs"

@@ -72,11 +72,11 @@ fn fix_file(
 fn refuse_inexpressible(source: &SourceFile, target: Dialect) -> Result<(), CommandError> {
     let text = source.text();
     let other = target.other();
-    let lines: Vec<String> = syntax::lines(text)
+    let lines: Vec<(u32, String)> = syntax::lines(text)
         .filter_map(|line| match line.body {
             Body::Entry { key, .. } => Key::from_name_ignoring_case(key.text(text))
                 .filter(|key| key.dialect() == Some(other) && *key != other.pose_key())
-                .map(|key| format!("{} (`{}`)", line.number, key.name())),
+                .map(|key| (line.number, key.name().to_string())),
             _ => None,
         })
         .collect();
@@ -84,12 +84,11 @@ fn refuse_inexpressible(source: &SourceFile, target: Dialect) -> Result<(), Comm
         return Ok(());
     }
     Err(CommandError(format!(
-        "cannot migrate {} to the {} dialect: line{} {} {} no equivalent in it; remove {} by hand \
+        "cannot migrate {} to the {} dialect: {} {} no equivalent in it; remove {} by hand \
          first if the robot can do without {}",
         escape(source.name()),
         target.name(),
-        if lines.len() == 1 { "" } else { "s" },
-        lines.join(", "),
+        rewrite::name_lines(&lines),
         if lines.len() == 1 { "has" } else { "have" },
         if lines.len() == 1 { "it" } else { "them" },
         if lines.len() == 1 { "it" } else { "them" },

@@ -41,6 +41,10 @@ pub fn run(args: &Args, _context: &Context) -> CommandResult {
 
 /// Deserializes an export; an error names the JSON path of the bad field.
 pub fn parse(json: &str) -> Result<ExportedKnowledgeBase, String> {
+    // serde would also take an array for the object, and then name puzzling paths.
+    if !json.trim_start().starts_with('{') {
+        return Err("expected a JSON object, as `ekb export` writes".into());
+    }
     let mut deserializer = serde_json::Deserializer::from_str(json);
     let kb = serde_path_to_error::deserialize(&mut deserializer).map_err(|error| {
         let path = error.path().to_string();
@@ -51,7 +55,7 @@ pub fn parse(json: &str) -> Result<ExportedKnowledgeBase, String> {
         let message = message
             .rsplit_once(" at line ")
             .map_or(message.as_str(), |(message, _)| message);
-        if path == "." {
+        if path == "." || path == "?" {
             format!("{position}: {message}")
         } else {
             format!("{path} ({position}): {message}")
