@@ -29,9 +29,12 @@ pub struct Fixed {
 pub fn fix(source: &SourceFile, options: &Options) -> Fixed {
     let mut text = source.text().to_string();
     let mut counts = BTreeMap::new();
+    let mut options = *options;
     for _ in 0..MAX_PASSES {
         let file = SourceFile::from_bytes(source.name(), text.clone().into_bytes());
-        let checked = check(&file, options);
+        let checked = check(&file, &options);
+        // `--verbose` shows the file as read, once; later passes read it again.
+        options.verbose = false;
         let (new, applied) = apply(&text, &checked.diagnostics);
         if applied.is_empty() {
             break;

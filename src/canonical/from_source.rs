@@ -1,9 +1,10 @@
 //! A file's lines as a [`Document`], from the lossless syntax: every line is kept.
 //!
 //! A line is placed by its id, whatever its key: a known key, a key in the wrong case and an
-//! unknown key all go to the block of their id. The only lines that cannot be placed are
-//! entries (other than the tour) without a valid id: formatting such a file would have to
-//! guess which location they belong to, so [`Document::parse`] refuses it instead.
+//! unknown key all go to the block of their id. [`Document::parse`] refuses a file (rather
+//! than guess or lose something) only for entries other than the tour without a valid id
+//! (which location is theirs?) and for a line ending in a stray carriage return (written
+//! before an LF, it would turn into a CRLF line ending and vanish from the value).
 
 use std::borrow::Cow;
 use std::collections::HashMap;
@@ -16,42 +17,73 @@ use crate::render::escape::escape;
 use crate::rewrite::name_lines;
 use crate::syntax::{self, Body, Span};
 
-/// Entries without a valid id: the file cannot be laid out without guessing.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Unplaceable {
-    /// Line number and the line's text (escaped, shortened).
-    pub lines: Vec<(u32, String)>,
+/// Lines the canonical layout cannot hold: formatting would have to guess or lose something.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct Unformattable {
+    /// Entries (other than the tour) without a valid id: which location is theirs?
+    /// Each is the line number and the line's text (escaped, shortened).
+    pub without_id: Vec<(u32, String)>,
+    /// Lines ending in a carriage return that is not part of a CRLF: written before the
+    /// layout's LF, it would become one.
+    pub carriage_return: Vec<(u32, String)>,
 }
 
-impl fmt::Display for Unplaceable {
+impl fmt::Display for Unformattable {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let one = |lines: &[(u32, String)], singular: &'static str, plural: &'static str| {
+            if lines.len() == 1 {
+                singular
+            } else {
+                plural
+            }
+        };
+        let mut sentences = Vec::new();
+        if !self.without_id.is_empty() {
+            let lines = &self.without_id;
+            sentences.push(format!(
+                "{} {} no valid location id, so there is no telling which location {} to",
+                name_lines(lines),
+                one(lines, "has", "have"),
+                one(lines, "it belongs", "they belong"),
+            ));
+        }
+        if !self.carriage_return.is_empty() {
+            let lines = &self.carriage_return;
+            sentences.push(format!(
+                "{} {} in a stray carriage return, which a line ending would swallow",
+                name_lines(lines),
+                one(lines, "ends", "end"),
+            ));
+        }
         write!(
             f,
-            "{} {} no valid location id, so there is no telling which location {} to; \
-             correct {} (see `ekb check`) and run again",
-            name_lines(&self.lines),
-            if self.lines.len() == 1 { "has" } else { "have" },
-            if self.lines.len() == 1 {
-                "it belongs"
-            } else {
-                "they belong"
-            },
-            if self.lines.len() == 1 { "it" } else { "them" },
+            "{}; correct this (see `ekb check`) and run again",
+            sentences.join("; ")
         )
     }
 }
 
-impl std::error::Error for Unplaceable {}
+impl std::error::Error for Unformattable {}
 
 impl<'a> Document<'a> {
     /// Lays out the lines of `text` canonically.
-    pub fn parse(text: &'a str) -> Result<Document<'a>, Unplaceable> {
+    pub fn parse(text: &'a str) -> Result<Document<'a>, Unformattable> {
         let mut document = Document::default();
         let mut blocks: HashMap<u32, usize> = HashMap::new();
         let mut pending: Vec<Cow<'a, str>> = Vec::new();
         let mut seen_entry = false;
-        let mut unplaceable = Vec::new();
+        let mut refused = Unformattable::default();
         for line in syntax::lines(text) {
+            let excerpt = || {
+                let content: String = line.content().text(text).trim().chars().take(40).collect();
+                (line.number, escape(&content).into_owned())
+            };
+            if line.body != Body::Blank
+                && text.as_bytes()[line.trailing.start as usize - 1] == b'\r'
+            {
+                refused.carriage_return.push(excerpt());
+                continue;
+            }
             let (key, args) = match line.body {
                 Body::Blank => {
                     if !seen_entry {
@@ -79,8 +111,7 @@ impl<'a> Document<'a> {
                 continue;
             }
             let Some((id, id_text, value)) = split_id(text, args) else {
-                let excerpt: String = line.content().text(text).trim().chars().take(40).collect();
-                unplaceable.push((line.number, escape(&excerpt).into_owned()));
+                refused.without_id.push(excerpt());
                 continue;
             };
             let value = match known.map(Key::value_kind) {
@@ -100,8 +131,8 @@ impl<'a> Document<'a> {
                 value,
             });
         }
-        if !unplaceable.is_empty() {
-            return Err(Unplaceable { lines: unplaceable });
+        if refused != Unformattable::default() {
+            return Err(refused);
         }
         document.blocks.iter_mut().for_each(Block::sort);
         document.footer = pending;
@@ -194,12 +225,31 @@ mod tests {
         let error =
             Document::parse("gestureTarget 1 0 0 0\nrobotLocation 4a 1 2 3\nhello\n").unwrap_err();
         assert_eq!(
-            error.lines,
+            error.without_id,
             [(2, "robotLocation 4a 1 2 3".into()), (3, "hello".into())]
         );
-        assert!(error
-            .to_string()
-            .starts_with("line 2 (`robotLocation 4a 1 2 3`), line 3"));
+        assert_eq!(
+            error.to_string(),
+            "line 2 (`robotLocation 4a 1 2 3`), line 3 (`hello`) have no valid location id, so \
+             there is no telling which location they belong to; correct this (see `ekb check`) \
+             and run again"
+        );
+    }
+
+    #[test]
+    fn a_stray_carriage_return_at_the_end_of_a_line_is_refused() {
+        for text in [
+            "robotLocationDescription 1 A\r",
+            "# note\r\r\n",
+            "key 1 x\r  \n",
+        ] {
+            let error = Document::parse(text).unwrap_err();
+            assert_eq!(error.carriage_return.len(), 1, "{text:?}");
+            assert!(error
+                .to_string()
+                .contains("ends in a stray carriage return"));
+        }
+        assert!(Document::parse("key 1 a\rb\r\n").is_ok());
     }
 
     #[test]

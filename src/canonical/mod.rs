@@ -25,7 +25,7 @@ mod from_export;
 mod from_source;
 
 pub use from_export::ImportError;
-pub use from_source::Unplaceable;
+pub use from_source::Unformattable;
 
 use std::borrow::Cow;
 
