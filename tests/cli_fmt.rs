@@ -146,8 +146,22 @@ fn fmt_writes_lf_one_final_newline_and_no_bom() {
 }
 
 #[test]
-fn fmt_refuses_lines_it_cannot_place() {
-    let text = "robotLocationDescription 1 A\nrobotLocation 4a 1 2 3\n";
+fn fmt_puts_lines_without_an_id_first_as_written() {
+    let text = "robotLocationDescription 1 A\n# which one?\nrobotLocation 4a 1  2 3\ntourSpecification 1 1\n";
+    assert_eq!(
+        fmt_stdin(text),
+        "# which one?\n\
+         robotLocation 4a 1  2 3\n\
+         \n\
+         robotLocationDescription      1 A\n\
+         \n\
+         tourSpecification 1 1\n"
+    );
+}
+
+#[test]
+fn fmt_refuses_a_stray_carriage_return() {
+    let text = "robotLocationDescription 1 A\r\r\ntourSpecification 1 1\n";
     let (_dir, path) = temp_file("kb.dat", text.as_bytes());
     ekb()
         .arg("fmt")
@@ -156,7 +170,7 @@ fn fmt_refuses_lines_it_cannot_place() {
         .code(2)
         .stderr(predicates::str::contains("cannot format "))
         .stderr(predicates::str::contains(
-            "line 2 (`robotLocation 4a 1 2 3`) has no valid location id",
+            "line 1 (`robotLocationDescription 1 A\\u{000D}`) ends in a stray carriage return",
         ));
     assert_eq!(std::fs::read_to_string(&path).unwrap(), text);
 }
@@ -178,7 +192,7 @@ fn fmt_refuses_invalid_utf8() {
 
 #[test]
 fn fmt_goes_on_after_a_file_it_cannot_format() {
-    let (dir, bad) = temp_file("bad.dat", b"hello\n");
+    let (dir, bad) = temp_file("bad.dat", b"robotLocationDescription 1 Caf\xe9\n");
     let good = dir.path().join("good.dat");
     std::fs::write(&good, seed()).unwrap();
     ekb()
@@ -258,7 +272,7 @@ fn any_line() -> impl Strategy<Value = String> {
         "unknownKey",
     ]);
     let blank = prop::sample::select(vec![" ", "\t", "   ", " \t "]);
-    let id = prop::sample::select(vec!["1", "2", "03", "17"]);
+    let id = prop::sample::select(vec!["1", "2", "03", "17", "4a", "0", ""]);
     let value = "[A-Za-z0-9.,'!?é-]{1,8}( {1,2}[A-Za-z0-9.,'!?é-]{1,8}){0,3}";
     let entry = (
         keys,

@@ -1,10 +1,10 @@
 //! A file's lines as a [`Document`], from the lossless syntax: every line is kept.
 //!
 //! A line is placed by its id, whatever its key: a known key, a key in the wrong case and an
-//! unknown key all go to the block of their id. [`Document::parse`] refuses a file (rather
-//! than guess or lose something) only for entries other than the tour without a valid id
-//! (which location is theirs?) and for a line ending in a stray carriage return (written
-//! before an LF, it would turn into a CRLF line ending and vanish from the value).
+//! unknown key all go to the block of their id. An entry without a valid id (other than the
+//! tour) cannot be placed: it goes, as written, to a section of its own at the top. The one
+//! thing [`Document::parse`] refuses is a line ending in a stray carriage return, which
+//! cannot be written before an LF without turning into a CRLF line ending.
 
 use std::borrow::Cow;
 use std::collections::HashMap;
@@ -17,48 +17,22 @@ use crate::render::escape::escape;
 use crate::rewrite::name_lines;
 use crate::syntax::{self, Body, Span};
 
-/// Lines the canonical layout cannot hold: formatting would have to guess or lose something.
+/// Lines ending in a carriage return that is not part of a CRLF: written before the
+/// layout's LF, it would turn into a line ending and vanish from the value.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct Unformattable {
-    /// Entries (other than the tour) without a valid id: which location is theirs?
-    /// Each is the line number and the line's text (escaped, shortened).
-    pub without_id: Vec<(u32, String)>,
-    /// Lines ending in a carriage return that is not part of a CRLF: written before the
-    /// layout's LF, it would become one.
-    pub carriage_return: Vec<(u32, String)>,
+    /// Each line's number and text (escaped, shortened).
+    pub lines: Vec<(u32, String)>,
 }
 
 impl fmt::Display for Unformattable {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let one = |lines: &[(u32, String)], singular: &'static str, plural: &'static str| {
-            if lines.len() == 1 {
-                singular
-            } else {
-                plural
-            }
-        };
-        let mut sentences = Vec::new();
-        if !self.without_id.is_empty() {
-            let lines = &self.without_id;
-            sentences.push(format!(
-                "{} {} no valid location id, so there is no telling which location {} to",
-                name_lines(lines),
-                one(lines, "has", "have"),
-                one(lines, "it belongs", "they belong"),
-            ));
-        }
-        if !self.carriage_return.is_empty() {
-            let lines = &self.carriage_return;
-            sentences.push(format!(
-                "{} {} in a stray carriage return, which a line ending would swallow",
-                name_lines(lines),
-                one(lines, "ends", "end"),
-            ));
-        }
         write!(
             f,
-            "{}; correct this (see `ekb check`) and run again",
-            sentences.join("; ")
+            "{} {} in a stray carriage return, which the layout's line ending would swallow; \
+             remove it (see `ekb check`) and run again",
+            name_lines(&self.lines),
+            if self.lines.len() == 1 { "ends" } else { "end" },
         )
     }
 }
@@ -72,16 +46,19 @@ impl<'a> Document<'a> {
         let mut blocks: HashMap<u32, usize> = HashMap::new();
         let mut pending: Vec<Cow<'a, str>> = Vec::new();
         let mut seen_entry = false;
-        let mut refused = Unformattable::default();
+        let mut stray_returns = Vec::new();
         for line in syntax::lines(text) {
-            let excerpt = || {
-                let content: String = line.content().text(text).trim().chars().take(40).collect();
-                (line.number, escape(&content).into_owned())
-            };
             if line.body != Body::Blank
                 && text.as_bytes()[line.trailing.start as usize - 1] == b'\r'
             {
-                refused.carriage_return.push(excerpt());
+                let content: String = line
+                    .content()
+                    .text(text)
+                    .trim_matches([' ', '\t'])
+                    .chars()
+                    .take(40)
+                    .collect();
+                stray_returns.push((line.number, escape(&content).into_owned()));
                 continue;
             }
             let (key, args) = match line.body {
@@ -111,7 +88,12 @@ impl<'a> Document<'a> {
                 continue;
             }
             let Some((id, id_text, value)) = split_id(text, args) else {
-                refused.without_id.push(excerpt());
+                document.unplaced.push(Entry {
+                    comments,
+                    key: key.into(),
+                    id: None,
+                    value: args.text(text).into(),
+                });
                 continue;
             };
             let value = match known.map(Key::value_kind) {
@@ -131,8 +113,10 @@ impl<'a> Document<'a> {
                 value,
             });
         }
-        if refused != Unformattable::default() {
-            return Err(refused);
+        if !stray_returns.is_empty() {
+            return Err(Unformattable {
+                lines: stray_returns,
+            });
         }
         document.blocks.iter_mut().for_each(Block::sort);
         document.footer = pending;
@@ -221,18 +205,17 @@ mod tests {
     }
 
     #[test]
-    fn lines_without_an_id_are_refused() {
-        let error =
-            Document::parse("gestureTarget 1 0 0 0\nrobotLocation 4a 1 2 3\nhello\n").unwrap_err();
+    fn lines_without_an_id_go_first_as_written() {
+        let text = "# header\n\ngestureTarget 1 0 0 0\n# typo\nrobotLocation 4a 1  2 3\nhello\n";
         assert_eq!(
-            error.without_id,
-            [(2, "robotLocation 4a 1 2 3".into()), (3, "hello".into())]
-        );
-        assert_eq!(
-            error.to_string(),
-            "line 2 (`robotLocation 4a 1 2 3`), line 3 (`hello`) have no valid location id, so \
-             there is no telling which location they belong to; correct this (see `ekb check`) \
-             and run again"
+            format(text),
+            "# header\n\
+             \n\
+             # typo\n\
+             robotLocation 4a 1  2 3\n\
+             hello\n\
+             \n\
+             gestureTarget                 1 0 0 0\n"
         );
     }
 
@@ -244,7 +227,7 @@ mod tests {
             "key 1 x\r  \n",
         ] {
             let error = Document::parse(text).unwrap_err();
-            assert_eq!(error.carriage_return.len(), 1, "{text:?}");
+            assert_eq!(error.lines.len(), 1, "{text:?}");
             assert!(error
                 .to_string()
                 .contains("ends in a stray carriage return"));

@@ -10,6 +10,7 @@
 //! - each line `key id value`, the key padded with spaces so that the id starts at column 31
 //!   (a key of 29 characters or more gets one space). If the padding alone would make the
 //!   line too long for the robot's 200-byte line buffer, the key gets one space instead;
+//! - an entry without a valid id (which location is it?) first, after the header, as written;
 //! - the `tourSpecification` line(s) last, after a blank line, the tour's items separated by
 //!   single spaces (commas dropped);
 //! - a comment moves with the line it precedes. Comments above the first entry that are
@@ -43,6 +44,9 @@ const UNKNOWN_SLOT: usize = Key::CulturalKnowledge as usize + 1;
 pub struct Document<'a> {
     /// Comments at the top of the file, apart from any entry.
     pub header: Vec<Cow<'a, str>>,
+    /// Entries without a valid id, as written: no block is theirs, so they come first, where
+    /// they are seen.
+    pub unplaced: Vec<Entry<'a>>,
     /// One per location, in order of first appearance.
     pub blocks: Vec<Block<'a>>,
     /// The `tourSpecification` lines, in file order (the last wins on the robot).
@@ -57,7 +61,8 @@ pub struct Block<'a> {
     pub entries: Vec<Entry<'a>>,
 }
 
-/// One `key id value` line (the tour's has no id), with the comments above it.
+/// One `key id value` line, with the comments above it. The tour and unplaced lines have no
+/// id: their key and value are written with one space between.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Entry<'a> {
     pub comments: Vec<Cow<'a, str>>,
@@ -95,6 +100,12 @@ impl Document<'_> {
         if !self.header.is_empty() {
             section(&mut out);
             push_comments(&mut out, &self.header);
+        }
+        if !self.unplaced.is_empty() {
+            section(&mut out);
+            self.unplaced
+                .iter()
+                .for_each(|entry| push_entry(&mut out, entry));
         }
         for block in &self.blocks {
             section(&mut out);
