@@ -105,6 +105,11 @@ fn a_bad_field_is_named_by_its_path() {
         r#"{"dialect": null, "locations": [], "tour": [1, -4]}"#,
         "tour[1]",
     );
+    // Text from the JSON reaches the terminal escaped.
+    refused(
+        r#"{"dialect": "\u001b[31mred", "locations": [], "tour": null}"#,
+        "unknown variant `\\u{001B}[31mred`",
+    );
     refused(
         "[1, 2]",
         "<stdin>: expected a JSON object, as `ekb export` writes",

@@ -28,7 +28,8 @@ pub fn run(args: &Args, _context: &Context) -> CommandResult {
     if !json.invalid_utf8().is_empty() {
         return Err(CommandError(format!("{name} is not valid UTF-8")));
     }
-    let kb = parse(json.text()).map_err(|reason| CommandError(format!("{name}: {reason}")))?;
+    let kb = parse(json.text())
+        .map_err(|reason| CommandError(format!("{name}: {}", escape(&reason))))?;
     let document = Document::from_export(&kb)
         .map_err(|error| CommandError(format!("{name}: {}", escape(&error.to_string()))))?;
     let text = document.render();
