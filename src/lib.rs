@@ -7,7 +7,7 @@
 //! - [`rules`]: the rule catalogue, one module per rule;
 //! - [`render`]: output formats for findings;
 //! - [`canonical`]: the canonical layout that `fmt` and `import` write; [`fixing`]: `fix`;
-//!   [`rewrite`] and [`write`]: how both show and safely write their result;
+//!   [`rewrite`] and [`mod@write`]: how both show and safely write their result;
 //! - [`cli`]: the `ekb` command line, one module per command under `commands`.
 
 pub mod canonical;
