@@ -29,6 +29,20 @@ fn fmt_of_the_seed_is_the_committed_canonical_file() {
     assert_eq!(fmt_stdin(&seed()), read_fixture("seed.fmt.dat"));
 }
 
+/// The robot's own current file (from its repository) is already in the canonical layout,
+/// long lines included.
+#[test]
+fn the_robots_own_file_is_already_canonical() {
+    let text = read_fixture("upstream-2026-03.dat");
+    assert!(text.lines().any(|line| line.len() >= 200));
+    ekb()
+        .args(["fmt", "--check", "-"])
+        .write_stdin(text)
+        .assert()
+        .code(0)
+        .stdout("");
+}
+
 #[test]
 fn fmt_twice_gives_the_same_bytes() {
     for name in ["messy.dat", "current.dat", "seed-small.dat"] {

@@ -8,7 +8,7 @@
 //!   wrong case sorts as the key it means; an unknown key goes after the known ones; two lines
 //!   with the same slot (duplicates) keep their order;
 //! - each line `key id value`, the key padded with spaces so that the id starts at column 31
-//!   (a key of 29 characters or more gets one space). If the padding alone would make the
+//!   (a key of 29 characters or more gets one space). If the padding is what would make the
 //!   line too long for the robot's 200-byte line buffer, the key gets one space instead;
 //! - an entry without a valid id (which location is it?) first, after the header, as written;
 //! - the `tourSpecification` line(s) last, after a blank line, the tour's items separated by
@@ -146,8 +146,10 @@ fn push_entry(out: &mut String, entry: &Entry<'_>) {
         } else {
             1 + entry.value.len()
         };
-        let padded_length = entry.key.len() + padded + id.len() + value + "\n".len();
-        let spaces = if padded_length < LINE_BUFFER {
+        let unpadded_length = entry.key.len() + 1 + id.len() + value + "\n".len();
+        // Pad unless the padding is what would make the robot cut the line.
+        let spaces = if unpadded_length + padded - 1 < LINE_BUFFER || unpadded_length >= LINE_BUFFER
+        {
             padded
         } else {
             1
@@ -205,5 +207,10 @@ mod tests {
         push_entry(&mut out, &entry("gestureTarget", Some("1"), &value));
         assert_eq!(out.len(), LINE_BUFFER - 1);
         assert!(out.starts_with("gestureTarget 1 x"));
+        // A line too long anyway is padded as usual.
+        let value = "x".repeat(190);
+        let mut out = String::new();
+        push_entry(&mut out, &entry("gestureTarget", Some("1"), &value));
+        assert!(out.starts_with("gestureTarget                 1 x"));
     }
 }
