@@ -259,12 +259,16 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__fix)
-            opts="-v -q -h -V --config --color --verbose --quiet --help --version"
+            opts="-v -q -h -V --diff --dialect --config --color --verbose --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
+                --dialect)
+                    COMPREPLY=($(compgen -W "seed current" -- "${cur}"))
+                    return 0
+                    ;;
                 --config)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -281,7 +285,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__fmt)
-            opts="-v -q -h -V --config --color --verbose --quiet --help --version"
+            opts="-v -q -h -V --check --config --color --verbose --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -513,12 +517,20 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__import)
-            opts="-v -q -h -V --config --color --verbose --quiet --help --version"
+            opts="-o -v -q -h -V --output --config --color --verbose --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
+                --output)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --config)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0

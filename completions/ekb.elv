@@ -127,6 +127,8 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand --version 'Print version'
         }
         &'ekb;import'= {
+            cand -o 'Write the knowledge base here (replaced atomically) instead of standard output'
+            cand --output 'Write the knowledge base here (replaced atomically) instead of standard output'
             cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
             cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
             cand -v 'Print what is read, as it is read, on standard error'
@@ -141,6 +143,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
         &'ekb;fmt'= {
             cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
             cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
+            cand --check 'Write nothing; print a diff and exit 1 if a file is not in the canonical layout'
             cand -v 'Print what is read, as it is read, on standard error'
             cand --verbose 'Print what is read, as it is read, on standard error'
             cand -q 'Print only findings and errors, no summary'
@@ -151,14 +154,16 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand --version 'Print version'
         }
         &'ekb;fix'= {
+            cand --dialect 'Migrate to this dialect (`current`: robotLocation becomes robotLocationPose; `seed`: the reverse)'
             cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
             cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
+            cand --diff 'Write nothing; print a diff and exit 1 if anything would change'
             cand -v 'Print what is read, as it is read, on standard error'
             cand --verbose 'Print what is read, as it is read, on standard error'
             cand -q 'Print only findings and errors, no summary'
             cand --quiet 'Print only findings and errors, no summary'
-            cand -h 'Print help'
-            cand --help 'Print help'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
             cand -V 'Print version'
             cand --version 'Print version'
         }

@@ -117,6 +117,7 @@ complete -c ekb -n "__fish_ekb_using_subcommand export" -s v -l verbose -d 'Prin
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand import" -s o -l output -d 'Write the knowledge base here (replaced atomically) instead of standard output' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand import" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand import" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
@@ -129,17 +130,21 @@ complete -c ekb -n "__fish_ekb_using_subcommand fmt" -l config -d 'Configuration
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand fmt" -l check -d 'Write nothing; print a diff and exit 1 if a file is not in the canonical layout'
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s h -l help -d 'Print help'
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -l dialect -d 'Migrate to this dialect (`current`: robotLocation becomes robotLocationPose; `seed`: the reverse)' -r -f -a "seed\t'The document\'s dialect (v1.1): `robotLocation`'
+current\t'The robot\'s current dialect: `robotLocationPose`, `culturalKnowledge`, `gestureArm`'"
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -l diff -d 'Write nothing; print a diff and exit 1 if anything would change'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -s q -l quiet -d 'Print only findings and errors, no summary'
-complete -c ekb -n "__fish_ekb_using_subcommand fix" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''

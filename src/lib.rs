@@ -8,20 +8,26 @@
 //! - [`render`]: output formats for findings;
 //! - [`present`]: how `locations`, `show`, `tour` and `diff` show a knowledge base;
 //! - [`diff`]: the semantic difference of two knowledge bases;
+//! - [`canonical`]: the canonical layout that `fmt` and `import` write; [`fixing`]: `fix`;
+//!   [`rewrite`] and [`mod@write`]: how both show and safely write their result;
 //! - [`cli`]: the `ekb` command line, one module per command under `commands`.
 
+pub mod canonical;
 pub mod check;
 pub mod cli;
 pub mod commands;
 pub mod config;
 pub mod diagnostic;
 pub mod diff;
+pub mod fixing;
 pub mod model;
 pub mod present;
 pub mod render;
+pub mod rewrite;
 pub mod rules;
 pub mod source;
 pub mod syntax;
+pub mod write;
 
 pub use check::{check, Checked};
 pub use diagnostic::{Diagnostic, Severity};

@@ -1,10 +1,161 @@
-//! `ekb fix` (not implemented yet).
+//! `ekb fix [FILE...] [--diff] [--dialect D]`: apply the machine-applicable fixes of the rule
+//! catalogue ([`crate::fixing`]), and migrate a file from one dialect to the other.
 
-use super::{CommandError, CommandResult, Context};
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use super::{CommandError, CommandResult, Context, Exit};
+use crate::check::check;
+use crate::diagnostic::{Severity, Summary};
+use crate::fixing;
+use crate::model::build::Options;
+use crate::model::{Dialect, Key};
+use crate::render::escape::escape;
+use crate::render::{concise, FileReport, RenderOptions};
+use crate::rewrite::{self, DiffStyle, Mode};
+use crate::source::SourceFile;
+use crate::syntax::{self, Body};
 
 #[derive(Debug, clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// Knowledge-base files (`-`: read standard input, write standard output) [default: the configured knowledgeBase]
+    #[arg(value_name = "FILE")]
+    pub files: Vec<PathBuf>,
 
-pub fn run(_args: &Args, _context: &Context) -> CommandResult {
-    Err(CommandError("`ekb fix` is not implemented yet".into()))
+    /// Write nothing; print a diff and exit 1 if anything would change
+    #[arg(long)]
+    pub diff: bool,
+
+    /// Migrate to this dialect (`current`: robotLocation becomes robotLocationPose; `seed`: the reverse)
+    #[arg(long, value_enum, value_name = "DIALECT")]
+    pub dialect: Option<Dialect>,
+}
+
+pub fn run(args: &Args, context: &Context) -> CommandResult {
+    let mut options = context.read_options()?;
+    // Migrating is fixing `legacy-key` as if the configuration pinned the target dialect.
+    options.dialect = args.dialect.or(options.dialect);
+    let paths = context.inputs(&args.files)?;
+    Ok(rewrite::for_each_file(&paths, |path| {
+        fix_file(path, args, context, &options)
+    }))
+}
+
+fn fix_file(
+    path: &Path,
+    args: &Args,
+    context: &Context,
+    options: &Options,
+) -> Result<Exit, CommandError> {
+    let source = context.read(path)?;
+    rewrite::ensure_rewritable(&source)?;
+    if let Some(target) = args.dialect {
+        refuse_inexpressible(&source, target)?;
+    }
+    let fixed = fixing::fix(&source, options);
+    let mode = if args.diff { Mode::Diff } else { Mode::Write };
+    let style = DiffStyle {
+        color: context.color_stdout(),
+    };
+    let changed = rewrite::deliver(path, &source, &fixed.text, mode, style)?;
+    let after = SourceFile::from_bytes(source.name(), fixed.text.into_bytes());
+    let errors_left = report(&after, &fixed.counts, options, context, mode)?;
+    Ok(match mode {
+        Mode::Diff if changed => Exit::Findings,
+        Mode::Write if errors_left => Exit::Findings,
+        _ => Exit::Clean,
+    })
+}
+
+/// Refuses to migrate a file with lines the target dialect has no key for: dropping them
+/// would lose content, keeping them would not be a migration.
+fn refuse_inexpressible(source: &SourceFile, target: Dialect) -> Result<(), CommandError> {
+    let text = source.text();
+    let other = target.other();
+    let lines: Vec<(u32, String)> = syntax::lines(text)
+        .filter_map(|line| match line.body {
+            Body::Entry { key, .. } => Key::from_name_ignoring_case(key.text(text))
+                .filter(|key| key.dialect() == Some(other) && *key != other.pose_key())
+                .map(|key| (line.number, key.name().to_string())),
+            _ => None,
+        })
+        .collect();
+    if lines.is_empty() {
+        return Ok(());
+    }
+    Err(CommandError(format!(
+        "cannot migrate {} to the {} dialect: {} {} no equivalent in it; remove {} by hand \
+         first if the robot can do without {}",
+        escape(source.name()),
+        target.name(),
+        rewrite::name_lines(&lines),
+        if lines.len() == 1 { "has" } else { "have" },
+        if lines.len() == 1 { "it" } else { "them" },
+        if lines.len() == 1 { "it" } else { "them" },
+    )))
+}
+
+/// Tells, on standard error, what was fixed and which errors are left for a person.
+/// Returns whether errors are left.
+fn report(
+    after: &SourceFile,
+    counts: &BTreeMap<&'static str, usize>,
+    options: &Options,
+    context: &Context,
+    mode: Mode,
+) -> Result<bool, CommandError> {
+    let name = escape(after.name());
+    let mut checked = check(
+        after,
+        &Options {
+            verbose: false,
+            ..*options
+        },
+    );
+    let summary = checked.summary();
+    checked
+        .diagnostics
+        .retain(|diagnostic| diagnostic.severity() == Severity::Error);
+    let mut stderr = std::io::stderr().lock();
+    if !context.quiet && !counts.is_empty() {
+        let fixed: Vec<String> = counts
+            .iter()
+            .map(|(rule, count)| format!("{count} {rule}"))
+            .collect();
+        let verb = if mode == Mode::Diff {
+            "would fix"
+        } else {
+            "fixed"
+        };
+        eprintln!("{name}: {verb} {}", fixed.join(", "));
+    }
+    let quiet = RenderOptions {
+        color: false,
+        quiet: true,
+    };
+    concise::render(
+        &[FileReport::new(&checked)],
+        &Summary::default(),
+        &mut stderr,
+        &quiet,
+    )?;
+    if !context.quiet {
+        if summary.errors > 0 {
+            let s = if summary.errors == 1 { "" } else { "s" };
+            eprintln!(
+                "{name}: {} error{s} left to correct by hand",
+                summary.errors
+            );
+        } else if counts.is_empty() {
+            eprintln!("{name}: nothing to fix");
+        }
+        if summary.warnings > 0 {
+            let s = if summary.warnings == 1 { "" } else { "s" };
+            eprintln!(
+                "{name}: {} warning{s} left (`ekb check` lists them)",
+                summary.warnings
+            );
+        }
+    }
+    Ok(summary.errors > 0)
 }

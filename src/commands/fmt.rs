@@ -1,10 +1,80 @@
-//! `ekb fmt` (not implemented yet).
+//! `ekb fmt [FILE...] [--check]`: rewrite files in the canonical layout ([`crate::canonical`]).
 
-use super::{CommandError, CommandResult, Context};
+use std::path::{Path, PathBuf};
+
+use super::{CommandError, CommandResult, Context, Exit};
+use crate::canonical::Document;
+use crate::render::escape::escape;
+use crate::rewrite::{self, DiffStyle, Mode};
 
 #[derive(Debug, clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// Knowledge-base files (`-`: read standard input, write standard output) [default: the configured knowledgeBase]
+    #[arg(value_name = "FILE")]
+    pub files: Vec<PathBuf>,
 
-pub fn run(_args: &Args, _context: &Context) -> CommandResult {
-    Err(CommandError("`ekb fmt` is not implemented yet".into()))
+    /// Write nothing; print a diff and exit 1 if a file is not in the canonical layout
+    #[arg(long)]
+    pub check: bool,
+}
+
+pub fn run(args: &Args, context: &Context) -> CommandResult {
+    let mode = if args.check { Mode::Diff } else { Mode::Write };
+    let style = DiffStyle {
+        color: context.color_stdout(),
+    };
+    let paths = context.inputs(&args.files)?;
+    let (mut changed, mut done) = (0, 0);
+    let worst = rewrite::for_each_file(&paths, |path| {
+        let did_change = format_file(path, context, mode, style)?;
+        let on_disk = path.as_os_str() != "-";
+        changed += usize::from(did_change && on_disk);
+        done += usize::from(on_disk);
+        Ok(if did_change && mode == Mode::Diff {
+            Exit::Findings
+        } else {
+            Exit::Clean
+        })
+    });
+    if !context.quiet && done > 0 {
+        eprintln!("{}", summary(mode, changed, done));
+    }
+    Ok(worst)
+}
+
+/// Formats one file as `mode` says; returns whether it was not in the canonical layout.
+fn format_file(
+    path: &Path,
+    context: &Context,
+    mode: Mode,
+    style: DiffStyle,
+) -> Result<bool, CommandError> {
+    let source = context.read(path)?;
+    rewrite::ensure_rewritable(&source)?;
+    let cannot =
+        |reason: String| CommandError(format!("cannot format {}: {reason}", escape(source.name())));
+    let document = Document::parse(source.text()).map_err(|e| cannot(e.to_string()))?;
+    let formatted = document.render();
+    // The layout keeps every line and value: reading the result must give the same document.
+    if Document::parse(&formatted).as_ref() != Ok(&document) {
+        return Err(cannot(
+            "the canonical layout would change its content (a bug in ekb; please report it)".into(),
+        ));
+    }
+    rewrite::deliver(path, &source, &formatted, mode, style)
+}
+
+/// `1 file reformatted, 2 files left unchanged` (or `would be`, with `--check`).
+fn summary(mode: Mode, changed: usize, total: usize) -> String {
+    let files = |n: usize| if n == 1 { "file" } else { "files" };
+    let (verb, unchanged_verb) = match mode {
+        Mode::Write => ("reformatted", "left unchanged"),
+        Mode::Diff => ("would be reformatted", "already formatted"),
+    };
+    let unchanged = total - changed;
+    match (changed, unchanged) {
+        (0, n) => format!("{n} {} {unchanged_verb}", files(n)),
+        (c, 0) => format!("{c} {} {verb}", files(c)),
+        (c, n) => format!("{c} {} {verb}, {n} {} {unchanged_verb}", files(c), files(n)),
+    }
 }

@@ -1,10 +1,69 @@
-//! `ekb import` (not implemented yet).
+//! `ekb import JSON [-o OUT]`: the JSON of `ekb export` back to a knowledge base, in the
+//! canonical layout of `ekb fmt` (both are written by [`crate::canonical::Document`]).
 
-use super::{CommandError, CommandResult, Context};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use super::{CommandError, CommandResult, Context, Exit};
+use crate::canonical::Document;
+use crate::model::export::ExportedKnowledgeBase;
+use crate::render::escape::escape;
+use crate::source::SourceFile;
+use crate::write::write_atomically;
 
 #[derive(Debug, clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// The JSON of `ekb export` (`-` for standard input)
+    #[arg(value_name = "JSON")]
+    pub input: PathBuf,
 
-pub fn run(_args: &Args, _context: &Context) -> CommandResult {
-    Err(CommandError("`ekb import` is not implemented yet".into()))
+    /// Write the knowledge base here (replaced atomically) instead of standard output
+    #[arg(short, long, value_name = "OUT")]
+    pub output: Option<PathBuf>,
+}
+
+pub fn run(args: &Args, _context: &Context) -> CommandResult {
+    let json = SourceFile::read(&args.input)?;
+    let name = escape(json.name()).into_owned();
+    if !json.invalid_utf8().is_empty() {
+        return Err(CommandError(format!("{name} is not valid UTF-8")));
+    }
+    let kb = parse(json.text())
+        .map_err(|reason| CommandError(format!("{name}: {}", escape(&reason))))?;
+    let document = Document::from_export(&kb)
+        .map_err(|error| CommandError(format!("{name}: {}", escape(&error.to_string()))))?;
+    let text = document.render();
+    match &args.output {
+        Some(out) if out != Path::new("-") => write_atomically(out, text.as_bytes())?,
+        _ => std::io::stdout().lock().write_all(text.as_bytes())?,
+    }
+    Ok(Exit::Clean)
+}
+
+/// Deserializes an export; an error names the JSON path of the bad field.
+pub fn parse(json: &str) -> Result<ExportedKnowledgeBase, String> {
+    // serde would also take an array for the object, and then name puzzling paths.
+    if !json.trim_start().starts_with('{') {
+        return Err("expected a JSON object, as `ekb export` writes".into());
+    }
+    let mut deserializer = serde_json::Deserializer::from_str(json);
+    let kb = serde_path_to_error::deserialize(&mut deserializer).map_err(|error| {
+        let path = error.path().to_string();
+        let inner = error.into_inner();
+        let position = format!("line {}, column {}", inner.line(), inner.column());
+        // serde_json's message ends with its own position; ours comes first.
+        let message = inner.to_string();
+        let message = message
+            .rsplit_once(" at line ")
+            .map_or(message.as_str(), |(message, _)| message);
+        if path == "." || path == "?" {
+            format!("{position}: {message}")
+        } else {
+            format!("{path} ({position}): {message}")
+        }
+    })?;
+    deserializer
+        .end()
+        .map_err(|error| format!("after the JSON value: {error}"))?;
+    Ok(kb)
 }

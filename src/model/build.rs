@@ -314,7 +314,7 @@ fn earlier_span(location: &Location<'_>, key: Key) -> Option<Span> {
 }
 
 /// The tour's items: blank- or comma-separated tokens.
-pub(crate) fn tour_items(text: &str, offset: usize) -> impl Iterator<Item = (Span, &str)> {
+pub fn tour_items(text: &str, offset: usize) -> impl Iterator<Item = (Span, &str)> {
     syntax::tokens(text, offset).flat_map(|(span, token)| {
         let base = span.start as usize;
         token

@@ -1,0 +1,178 @@
+//! Applying the machine-applicable fixes of the diagnostics (`ekb fix`).
+//!
+//! Each pass checks the text, applies every fix that does not touch the bytes of a fix
+//! already taken, and goes again: a fix can make another one possible (a key in the wrong
+//! case becomes a key of the other dialect, which `legacy-key` then renames). Only the bytes
+//! of the edits change. The passes stop when nothing is left to fix, or after
+//! [`MAX_PASSES`] (no rule's fix undoes another's, so this bound is never reached in practice).
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use crate::check::check;
+use crate::diagnostic::{Diagnostic, Edit};
+use crate::model::build::Options;
+use crate::source::SourceFile;
+use crate::syntax::Span;
+
+/// The most passes [`fix`] makes.
+pub const MAX_PASSES: usize = 10;
+
+/// The outcome of [`fix`].
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Fixed {
+    pub text: String,
+    /// How many findings of each rule were fixed, by rule name.
+    pub counts: BTreeMap<&'static str, usize>,
+}
+
+/// Applies every fix the checks of `source` offer, pass after pass.
+pub fn fix(source: &SourceFile, options: &Options) -> Fixed {
+    let mut text = source.text().to_string();
+    let mut counts = BTreeMap::new();
+    let mut options = *options;
+    for _ in 0..MAX_PASSES {
+        let file = SourceFile::from_bytes(source.name(), text.clone().into_bytes());
+        let checked = check(&file, &options);
+        // `--verbose` shows the file as read, once; later passes read it again.
+        options.verbose = false;
+        let (new, applied) = apply(&text, &checked.diagnostics);
+        if applied.is_empty() {
+            break;
+        }
+        for rule in applied {
+            *counts.entry(rule).or_insert(0) += 1;
+        }
+        text = new;
+    }
+    Fixed { text, counts }
+}
+
+/// Applies the fixes of `diagnostics` to `text`, each whole or not at all, skipping a fix
+/// whose edits clash with those of one taken before it. Returns the new text and the rule
+/// of each fix applied.
+pub fn apply(text: &str, diagnostics: &[Diagnostic]) -> (String, Vec<&'static str>) {
+    let mut accepted = Edits::default();
+    let mut applied = Vec::new();
+    for diagnostic in diagnostics {
+        let Some(fix) = &diagnostic.fix else {
+            continue;
+        };
+        let fits =
+            fix.edits.iter().all(|edit| !accepted.clashes(edit.span)) && !clash_among(&fix.edits);
+        if fits {
+            fix.edits.iter().for_each(|edit| accepted.add(edit));
+            applied.push(diagnostic.rule.name);
+        }
+    }
+    (accepted.apply(text), applied)
+}
+
+/// Non-clashing edits, by `(start, end)`. Since none overlap, their ends grow with their
+/// starts, so the one just before a span is the only one that could reach into it.
+#[derive(Debug, Default)]
+struct Edits<'a> {
+    by_span: BTreeMap<(u32, u32), &'a str>,
+}
+
+impl<'a> Edits<'a> {
+    fn clashes(&self, span: Span) -> bool {
+        let before = self.by_span.range(..(span.end, span.end)).next_back();
+        let reaches_in = before.is_some_and(|(&(_, end), _)| end > span.start);
+        // Two insertions at one offset: which goes first is not defined.
+        reaches_in || (span.is_empty() && self.by_span.contains_key(&(span.start, span.end)))
+    }
+
+    fn add(&mut self, edit: &'a Edit) {
+        self.by_span
+            .insert((edit.span.start, edit.span.end), &edit.replacement);
+    }
+
+    fn apply(&self, text: &str) -> String {
+        let mut out = String::with_capacity(text.len());
+        let mut at = 0;
+        for (&(start, end), replacement) in &self.by_span {
+            out.push_str(&text[at..start as usize]);
+            out.push_str(replacement);
+            at = end as usize;
+        }
+        out.push_str(&text[at..]);
+        out
+    }
+}
+
+/// Whether the edits of one fix clash among themselves (a rule's bug; the fix is skipped).
+fn clash_among(edits: &[Edit]) -> bool {
+    let mut seen = Edits::default();
+    let spans: BTreeSet<(u32, u32)> = edits.iter().map(|e| (e.span.start, e.span.end)).collect();
+    spans.len() != edits.len()
+        || edits.iter().any(|edit| {
+            let clash = seen.clashes(edit.span);
+            seen.add(edit);
+            clash
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fixed(text: &str) -> Fixed {
+        fix(
+            &SourceFile::from_bytes("t", text.into()),
+            &Options::default(),
+        )
+    }
+
+    #[test]
+    fn fixes_only_the_broken_bytes() {
+        let text = "postGestureMessageenglish 4 We use it  \r\ntourSpecification 1 4";
+        let result = fixed(text);
+        assert_eq!(
+            result.text,
+            "postGestureMessageEnglish 4 We use it\ntourSpecification 1 4\n"
+        );
+        let counts: Vec<(&str, usize)> = result.counts.into_iter().collect();
+        assert_eq!(
+            counts,
+            [
+                ("compat-crlf", 1),
+                ("compat-no-final-newline", 1),
+                ("key-case", 1),
+                ("trailing-whitespace", 1)
+            ]
+        );
+    }
+
+    #[test]
+    fn a_second_pass_finishes_what_the_first_started() {
+        let options = Options {
+            dialect: Some(crate::model::Dialect::Current),
+            verbose: false,
+        };
+        let source = SourceFile::from_bytes("t", b"RobotLocation 1 1 2 3\n".to_vec());
+        let result = fix(&source, &options);
+        assert_eq!(result.text, "robotLocationPose 1 1 2 3\n");
+        assert_eq!(result.counts.get("key-case"), Some(&1));
+        assert_eq!(result.counts.get("legacy-key"), Some(&1));
+    }
+
+    #[test]
+    fn clashing_edits_wait_for_the_next_pass() {
+        let mut edits = Edits::default();
+        let insert = Edit::insert(3, "x");
+        edits.add(&insert);
+        assert!(edits.clashes(Span::new(3, 3)));
+        assert!(!edits.clashes(Span::new(3, 5)), "delete after an insertion");
+        assert!(
+            !edits.clashes(Span::new(1, 3)),
+            "delete before an insertion"
+        );
+        let delete = Edit::delete(Span::new(5, 9));
+        edits.add(&delete);
+        assert!(edits.clashes(Span::new(8, 10)));
+        assert!(edits.clashes(Span::new(6, 6)));
+        assert!(edits.clashes(Span::new(4, 6)));
+        assert!(!edits.clashes(Span::new(9, 9)));
+        assert_eq!(edits.apply("0123456789"), "012x349");
+    }
+}

@@ -1,0 +1,166 @@
+//! What `ekb fmt` and `ekb fix` share once they know a file's new text: show it as a diff,
+//! write it in place, or send it to standard output; and the refusals that come before.
+
+use std::io::{self, IsTerminal, Write};
+use std::path::Path;
+use std::time::Duration;
+
+use similar::{Algorithm, TextDiff};
+
+use crate::commands::{CommandError, Exit};
+use crate::render::escape::escape;
+use crate::source::{LineIndex, SourceFile};
+use crate::write::write_atomically;
+
+/// What to do with a file's new text.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mode {
+    /// Replace the file (standard input: print the new text).
+    Write,
+    /// Print a unified diff and write nothing.
+    Diff,
+}
+
+/// How a diff is printed.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct DiffStyle {
+    pub color: bool,
+}
+
+/// Refuses a file that was not valid UTF-8: rewriting it would replace the bad bytes.
+pub fn ensure_rewritable(source: &SourceFile) -> Result<(), CommandError> {
+    let Some(first) = source.invalid_utf8().first() else {
+        return Ok(());
+    };
+    let position = LineIndex::new(source.text()).position(source.text(), first.start);
+    Err(CommandError(format!(
+        "{} is not valid UTF-8 (line {}, column {}): ekb does not rewrite it, as that would lose \
+         the bad bytes; save it as UTF-8 and run again",
+        escape(source.name()),
+        position.line,
+        position.column
+    )))
+}
+
+/// Delivers `new`, the new text of `source` read from `path`, as `mode` says. Returns whether
+/// it differs from the old text.
+pub fn deliver(
+    path: &Path,
+    source: &SourceFile,
+    new: &str,
+    mode: Mode,
+    style: DiffStyle,
+) -> Result<bool, CommandError> {
+    let old = source.text();
+    let changed = old != new;
+    let stdin = path == Path::new("-");
+    match mode {
+        Mode::Diff if changed => print_diff(source.name(), old, new, style)?,
+        Mode::Diff => {}
+        Mode::Write if stdin => io::stdout().lock().write_all(new.as_bytes())?,
+        Mode::Write if changed => write_atomically(path, new.as_bytes())?,
+        Mode::Write => {}
+    }
+    Ok(changed)
+}
+
+/// Runs `each` on every path, going on after a failure (reported on standard error), and
+/// returns the worst exit.
+pub fn for_each_file(
+    paths: &[std::path::PathBuf],
+    mut each: impl FnMut(&Path) -> Result<Exit, CommandError>,
+) -> Exit {
+    let mut worst = Exit::Clean;
+    for path in paths {
+        let exit = each(path).unwrap_or_else(|error| {
+            eprintln!("ekb: error: {error}");
+            Exit::Failure
+        });
+        if exit as u8 > worst as u8 {
+            worst = exit;
+        }
+    }
+    worst
+}
+
+/// How long a diff may take to be minimal.
+const DIFF_TIMEOUT: Duration = Duration::from_secs(2);
+
+/// How many lines a refusal names before it says "and N more".
+const NAMED_LINES: usize = 5;
+
+/// `line 4 (`gestureArm`), line 11 (`culturalKnowledge`) and 3 more`: the lines a refusal is
+/// about, each with a short description.
+pub fn name_lines(lines: &[(u32, String)]) -> String {
+    let named: Vec<String> = lines
+        .iter()
+        .take(NAMED_LINES)
+        .map(|(number, what)| format!("line {number} (`{what}`)"))
+        .collect();
+    match lines.len().saturating_sub(NAMED_LINES) {
+        0 => named.join(", "),
+        more => format!("{} and {more} more", named.join(", ")),
+    }
+}
+
+/// A unified diff of `old` and `new`, as `patch` reads it.
+pub fn unified_diff(name: &str, old: &str, new: &str) -> String {
+    // Patience anchors on unique lines, so a formatted file (a blank line between every block)
+    // diffs in about linear time; the deadline bounds the rest, at worst with a coarser diff.
+    TextDiff::configure()
+        .algorithm(Algorithm::Patience)
+        .timeout(DIFF_TIMEOUT)
+        .diff_lines(old, new)
+        .unified_diff()
+        .context_radius(3)
+        .header(name, name)
+        .to_string()
+}
+
+fn print_diff(name: &str, old: &str, new: &str, style: DiffStyle) -> io::Result<()> {
+    let diff = unified_diff(name, old, new);
+    let mut stdout = io::stdout().lock();
+    if !io::stdout().is_terminal() && !style.color {
+        // Raw, so that the diff can be applied with `patch`.
+        return stdout.write_all(diff.as_bytes());
+    }
+    for line in diff.split_inclusive('\n') {
+        let colour = match line.as_bytes().first() {
+            _ if !style.color => None,
+            Some(b'+') => Some("\x1b[32m"),
+            Some(b'-') => Some("\x1b[31m"),
+            Some(b'@') => Some("\x1b[36m"),
+            _ => None,
+        };
+        let text = escape(line.strip_suffix('\n').unwrap_or(line));
+        match colour {
+            Some(colour) => writeln!(stdout, "{colour}{text}\x1b[0m")?,
+            None => writeln!(stdout, "{text}")?,
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_a_few_lines() {
+        let lines: Vec<(u32, String)> = (1..=7).map(|n| (n, format!("k{n}"))).collect();
+        assert_eq!(name_lines(&lines[..1]), "line 1 (`k1`)");
+        assert_eq!(
+            name_lines(&lines),
+            "line 1 (`k1`), line 2 (`k2`), line 3 (`k3`), line 4 (`k4`), line 5 (`k5`) and 2 more"
+        );
+    }
+
+    #[test]
+    fn diff_has_headers_and_hunks() {
+        let diff = unified_diff("kb.dat", "a\nb\n", "a\nc\n");
+        assert_eq!(
+            diff,
+            "--- kb.dat\n+++ kb.dat\n@@ -1,2 +1,2 @@\n a\n-b\n+c\n"
+        );
+    }
+}

@@ -1,0 +1,245 @@
+//! `ekb fix`: the machine-applicable fixes, `--diff`, standard input, dialect migration,
+//! refusals and safe writes.
+
+mod author_support;
+
+use author_support::{ekb, fixture, permissions_are_ignored, read_fixture, seed, temp_file};
+use predicates::str::contains;
+
+const LINE_34_FIXED: &str =
+    "postGestureMessageEnglish     4 We use it for teaching mobile robotics";
+
+#[test]
+fn fix_on_the_seed_changes_line_34_only_and_leaves_no_error() {
+    let (_dir, path) = temp_file("kb.dat", seed().as_bytes());
+    ekb()
+        .arg("fix")
+        .arg(&path)
+        .assert()
+        .code(0)
+        .stderr(contains("kb.dat: fixed 1 key-case\n"))
+        .stderr(contains("kb.dat: 21 warnings left"));
+    let fixed = std::fs::read_to_string(&path).unwrap();
+    let original = seed();
+    assert_eq!(fixed.len(), original.len());
+    let changed: Vec<usize> = original
+        .split_inclusive('\n')
+        .zip(fixed.split_inclusive('\n'))
+        .enumerate()
+        .filter(|(_, (old, new))| old != new)
+        .map(|(index, _)| index + 1)
+        .collect();
+    assert_eq!(changed, [34]);
+    assert_eq!(fixed.lines().nth(33), Some(LINE_34_FIXED));
+
+    let check = ekb().arg("check").arg(&path).assert().code(0);
+    let report = String::from_utf8(check.get_output().stdout.clone()).unwrap();
+    assert!(!report.contains("error["), "{report}");
+    assert!(report.ends_with("Found 21 warnings\n"), "{report}");
+
+    // Idempotent: a second run changes nothing.
+    ekb()
+        .arg("fix")
+        .arg(&path)
+        .assert()
+        .code(0)
+        .stderr(contains("kb.dat: nothing to fix"));
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), fixed);
+}
+
+#[test]
+fn fix_diff_writes_nothing_and_exits_1_when_something_would_change() {
+    let (_dir, path) = temp_file("kb.dat", seed().as_bytes());
+    let name = path.display().to_string();
+    ekb()
+        .args(["fix", "--diff"])
+        .arg(&path)
+        .assert()
+        .code(1)
+        .stdout(format!(
+            "--- {name}\n+++ {name}\n@@ -31,7 +31,7 @@\n \
+             preGestureMessageEnglish      4 This is the Roomba\n \
+             preGestureMessageIsiZulu      4 No message in isiZulu\n \
+             preGestureMessageKinyarwanda  4 No message in Kinyarwanda\n\
+             -postGestureMessageenglish     4 We use it for teaching mobile robotics\n\
+             +{LINE_34_FIXED}\n \
+             postGestureMessageIsiZulu     4 No message in isiZulu\n \
+             postGestureMessageKinyarwanda 4 No message in Kinyarwanda\n \
+             robotLocationDescription      5 Pepper's starting location\n"
+        ))
+        .stderr(contains("would fix 1 key-case"));
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), seed());
+
+    let (_dir, path) = temp_file("kb.dat", read_fixture("seed-small.dat").as_bytes());
+    ekb()
+        .args(["fix", "--diff"])
+        .arg(&path)
+        .assert()
+        .code(0)
+        .stdout("");
+}
+
+#[test]
+fn fix_reads_standard_input_and_writes_standard_output() {
+    let expected = seed().replace(
+        "postGestureMessageenglish    ",
+        "postGestureMessageEnglish    ",
+    );
+    ekb()
+        .args(["fix", "-"])
+        .write_stdin(seed())
+        .assert()
+        .code(0)
+        .stdout(expected.clone())
+        .stderr(contains("<stdin>: fixed 1 key-case"));
+    // Nothing to fix: the text comes back unchanged.
+    ekb()
+        .args(["fix", "-"])
+        .write_stdin(expected.clone())
+        .assert()
+        .code(0)
+        .stdout(expected);
+}
+
+#[test]
+fn fix_changes_only_the_bytes_of_the_fixes() {
+    let text = "\u{FEFF}robotLocationDescription 1 Roomba  \r\n\
+                RobotLocation 1 5.0 3.9 110\r\n\
+                tourSpecification 1 1";
+    ekb()
+        .args(["fix", "-"])
+        .write_stdin(text)
+        .assert()
+        .code(1)
+        .stdout(
+            "robotLocationDescription 1 Roomba\n\
+             robotLocation 1 5.0 3.9 110\n\
+             tourSpecification 1 1\n",
+        )
+        .stderr(contains(
+            "<stdin>: fixed 1 compat-bom, 1 compat-crlf, 1 compat-no-final-newline, 1 key-case, 1 trailing-whitespace",
+        ));
+}
+
+#[test]
+fn fix_lists_the_errors_left_for_a_person() {
+    let text = read_fixture("seed-small.dat")
+        .replace("tourSpecification 2 1 2", "tourSpecification 2 1 9");
+    let text = text.replace(
+        "preGestureMessageEnglish      2",
+        "preGestureMessageenglish      2",
+    );
+    ekb()
+        .args(["fix", "-"])
+        .write_stdin(text)
+        .assert()
+        .code(1)
+        .stderr(contains("<stdin>: fixed 1 key-case\n"))
+        .stderr(contains("<stdin>:21:23: error[tour-unknown-location]"))
+        .stderr(contains("<stdin>: 1 error left to correct by hand\n"));
+}
+
+#[test]
+fn fix_dialect_current_renames_the_pose_key_only() {
+    let (_dir, path) = temp_file("kb.dat", read_fixture("seed-small.dat").as_bytes());
+    ekb()
+        .args(["fix", "--dialect", "current"])
+        .arg(&path)
+        .assert()
+        .code(0)
+        .stderr(contains("fixed 2 legacy-key"));
+    assert_eq!(
+        std::fs::read_to_string(&path).unwrap(),
+        read_fixture("seed-small.current.dat")
+    );
+    // And back.
+    ekb()
+        .args(["fix", "--dialect", "seed"])
+        .arg(&path)
+        .assert()
+        .code(0)
+        .stderr(contains("fixed 2 legacy-key"));
+    assert_eq!(
+        std::fs::read_to_string(&path).unwrap(),
+        read_fixture("seed-small.dat")
+    );
+}
+
+#[test]
+fn fix_dialect_seed_refuses_lines_the_seed_dialect_cannot_hold() {
+    let (_dir, path) = temp_file("kb.dat", read_fixture("current.dat").as_bytes());
+    ekb()
+        .args(["fix", "--dialect", "seed"])
+        .arg(&path)
+        .assert()
+        .code(2)
+        .stderr(contains(
+            "to the seed dialect: line 4 (`gestureArm`), line 11 (`culturalKnowledge`), \
+             line 16 (`gestureArm`), line 23 (`culturalKnowledge`) have no equivalent in it",
+        ));
+    assert_eq!(
+        std::fs::read_to_string(&path).unwrap(),
+        read_fixture("current.dat")
+    );
+}
+
+#[test]
+fn a_pinned_dialect_makes_legacy_keys_fixable() {
+    let (dir, path) = temp_file("kb.dat", read_fixture("seed-small.dat").as_bytes());
+    let config = dir.path().join("ekb.ini");
+    std::fs::write(&config, "dialect = current\n").unwrap();
+    ekb()
+        .arg("--config")
+        .arg(&config)
+        .arg("fix")
+        .arg(&path)
+        .assert()
+        .code(0);
+    assert_eq!(
+        std::fs::read_to_string(&path).unwrap(),
+        read_fixture("seed-small.current.dat")
+    );
+}
+
+#[test]
+fn fix_refuses_invalid_utf8() {
+    let bytes = b"postGestureMessageenglish 1 Caf\xe9\n";
+    let (_dir, path) = temp_file("kb.dat", bytes);
+    ekb()
+        .arg("fix")
+        .arg(&path)
+        .assert()
+        .code(2)
+        .stderr(contains("is not valid UTF-8"));
+    assert_eq!(std::fs::read(&path).unwrap(), bytes);
+}
+
+#[test]
+fn fix_leaves_a_read_only_file_intact() {
+    if permissions_are_ignored() {
+        eprintln!("skipped: this user ignores file permissions (root)");
+        return;
+    }
+    let (_dir, path) = temp_file("kb.dat", seed().as_bytes());
+    let mut permissions = std::fs::metadata(&path).unwrap().permissions();
+    permissions.set_readonly(true);
+    std::fs::set_permissions(&path, permissions).unwrap();
+    ekb()
+        .arg("fix")
+        .arg(&path)
+        .assert()
+        .code(2)
+        .stderr(contains("permission denied"))
+        .stderr(contains("it is left unchanged"));
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), seed());
+}
+
+#[test]
+fn fix_of_a_missing_file_is_exit_2() {
+    ekb()
+        .arg("fix")
+        .arg(fixture("no-such-file.dat"))
+        .assert()
+        .code(2)
+        .stderr(contains("no such file"));
+}
