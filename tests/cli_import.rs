@@ -2,7 +2,7 @@
 
 mod author_support;
 
-use author_support::{ekb, export, export_text, fixture, read_fixture, seed, temp_file};
+use author_support::{ekb, export, fixture, read_fixture, seed, temp_file};
 use ekb::canonical::Document;
 use ekb::model::export::{ExportedKnowledgeBase, ExportedLocation, ExportedMessages};
 use ekb::model::{Arm, Dialect, Point, Pose};
@@ -36,8 +36,7 @@ fn import_reads_standard_input_and_writes_a_file() {
     );
 }
 
-/// `ekb export X | ekb import -` equals `ekb fmt X`. The export here is this test's own
-/// conversion of the model (see `author_support`), until `ekb export` exists.
+/// `ekb export X | ekb import -` equals `ekb fmt X`.
 #[test]
 fn export_then_import_equals_fmt() {
     let fixed = seed().replace("postGestureMessageenglish", "postGestureMessageEnglish");
@@ -46,7 +45,13 @@ fn export_then_import_equals_fmt() {
         read_fixture("current.dat"),
         read_fixture("seed-small.dat"),
     ] {
-        let json = serde_json::to_string_pretty(&export_text(&text)).unwrap();
+        let exported = ekb()
+            .args(["export", "-"])
+            .write_stdin(text.clone())
+            .output()
+            .unwrap();
+        assert_eq!(exported.status.code(), Some(0));
+        let json = exported.stdout;
         let imported = ekb()
             .args(["import", "-"])
             .write_stdin(json)

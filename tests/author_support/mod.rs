@@ -1,16 +1,13 @@
 //! Shared by the `fix`, `fmt` and `import` tests: running `ekb`, temporary copies of
-//! fixtures, and a model → export conversion of their own.
-//!
-//! The conversion stands in for `impl From<&KnowledgeBase> for ExportedKnowledgeBase`
-//! (written on another branch for `ekb export`); once that lands, these tests can use it.
+//! fixtures, and the export of a model.
 
 #![allow(dead_code)] // each test crate uses a part
 
 use std::path::{Path, PathBuf};
 
 use assert_cmd::Command;
-use ekb::model::export::{ExportedKnowledgeBase, ExportedLocation, ExportedMessages};
-use ekb::model::{KnowledgeBase, Language, Location, Phase};
+use ekb::model::export::ExportedKnowledgeBase;
+use ekb::model::KnowledgeBase;
 
 /// `ekb` with no configuration from the environment.
 pub fn ekb() -> Command {
@@ -55,41 +52,9 @@ pub fn permissions_are_ignored() -> bool {
     std::fs::OpenOptions::new().write(true).open(&path).is_ok()
 }
 
-/// The model as export JSON (SPEC §5).
+/// The model as export JSON (SPEC §5), as `ekb export` converts it.
 pub fn export(kb: &KnowledgeBase<'_>) -> ExportedKnowledgeBase {
-    ExportedKnowledgeBase {
-        dialect: kb.dialect,
-        locations: kb.locations().iter().map(location).collect(),
-        tour: kb
-            .tour
-            .as_ref()
-            .map(|tour| tour.stops.iter().map(|stop| stop.value).collect()),
-    }
-}
-
-fn location(location: &Location<'_>) -> ExportedLocation {
-    let messages = |phase| {
-        let text = |language| {
-            location
-                .message(phase, language)
-                .map(|v| v.value.to_string())
-        };
-        ExportedMessages {
-            english: text(Language::English),
-            isi_zulu: text(Language::IsiZulu),
-            kinyarwanda: text(Language::Kinyarwanda),
-        }
-    };
-    ExportedLocation {
-        id: location.id,
-        description: location.description.map(|v| v.value.to_string()),
-        pose: location.pose.map(|v| v.value),
-        gesture_target: location.gesture_target.map(|v| v.value),
-        gesture_arm: location.gesture_arm.map(|v| v.value),
-        pre_gesture_message: messages(Phase::Pre),
-        post_gesture_message: messages(Phase::Post),
-        cultural_knowledge: location.cultural_words().map(String::from).collect(),
-    }
+    ExportedKnowledgeBase::from(kb)
 }
 
 /// The export JSON of a file's text, read as `ekb` reads it.
