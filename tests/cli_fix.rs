@@ -3,7 +3,9 @@
 
 mod author_support;
 
-use author_support::{ekb, fixture, permissions_are_ignored, read_fixture, seed, temp_file};
+use author_support::{
+    assert_read_only_file_left_intact, ekb, fixture, read_fixture, seed, temp_file,
+};
 use predicates::str::contains;
 
 const LINE_34_FIXED: &str =
@@ -216,22 +218,7 @@ fn fix_refuses_invalid_utf8() {
 
 #[test]
 fn fix_leaves_a_read_only_file_intact() {
-    if permissions_are_ignored() {
-        eprintln!("skipped: this user ignores file permissions (root)");
-        return;
-    }
-    let (_dir, path) = temp_file("kb.dat", seed().as_bytes());
-    let mut permissions = std::fs::metadata(&path).unwrap().permissions();
-    permissions.set_readonly(true);
-    std::fs::set_permissions(&path, permissions).unwrap();
-    ekb()
-        .arg("fix")
-        .arg(&path)
-        .assert()
-        .code(2)
-        .stderr(contains("permission denied"))
-        .stderr(contains("it is left unchanged"));
-    assert_eq!(std::fs::read_to_string(&path).unwrap(), seed());
+    assert_read_only_file_left_intact("fix");
 }
 
 #[test]

@@ -2,7 +2,10 @@
 
 mod author_support;
 
-use author_support::{ekb, export_text, permissions_are_ignored, read_fixture, seed, temp_file};
+use author_support::{
+    assert_read_only_file_left_intact, ekb, export_text, permissions_are_ignored, read_fixture,
+    seed, temp_file,
+};
 use ekb::canonical::Document;
 use proptest::prelude::*;
 
@@ -235,22 +238,7 @@ fn fmt_keeps_permissions() {
 
 #[test]
 fn fmt_leaves_a_read_only_file_intact() {
-    if permissions_are_ignored() {
-        eprintln!("skipped: this user ignores file permissions (root)");
-        return;
-    }
-    let (_dir, path) = temp_file("kb.dat", seed().as_bytes());
-    let mut permissions = std::fs::metadata(&path).unwrap().permissions();
-    permissions.set_readonly(true);
-    std::fs::set_permissions(&path, permissions).unwrap();
-    ekb()
-        .arg("fmt")
-        .arg(&path)
-        .assert()
-        .code(2)
-        .stderr(predicates::str::contains("permission denied"))
-        .stderr(predicates::str::contains("it is left unchanged"));
-    assert_eq!(std::fs::read_to_string(&path).unwrap(), seed());
+    assert_read_only_file_left_intact("fmt");
 }
 
 #[cfg(unix)]
