@@ -30,29 +30,43 @@ declare_rule! {
     };
 }
 
+/// One finding per incomplete location, naming every field it lacks.
 pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
     let pose_key = kb.dialect.unwrap_or(Dialect::Seed).pose_key();
     for location in kb.locations() {
-        for key in missing_keys(location, pose_key) {
-            out.push(
-                Diagnostic::new(
-                    &MISSING_FIELD,
-                    location.first_line,
-                    format!(
-                        "location {} has no `{}`: {}",
-                        location.id,
-                        key.name(),
-                        consequence::lost(key, Some(location.id))
-                    ),
-                )
-                .at_location(Some(location.id))
-                .with_help(format!(
-                    "add a line `{} {} …`",
-                    key.name(),
-                    location.id
-                )),
-            );
-        }
+        let missing = missing_keys(location, pose_key);
+        let Some(&first) = missing.first() else {
+            continue;
+        };
+        let id = location.id;
+        let names: Vec<String> = missing
+            .iter()
+            .map(|key| format!("`{}`", key.name()))
+            .collect();
+        let message = match missing.len() {
+            1 => format!(
+                "location {id} has no {}: {}",
+                names[0],
+                consequence::lost(first, Some(id))
+            ),
+            count => format!(
+                "location {id} lacks {count} fields ({}): the robot's reader leaves them empty; for one, {}",
+                names.join(", "),
+                consequence::lost(first, Some(id))
+            ),
+        };
+        let lines: Vec<String> = missing
+            .iter()
+            .map(|key| format!("`{} {id} …`", key.name()))
+            .collect();
+        out.push(
+            Diagnostic::new(&MISSING_FIELD, location.first_line, message)
+                .at_location(Some(id))
+                .with_help(match lines.len() {
+                    1 => format!("add a line {}", lines[0]),
+                    _ => format!("add the lines {}", lines.join(", ")),
+                }),
+        );
     }
 }
 
