@@ -226,25 +226,27 @@ fn field_change(change: &FieldChange<'_>) -> String {
     )
 }
 
-/// `Summary: dialect changed, locations 1 added, 2 changed, tour changed`.
+/// `Summary: dialect changed, 1 location added, 2 changed, tour changed`.
 fn summary(diff: &Diff<'_>) -> String {
     let mut parts = Vec::new();
     if diff.dialect.is_some() {
         parts.push("dialect changed".to_string());
     }
-    let counts: Vec<String> = [
+    let counts = [
         (diff.added.len(), "added"),
         (diff.removed.len(), "removed"),
         (diff.changed.len(), "changed"),
     ]
     .into_iter()
-    .filter(|&(count, _)| count > 0)
-    .map(|(count, word)| format!("{count} {word}"))
-    .collect();
-    if !counts.is_empty() {
-        let total = diff.added.len() + diff.removed.len() + diff.changed.len();
-        let noun = if total == 1 { "location" } else { "locations" };
-        parts.push(format!("{noun} {}", counts.join(", ")));
+    .filter(|&(count, _)| count > 0);
+    for (index, (count, word)) in counts.enumerate() {
+        // The noun goes with the first count only: `2 locations added, 1 changed`.
+        let noun = match (index, count) {
+            (0, 1) => " location",
+            (0, _) => " locations",
+            _ => "",
+        };
+        parts.push(format!("{count}{noun} {word}"));
     }
     if diff.tour.is_some() {
         parts.push("tour changed".to_string());
