@@ -1,18 +1,31 @@
 //! The whole check of one file: the model and every finding, sorted by position.
+//!
+//! A huge or broken file can have a million findings of one rule (a binary file has an
+//! `unknown-key` on nearly every line). [`Checked::diagnostics`] keeps them all, so that
+//! counts and fixes are complete, but what is *shown* ([`Checked::shown`]) is capped at
+//! [`MAX_SHOWN_PER_RULE`] findings of each rule, followed by one note saying how many more
+//! there are. Every output format shows the same capped list, so output stays bounded
+//! whatever the input.
 
 use crate::diagnostic::{Diagnostic, Summary};
 use crate::model::build::{build, Options};
 use crate::model::KnowledgeBase;
-use crate::rules::{self, compat, structure};
+use crate::rules::{self, compat, structure, Rule};
 use crate::source::SourceFile;
+
+/// The most findings of one rule shown for one file; the rest are summed up in a note.
+pub const MAX_SHOWN_PER_RULE: usize = 1000;
 
 /// A checked file: what the robot would load, and what is wrong with it.
 #[derive(Debug)]
 pub struct Checked<'a> {
     pub source: &'a SourceFile,
     pub kb: KnowledgeBase<'a>,
-    /// Sorted by position in the file.
+    /// Every finding, sorted by position in the file.
     pub diagnostics: Vec<Diagnostic>,
+    /// For each rule with more than [`MAX_SHOWN_PER_RULE`] findings, a note
+    /// "… and N more", placed where the first finding not shown is.
+    pub omitted: Vec<Diagnostic>,
 }
 
 impl Checked<'_> {
@@ -30,6 +43,22 @@ impl Checked<'_> {
             .iter()
             .any(|d| d.severity() == crate::Severity::Error)
     }
+
+    /// The findings to show, in order: the first [`MAX_SHOWN_PER_RULE`] of each rule, and
+    /// in place of the others the rule's note from [`Checked::omitted`].
+    pub fn shown(&self) -> impl Iterator<Item = &Diagnostic> {
+        let mut counts = RuleCounts::default();
+        self.diagnostics
+            .iter()
+            .filter_map(move |diagnostic| match counts.bump(diagnostic.rule) {
+                n if n <= MAX_SHOWN_PER_RULE => Some(diagnostic),
+                n if n == MAX_SHOWN_PER_RULE + 1 => self
+                    .omitted
+                    .iter()
+                    .find(|note| std::ptr::eq(note.rule, diagnostic.rule)),
+                _ => None,
+            })
+    }
 }
 
 /// Builds the model of `source` and runs every rule on it.
@@ -39,11 +68,141 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
     compat::compat_bom::check(source.text(), &mut diagnostics);
     let kb = build(source.text(), options, &mut diagnostics);
     rules::check_model(&kb, source.text(), &mut diagnostics);
-    // Byte order is line-then-column order; the sort is stable, so rule order breaks ties.
-    diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
+    sort_by_position(&mut diagnostics);
+    let omitted = omitted_notes(&diagnostics);
     Checked {
         source,
         kb,
         diagnostics,
+        omitted,
+    }
+}
+
+/// Sorts findings by span; byte order is line-then-column order. Ties keep the order the
+/// rules reported them in. Sorts small keys and then moves each finding once, in place,
+/// instead of merge-sorting the findings themselves with a buffer of half of them.
+fn sort_by_position(diagnostics: &mut [Diagnostic]) {
+    if diagnostics.is_sorted_by_key(|d| (d.span.start, d.span.end)) {
+        return;
+    }
+    let mut order: Vec<(u32, u32, u32)> = (0..)
+        .zip(diagnostics.iter())
+        .map(|(i, d)| (d.span.start, d.span.end, i))
+        .collect();
+    order.sort_unstable();
+    // `source[p]` is the index of the finding that belongs at `p`; follow each cycle once.
+    let mut source: Vec<u32> = order.into_iter().map(|(_, _, i)| i).collect();
+    for start in 0..source.len() {
+        let mut at = start;
+        while source[at] as usize != at {
+            let from = source[at] as usize;
+            source[at] = at as u32;
+            if from == start {
+                break;
+            }
+            diagnostics.swap(at, from);
+            at = from;
+        }
+    }
+}
+
+/// The "… and N more" note of each rule that has more findings than are shown.
+fn omitted_notes(diagnostics: &[Diagnostic]) -> Vec<Diagnostic> {
+    let mut counts = RuleCounts::default();
+    let mut first_omitted = Vec::new();
+    for diagnostic in diagnostics {
+        if counts.bump(diagnostic.rule) == MAX_SHOWN_PER_RULE + 1 {
+            first_omitted.push(diagnostic);
+        }
+    }
+    first_omitted
+        .into_iter()
+        .map(|first| {
+            let more = counts.get(first.rule) - MAX_SHOWN_PER_RULE;
+            Diagnostic::new(
+                first.rule,
+                first.span,
+                format!(
+                    "… and {more} more `{}` findings in this file, not shown (ekb shows the first {MAX_SHOWN_PER_RULE} of each rule)",
+                    first.rule.name
+                ),
+            )
+            .with_help("fix the ones shown and run ekb check again; the summary counts them all")
+        })
+        .collect()
+}
+
+/// How many findings of each rule have been seen (a handful of rules: a list is enough).
+#[derive(Default)]
+struct RuleCounts(Vec<(&'static Rule, usize)>);
+
+impl RuleCounts {
+    /// Counts one more finding of `rule` and returns its count so far.
+    fn bump(&mut self, rule: &'static Rule) -> usize {
+        match self.0.iter_mut().find(|(r, _)| std::ptr::eq(*r, rule)) {
+            Some((_, count)) => {
+                *count += 1;
+                *count
+            }
+            None => {
+                self.0.push((rule, 1));
+                1
+            }
+        }
+    }
+
+    fn get(&self, rule: &'static Rule) -> usize {
+        self.0
+            .iter()
+            .find(|(r, _)| std::ptr::eq(*r, rule))
+            .map_or(0, |&(_, count)| count)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sorting_by_position_is_stable() {
+        let rule = rules::ALL[0];
+        let at = |start: usize, message: &str| {
+            Diagnostic::new(rule, crate::syntax::Span::new(start, start + 1), message)
+        };
+        let mut diagnostics = vec![
+            at(5, "a"),
+            at(1, "b"),
+            at(5, "c"),
+            at(0, "d"),
+            at(1, "e"),
+            at(9, "f"),
+            at(2, "g"),
+        ];
+        sort_by_position(&mut diagnostics);
+        let messages: Vec<&str> = diagnostics.iter().map(|d| d.message.as_str()).collect();
+        assert_eq!(messages, ["d", "b", "e", "g", "a", "c", "f"]);
+    }
+
+    #[test]
+    fn findings_beyond_the_cap_are_summed_up_in_one_note_per_rule() {
+        let lines = MAX_SHOWN_PER_RULE + 5;
+        let text = "bogusKey 1 x\n".repeat(lines);
+        let source = SourceFile::from_bytes("t", text.into_bytes());
+        let checked = check(&source, &Options::default());
+        let unknown = |d: &&Diagnostic| d.rule.name == "unknown-key";
+        assert_eq!(checked.diagnostics.iter().filter(unknown).count(), lines);
+        let shown: Vec<&Diagnostic> = checked.shown().filter(unknown).collect();
+        assert_eq!(shown.len(), MAX_SHOWN_PER_RULE + 1);
+        let note = shown.last().unwrap();
+        assert!(
+            note.message
+                .starts_with("… and 5 more `unknown-key` findings"),
+            "{}",
+            note.message
+        );
+        // The note stands where the first finding not shown is: line 1001.
+        assert_eq!(note.span.start as usize, MAX_SHOWN_PER_RULE * 13);
+        // Other rules (tour-missing, one finding) are untouched.
+        assert!(checked.shown().any(|d| d.rule.name == "tour-missing"));
     }
 }

@@ -6,6 +6,7 @@
 //! - [`model`]: the typed knowledge base, as the robot's reader would load it;
 //! - [`rules`]: the rule catalogue, one module per rule;
 //! - [`render`]: output formats for findings;
+//! - [`generate`]: synthetic knowledge bases of any size, for benchmarks and tests;
 //! - [`cli`]: the `ekb` command line, one module per command under `commands`.
 
 pub mod check;
@@ -13,6 +14,7 @@ pub mod cli;
 pub mod commands;
 pub mod config;
 pub mod diagnostic;
+pub mod generate;
 pub mod model;
 pub mod render;
 pub mod rules;

@@ -65,18 +65,29 @@ impl SourceFile {
             reason,
         };
         if path == Path::new("-") {
-            let bytes = read_limited(std::io::stdin().lock()).map_err(fail)?;
+            let bytes = read_limited(std::io::stdin().lock(), 0).map_err(fail)?;
             return Ok(SourceFile::from_bytes("<stdin>", bytes));
         }
         let metadata = std::fs::metadata(path).map_err(|e| fail(describe_io_error(&e)))?;
         if metadata.is_dir() {
             return Err(fail("it is a directory; give a knowledge-base file".into()));
         }
-        if metadata.is_file() && metadata.len() > MAX_FILE_SIZE {
+        // A FIFO would block until a writer comes (possibly never) and a device such as
+        // /dev/zero never ends: read only regular files by name, and streams through `-`.
+        if !metadata.is_file() {
+            return Err(fail(
+                "it is not a regular file (a pipe, socket or device); to check a stream, \
+                 pipe it to `ekb check -`"
+                    .into(),
+            ));
+        }
+        if metadata.len() > MAX_FILE_SIZE {
             return Err(fail(too_large()));
         }
         let file = std::fs::File::open(path).map_err(|e| fail(describe_io_error(&e)))?;
-        let bytes = read_limited(file).map_err(fail)?;
+        // One allocation of the right size: the text is the largest thing ekb holds, so
+        // growing it by doubling would cost up to twice the file in peak memory.
+        let bytes = read_limited(file, metadata.len() as usize).map_err(fail)?;
         Ok(SourceFile::from_bytes(path.display().to_string(), bytes))
     }
 
@@ -101,8 +112,11 @@ fn too_large() -> String {
     )
 }
 
-fn read_limited(reader: impl Read) -> Result<Vec<u8>, String> {
-    let mut bytes = Vec::new();
+/// Reads everything, up to [`MAX_FILE_SIZE`] bytes; `expected` is the size if known (a file
+/// may still grow or shrink while it is read, so it is only a hint).
+fn read_limited(reader: impl Read, expected: usize) -> Result<Vec<u8>, String> {
+    // One byte more than expected, so that reading up to the end needs no reallocation.
+    let mut bytes = Vec::with_capacity(expected + 1);
     reader
         .take(MAX_FILE_SIZE + 1)
         .read_to_end(&mut bytes)
@@ -171,13 +185,35 @@ impl LineIndex {
         let line = self.line_starts.partition_point(|&start| start <= offset) - 1;
         let start = self.line_starts[line] as usize;
         let end = (offset as usize).min(text.len());
-        let column = text.as_bytes()[start..end]
-            .iter()
-            .filter(|&&b| (b & 0xC0) != 0x80)
-            .count();
+        let column = count_chars(&text.as_bytes()[start.min(end)..end]);
         Position {
             line: line as u32 + 1,
             column: column as u32 + 1,
+        }
+    }
+
+    /// The position of `offset`, given the position `from` of an earlier offset
+    /// `from_offset`: on the same line, only the characters in between are counted.
+    pub fn position_from(
+        &self,
+        text: &str,
+        from_offset: u32,
+        from: Position,
+        offset: u32,
+    ) -> Position {
+        let next_line_start = self
+            .line_starts
+            .get(from.line as usize)
+            .copied()
+            .unwrap_or(u32::MAX);
+        if from_offset > offset || offset >= next_line_start {
+            return self.position(text, offset);
+        }
+        let end = (offset as usize).min(text.len());
+        let start = (from_offset as usize).min(end);
+        Position {
+            line: from.line,
+            column: from.column + count_chars(&text.as_bytes()[start..end]) as u32,
         }
     }
 
@@ -185,6 +221,11 @@ impl LineIndex {
     pub fn line_start(&self, line: u32) -> u32 {
         self.line_starts[(line as usize - 1).min(self.line_starts.len() - 1)]
     }
+}
+
+/// The number of characters in valid UTF-8 `bytes` (those that do not continue one).
+fn count_chars(bytes: &[u8]) -> usize {
+    bytes.iter().filter(|&&b| (b & 0xC0) != 0x80).count()
 }
 
 #[cfg(test)]
@@ -206,5 +247,20 @@ mod tests {
         let x = text.find('x').unwrap() as u32;
         assert_eq!(index.position(text, x), Position { line: 2, column: 8 });
         assert_eq!(index.position(text, text.len() as u32).line, 3);
+        let m = text.find('m').unwrap() as u32;
+        let from = index.position(text, m);
+        assert_eq!(
+            index.position_from(text, m, from, x),
+            index.position(text, x)
+        );
+        assert_eq!(
+            index.position_from(text, x, index.position(text, x), 1),
+            index.position(text, 1)
+        );
+        let end = text.len() as u32;
+        assert_eq!(
+            index.position_from(text, m, from, end),
+            index.position(text, end)
+        );
     }
 }

@@ -4,6 +4,7 @@
 //! line (its key, id, numbers, arity, text) report from here, through their own modules.
 
 use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
 
 use crate::diagnostic::Diagnostic;
 use crate::model::{
@@ -27,7 +28,8 @@ pub fn build<'a>(text: &'a str, options: &Options, out: &mut Vec<Diagnostic>) ->
         text,
         options: *options,
         locations: Vec::new(),
-        index: HashMap::new(),
+        ascending: 0,
+        index: HashMap::default(),
         last: None,
         tour: None,
         first_pose_key: [None, None],
@@ -49,7 +51,11 @@ struct Builder<'a> {
     text: &'a str,
     options: Options,
     locations: Vec<Location<'a>>,
-    index: HashMap<u32, usize>,
+    /// How many of the first `locations` are in ascending id order. Files are usually
+    /// written so; those locations are found by binary search, with no map at all.
+    ascending: usize,
+    /// Where each location after the ascending ones is in `locations`.
+    index: HashMap<u32, u32, BuildHasherDefault<IdHasher>>,
     /// The location of the previous line: most lines follow one of the same id.
     last: Option<(u32, usize)>,
     tour: Option<Tour>,
@@ -178,11 +184,7 @@ impl<'a> Builder<'a> {
         let index = match self.last {
             Some((last_id, index)) if last_id == id => index,
             _ => {
-                let next = self.locations.len();
-                let index = *self.index.entry(id).or_insert(next);
-                if index == next {
-                    self.locations.push(Location::new(id, line_span));
-                }
+                let index = self.find_or_add(id, line_span);
                 self.last = Some((id, index));
                 index
             }
@@ -192,6 +194,25 @@ impl<'a> Builder<'a> {
         location.given |= 1 << key.order();
         let earlier = repeated.then(|| earlier_span(location, key).unwrap_or(location.first_line));
         (index, earlier)
+    }
+
+    fn find_or_add(&mut self, id: u32, line_span: Span) -> usize {
+        let ascending = &self.locations[..self.ascending];
+        if let Ok(index) = ascending.binary_search_by_key(&id, |location| location.id) {
+            return index;
+        }
+        if let Some(&index) = self.index.get(&id) {
+            return index as usize;
+        }
+        let index = self.locations.len();
+        let extends_run = self.ascending == index && ascending.last().is_none_or(|l| l.id < id);
+        if extends_run {
+            self.ascending += 1;
+        } else {
+            self.index.insert(id, index as u32);
+        }
+        self.locations.push(Location::new(id, line_span));
+        index
     }
 
     fn note_pose_key(&mut self, key: Key, line_span: Span) {
@@ -265,6 +286,32 @@ impl<'a> Builder<'a> {
     }
 }
 
+/// A hasher for location ids: one multiplication, instead of SipHash (made to resist
+/// flooding by network peers, which a local file does not need). The high half is folded
+/// in so that ids that are multiples of a power of two still spread over the table.
+#[derive(Default)]
+struct IdHasher(u64);
+
+impl Hasher for IdHasher {
+    fn write(&mut self, bytes: &[u8]) {
+        for &byte in bytes {
+            self.write_u64(u64::from(byte) ^ self.0.rotate_left(8));
+        }
+    }
+
+    fn write_u32(&mut self, n: u32) {
+        self.write_u64(u64::from(n));
+    }
+
+    fn write_u64(&mut self, n: u64) {
+        self.0 = n.wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    }
+
+    fn finish(&self) -> u64 {
+        self.0 ^ (self.0 >> 32)
+    }
+}
+
 /// The span of the value `key` holds in `location`, if it holds one.
 fn earlier_span(location: &Location<'_>, key: Key) -> Option<Span> {
     match key.value_kind() {
@@ -305,17 +352,17 @@ fn looks_numeric(token: &str) -> bool {
 
 /// A location id: a decimal integer in 1..=2147483647.
 pub fn parse_id(token: &str) -> Option<u32> {
-    if token.is_empty() || !token.bytes().all(|b| b.is_ascii_digit()) {
-        return None;
+    let mut id: u64 = 0;
+    for byte in token.bytes() {
+        if !byte.is_ascii_digit() {
+            return None;
+        }
+        id = id * 10 + u64::from(byte - b'0');
+        if id > i32::MAX as u64 {
+            return None;
+        }
     }
-    let digits = token.trim_start_matches('0');
-    if digits.is_empty() || digits.len() > 10 {
-        return None;
-    }
-    digits
-        .parse::<u32>()
-        .ok()
-        .filter(|&id| id <= i32::MAX as u32)
+    (id >= 1).then_some(id as u32)
 }
 
 /// A finite decimal number (`nan`, `inf` and digits out of range are not).
@@ -383,6 +430,29 @@ mod tests {
             assert_eq!(parse_id(bad), None, "{bad}");
         }
         assert_eq!(parse_id(&"1".repeat(40)), None);
+    }
+
+    #[test]
+    fn locations_are_found_in_any_order() {
+        let text = "robotLocationDescription 3 a\nrobotLocationDescription 5 b\n\
+                    robotLocationDescription 4 c\nrobotLocationDescription 1 d\n\
+                    robotLocationDescription 5 e\nrobotLocationDescription 4 f\n\
+                    robotLocationDescription 3 g\nrobotLocationDescription 65536 h\n\
+                    robotLocationDescription 131072 i\nrobotLocationDescription 65536 j\n";
+        let mut out = Vec::new();
+        let kb = build(text, &Options::default(), &mut out);
+        let ids: Vec<u32> = kb.locations().iter().map(|l| l.id).collect();
+        assert_eq!(ids, [1, 3, 4, 5, 65536, 131072]);
+        let description = |id| kb.location(id).unwrap().description.unwrap().value;
+        assert_eq!(
+            [3, 5, 4, 1, 65536].map(description),
+            ["g", "e", "f", "d", "j"]
+        );
+        let duplicates = out
+            .iter()
+            .filter(|d| d.rule.name == "duplicate-key")
+            .count();
+        assert_eq!(duplicates, 4);
     }
 
     #[test]

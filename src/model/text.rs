@@ -7,13 +7,16 @@ pub fn words(text: &str) -> impl Iterator<Item = &str> {
 
 /// Whether a message is a placeholder such as `No message in isiZulu` rather than a message.
 pub fn is_placeholder(text: &str) -> bool {
-    let lower = text.trim().to_ascii_lowercase();
-    lower.starts_with("no message")
-        || lower.starts_with("no translation")
-        || matches!(
-            lower.as_str(),
-            "todo" | "tbd" | "-" | "n/a" | "none" | "..."
-        )
+    // Run on every message: compare in place rather than lowercase a copy.
+    let text = text.trim().as_bytes();
+    let starts_with = |prefix: &str| {
+        text.len() >= prefix.len() && text[..prefix.len()].eq_ignore_ascii_case(prefix.as_bytes())
+    };
+    starts_with("no message")
+        || starts_with("no translation")
+        || ["todo", "tbd", "-", "n/a", "none", "..."]
+            .iter()
+            .any(|word| text.eq_ignore_ascii_case(word.as_bytes()))
 }
 
 #[cfg(test)]

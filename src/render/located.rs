@@ -1,5 +1,7 @@
 //! Diagnostics with byte spans turned into 1-based lines and columns (end exclusive).
 
+use std::cell::Cell;
+
 use serde::Serialize;
 
 use crate::check::Checked;
@@ -55,15 +57,17 @@ pub struct FileReport<'a> {
 }
 
 impl<'a> FileReport<'a> {
+    /// Locates the findings [`Checked::shown`] lists (at most
+    /// [`MAX_SHOWN_PER_RULE`](crate::check::MAX_SHOWN_PER_RULE) of each rule).
     pub fn new(checked: &'a Checked<'a>) -> FileReport<'a> {
         let text = checked.source.text();
         let locator = Locator {
             text,
             index: (!checked.diagnostics.is_empty()).then(|| LineIndex::new(text)),
+            cursor: Cell::new(None),
         };
         let diagnostics = checked
-            .diagnostics
-            .iter()
+            .shown()
             .map(|diagnostic| LocatedDiagnostic {
                 file: checked.source.name(),
                 rule: diagnostic.rule.name,
@@ -93,24 +97,39 @@ impl<'a> FileReport<'a> {
     }
 }
 
+/// Converts spans to regions. Findings come sorted by position, so it remembers the last
+/// position it found and counts columns on from there: locating many findings on one huge
+/// line (a million-stop tour) costs the line's length once, not once per finding.
 struct Locator<'a> {
     text: &'a str,
     index: Option<LineIndex>,
+    cursor: Cell<Option<(u32, Position)>>,
 }
 
 impl Locator<'_> {
     fn region(&self, span: Span) -> Region {
+        let start = self.position(span.start, self.cursor.get());
+        self.cursor.set(Some((span.start, start)));
+        let end = self.position(span.end, Some((span.start, start)));
+        Region {
+            line: start.line,
+            column: start.column,
+            end_line: end.line,
+            end_column: end.column,
+        }
+    }
+
+    /// The position of `offset`, counted on from `from` when that is earlier on the same line.
+    fn position(&self, offset: u32, from: Option<(u32, Position)>) -> Position {
         let index = self
             .index
             .as_ref()
             .expect("built when there are diagnostics");
-        let Position { line, column } = index.position(self.text, span.start);
-        let end = index.position(self.text, span.end);
-        Region {
-            line,
-            column,
-            end_line: end.line,
-            end_column: end.column,
+        match from {
+            Some((from_offset, from)) if from_offset <= offset => {
+                index.position_from(self.text, from_offset, from, offset)
+            }
+            _ => index.position(self.text, offset),
         }
     }
 }
