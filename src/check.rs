@@ -1,14 +1,16 @@
 //! The whole check of one file: the model and every finding, sorted by position.
 //!
-//! A huge or broken file can have a million findings of one rule (a binary file has an
-//! `unknown-key` on nearly every line). [`Checked::diagnostics`] keeps them all, so that
-//! counts and fixes are complete, but what is *shown* ([`Checked::shown`]) is capped at
-//! [`MAX_SHOWN_PER_RULE`] findings of each rule, followed by one note saying how many more
-//! there are. Every output format shows the same capped list, so output stays bounded
-//! whatever the input.
+//! A huge or broken file can have millions of findings of one rule (a binary file has an
+//! `unknown-key` on nearly every line, each finding a few hundred bytes). So that memory
+//! stays bounded, at most [`MAX_KEPT_PER_RULE`] findings of each rule are kept in
+//! [`Checked::diagnostics`] (the first ones, in the order the rules find them; `ekb fix`
+//! therefore applies at most that many fixes of one rule per run). What is *shown*
+//! ([`Checked::shown`]) is capped lower, at [`MAX_SHOWN_PER_RULE`] of each rule, followed by
+//! one note saying how many more there are. Every output format shows the same capped list,
+//! so output stays bounded whatever the input.
 
 use crate::diagnostic::{Diagnostic, Summary};
-use crate::model::build::{build, Options};
+use crate::model::build::{build_tallied, Options};
 use crate::model::KnowledgeBase;
 use crate::rules::{self, compat, structure, Rule};
 use crate::source::SourceFile;
@@ -16,25 +18,38 @@ use crate::source::SourceFile;
 /// The most findings of one rule shown for one file; the rest are summed up in a note.
 pub const MAX_SHOWN_PER_RULE: usize = 1000;
 
+/// The most findings of one rule kept in memory for one file; the rest are only counted.
+pub const MAX_KEPT_PER_RULE: usize = 10_000;
+
 /// A checked file: what the robot would load, and what is wrong with it.
 #[derive(Debug)]
 pub struct Checked<'a> {
     pub source: &'a SourceFile,
     pub kb: KnowledgeBase<'a>,
-    /// Every finding, sorted by position in the file.
+    /// The findings (at most [`MAX_KEPT_PER_RULE`] of each rule), sorted by position.
     pub diagnostics: Vec<Diagnostic>,
     /// For each rule with more than [`MAX_SHOWN_PER_RULE`] findings, a note
     /// "… and N more", placed where the first finding not shown is.
     pub omitted: Vec<Diagnostic>,
+    tally: Tally,
 }
 
 impl Checked<'_> {
+    /// The counts of findings, including those not kept.
     pub fn summary(&self) -> Summary {
         let mut summary = Summary {
             files: 1,
             ..Summary::default()
         };
         self.diagnostics.iter().for_each(|d| summary.add(d));
+        for (rule, count) in &self.tally.0 .0 {
+            let dropped = count.saturating_sub(MAX_KEPT_PER_RULE);
+            match rule.severity {
+                crate::Severity::Error => summary.errors += dropped,
+                crate::Severity::Warning => summary.warnings += dropped,
+                crate::Severity::Info => summary.infos += dropped,
+            }
+        }
         summary
     }
 
@@ -64,17 +79,53 @@ impl Checked<'_> {
 /// Builds the model of `source` and runs every rule on it.
 pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
     let mut diagnostics = Vec::new();
+    let mut tally = Tally::default();
     structure::invalid_utf8::check(source, &mut diagnostics);
     compat::compat_bom::check(source.text(), &mut diagnostics);
-    let kb = build(source.text(), options, &mut diagnostics);
+    tally.admit(&mut diagnostics, 0);
+    let kb = build_tallied(source.text(), options, &mut diagnostics, &mut tally);
+    let model_findings = diagnostics.len();
     rules::check_model(&kb, source.text(), &mut diagnostics);
+    tally.admit(&mut diagnostics, model_findings);
     sort_by_position(&mut diagnostics);
-    let omitted = omitted_notes(&diagnostics);
+    let omitted = omitted_notes(&diagnostics, &tally);
     Checked {
         source,
         kb,
         diagnostics,
         omitted,
+        tally,
+    }
+}
+
+/// Counts findings by rule as they are made, and drops those beyond
+/// [`MAX_KEPT_PER_RULE`], so that memory stays bounded on any input.
+#[derive(Debug, Default)]
+pub struct Tally(RuleCounts);
+
+impl Tally {
+    /// Counts the findings `out[from..]` and drops those of a rule that has already had
+    /// [`MAX_KEPT_PER_RULE`].
+    pub fn admit(&mut self, out: &mut Vec<Diagnostic>, from: usize) {
+        let mut kept = from;
+        for at in from..out.len() {
+            if self.0.bump(out[at].rule) <= MAX_KEPT_PER_RULE {
+                out.swap(kept, at);
+                kept += 1;
+            }
+        }
+        out.truncate(kept);
+    }
+
+    /// Whether `rule` has had all the findings that are kept: a caller may then just
+    /// [`Tally::count`] a further one instead of making it.
+    pub fn is_full(&self, rule: &'static Rule) -> bool {
+        self.0.get(rule) >= MAX_KEPT_PER_RULE
+    }
+
+    /// Counts a finding of `rule` that is not kept.
+    pub fn count(&mut self, rule: &'static Rule) {
+        self.0.bump(rule);
     }
 }
 
@@ -107,7 +158,7 @@ fn sort_by_position(diagnostics: &mut [Diagnostic]) {
 }
 
 /// The "… and N more" note of each rule that has more findings than are shown.
-fn omitted_notes(diagnostics: &[Diagnostic]) -> Vec<Diagnostic> {
+fn omitted_notes(diagnostics: &[Diagnostic], tally: &Tally) -> Vec<Diagnostic> {
     let mut counts = RuleCounts::default();
     let mut first_omitted = Vec::new();
     for diagnostic in diagnostics {
@@ -118,7 +169,7 @@ fn omitted_notes(diagnostics: &[Diagnostic]) -> Vec<Diagnostic> {
     first_omitted
         .into_iter()
         .map(|first| {
-            let more = counts.get(first.rule) - MAX_SHOWN_PER_RULE;
+            let more = tally.0.get(first.rule) - MAX_SHOWN_PER_RULE;
             Diagnostic::new(
                 first.rule,
                 first.span,
@@ -133,7 +184,7 @@ fn omitted_notes(diagnostics: &[Diagnostic]) -> Vec<Diagnostic> {
 }
 
 /// How many findings of each rule have been seen (a handful of rules: a list is enough).
-#[derive(Default)]
+#[derive(Debug, Default)]
 struct RuleCounts(Vec<(&'static Rule, usize)>);
 
 impl RuleCounts {
@@ -162,6 +213,27 @@ impl RuleCounts {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn findings_beyond_what_is_kept_are_only_counted() {
+        let lines = MAX_KEPT_PER_RULE + 7;
+        let text = "x\n".repeat(lines);
+        let source = SourceFile::from_bytes("t", text.into_bytes());
+        let checked = check(&source, &Options::default());
+        let unknown = checked
+            .diagnostics
+            .iter()
+            .filter(|d| d.rule.name == "unknown-key");
+        assert_eq!(unknown.count(), MAX_KEPT_PER_RULE);
+        assert_eq!(
+            checked.summary().errors,
+            lines + 1,
+            "unknown keys and tour-missing"
+        );
+        let note = &checked.omitted[0];
+        let more = lines - MAX_SHOWN_PER_RULE;
+        assert!(note.message.starts_with(&format!("… and {more} more")));
+    }
 
     #[test]
     fn sorting_by_position_is_stable() {
@@ -202,6 +274,7 @@ mod tests {
         );
         // The note stands where the first finding not shown is: line 1001.
         assert_eq!(note.span.start as usize, MAX_SHOWN_PER_RULE * 13);
+        assert_eq!(checked.summary().errors, lines + 1);
         // Other rules (tour-missing, one finding) are untouched.
         assert!(checked.shown().any(|d| d.rule.name == "tour-missing"));
     }

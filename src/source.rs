@@ -99,7 +99,8 @@ impl SourceFile {
         &self.text
     }
 
-    /// Byte ranges of the original file that were not valid UTF-8 (replaced by `?` in `text`).
+    /// Byte ranges of the original file that were not valid UTF-8 (replaced by `?` in `text`):
+    /// the first of each line (a binary file has millions; one per line is what is reported).
     pub fn invalid_utf8(&self) -> &[Span] {
         &self.invalid_utf8
     }
@@ -138,9 +139,10 @@ fn describe_io_error(err: &std::io::Error) -> String {
     }
 }
 
-/// Replaces every byte of every invalid UTF-8 sequence by `?`, keeping offsets intact.
+/// Replaces every byte of every invalid UTF-8 sequence by `?`, keeping offsets intact, and
+/// returns the first invalid range of each line.
 fn sanitize(mut bytes: Vec<u8>) -> (String, Vec<Span>) {
-    let mut invalid = Vec::new();
+    let mut invalid: Vec<Span> = Vec::new();
     let mut offset = 0;
     loop {
         match std::str::from_utf8(&bytes[offset..]) {
@@ -151,7 +153,12 @@ fn sanitize(mut bytes: Vec<u8>) -> (String, Vec<Span>) {
                 for byte in &mut bytes[start..start + len] {
                     *byte = b'?';
                 }
-                invalid.push(Span::new(start, start + len));
+                let same_line = invalid.last().is_some_and(|previous| {
+                    memchr::memchr(b'\n', &bytes[previous.end as usize..start]).is_none()
+                });
+                if !same_line {
+                    invalid.push(Span::new(start, start + len));
+                }
                 offset = start + len;
             }
         }
@@ -234,9 +241,9 @@ mod tests {
 
     #[test]
     fn invalid_bytes_become_question_marks_in_place() {
-        let file = SourceFile::from_bytes("t", b"ab\xffc\xe2\x82".to_vec());
-        assert_eq!(file.text(), "ab?c??");
-        assert_eq!(file.invalid_utf8(), &[Span::new(2, 3), Span::new(4, 6)]);
+        let file = SourceFile::from_bytes("t", b"ab\xffc\xe2\x82\n\xff\xfe".to_vec());
+        assert_eq!(file.text(), "ab?c??\n??");
+        assert_eq!(file.invalid_utf8(), &[Span::new(2, 3), Span::new(7, 8)]);
     }
 
     #[test]

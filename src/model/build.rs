@@ -6,6 +6,7 @@
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
 
+use crate::check::Tally;
 use crate::diagnostic::Diagnostic;
 use crate::model::{
     words, Arm, Dialect, Key, KnowledgeBase, Location, Point, Pose, Tour, Value, ValueKind,
@@ -24,6 +25,18 @@ pub struct Options {
 
 /// Builds the model of `text`, appending the findings of the line rules to `out`.
 pub fn build<'a>(text: &'a str, options: &Options, out: &mut Vec<Diagnostic>) -> KnowledgeBase<'a> {
+    build_tallied(text, options, out, &mut Tally::default())
+}
+
+/// [`build`], keeping at most [`MAX_KEPT_PER_RULE`](crate::check::MAX_KEPT_PER_RULE)
+/// findings of each rule as it goes (a file of a million bad lines would otherwise hold a
+/// million findings in memory).
+pub fn build_tallied<'a>(
+    text: &'a str,
+    options: &Options,
+    out: &mut Vec<Diagnostic>,
+    tally: &mut Tally,
+) -> KnowledgeBase<'a> {
     let mut builder = Builder {
         text,
         options: *options,
@@ -37,14 +50,21 @@ pub fn build<'a>(text: &'a str, options: &Options, out: &mut Vec<Diagnostic>) ->
     };
     let mut last_line = None;
     for line in syntax::lines(text) {
-        builder.line(&line, out);
+        let before = out.len();
+        builder.line(&line, out, tally);
+        if out.len() > before {
+            tally.admit(out, before);
+        }
         last_line = Some(line);
     }
+    let before = out.len();
     if let Some(line) = last_line {
         compat::compat_no_final_newline::check(&line, text, out);
     }
     compat::compat_crlf::check(&builder.crlf_endings, out);
-    builder.finish(out)
+    let kb = builder.finish(out);
+    tally.admit(out, before);
+    kb
 }
 
 struct Builder<'a> {
@@ -65,7 +85,7 @@ struct Builder<'a> {
 }
 
 impl<'a> Builder<'a> {
-    fn line(&mut self, line: &Line, out: &mut Vec<Diagnostic>) {
+    fn line(&mut self, line: &Line, out: &mut Vec<Diagnostic>, tally: &mut Tally) {
         compat::compat_line_too_long::check(line, self.text, out);
         content::trailing_whitespace::check(line, self.text, out);
         if line.ending == syntax::LineEnding::CrLf {
@@ -76,16 +96,21 @@ impl<'a> Builder<'a> {
         }
         if let Body::Entry { key, args } = line.body {
             structure::control_character::check(args, self.text, out);
-            self.entry(key, args, out);
+            self.entry(key, args, out, tally);
         }
     }
 
-    fn entry(&mut self, key_span: Span, args: Span, out: &mut Vec<Diagnostic>) {
+    fn entry(&mut self, key_span: Span, args: Span, out: &mut Vec<Diagnostic>, tally: &mut Tally) {
         let key_text = key_span.text(self.text);
         let Some(key) = Key::from_name(key_text) else {
             let id = leading_id(args.text(self.text));
             match Key::from_name_ignoring_case(key_text) {
                 Some(key) => out.push(structure::key_case::diagnostic(key_span, key_text, key, id)),
+                // Suggesting the nearest key is slow (an edit distance to every key), and a
+                // binary file has millions of unknown keys: past the cap, only count them.
+                None if tally.is_full(&structure::unknown_key::UNKNOWN_KEY) => {
+                    tally.count(&structure::unknown_key::UNKNOWN_KEY)
+                }
                 None => out.push(structure::unknown_key::diagnostic(key_span, key_text, id)),
             }
             return;
