@@ -199,39 +199,14 @@ impl LineIndex {
         }
     }
 
-    /// The position of `offset`, given the position `from` of an earlier offset
-    /// `from_offset`: on the same line, only the characters in between are counted.
-    pub fn position_from(
-        &self,
-        text: &str,
-        from_offset: u32,
-        from: Position,
-        offset: u32,
-    ) -> Position {
-        let next_line_start = self
-            .line_starts
-            .get(from.line as usize)
-            .copied()
-            .unwrap_or(u32::MAX);
-        if from_offset > offset || offset >= next_line_start {
-            return self.position(text, offset);
-        }
-        let end = (offset as usize).min(text.len());
-        let start = (from_offset as usize).min(end);
-        Position {
-            line: from.line,
-            column: from.column + count_chars(&text.as_bytes()[start..end]) as u32,
-        }
-    }
-
     /// The byte offset where a 1-based line starts.
     pub fn line_start(&self, line: u32) -> u32 {
         self.line_starts[(line as usize - 1).min(self.line_starts.len() - 1)]
     }
 }
 
-/// The number of characters in valid UTF-8 `bytes` (those that do not continue one).
-fn count_chars(bytes: &[u8]) -> usize {
+/// The number of characters in valid UTF-8 `bytes` (the bytes that do not continue one).
+pub fn count_chars(bytes: &[u8]) -> usize {
     bytes.iter().filter(|&&b| (b & 0xC0) != 0x80).count()
 }
 
@@ -254,20 +229,5 @@ mod tests {
         let x = text.find('x').unwrap() as u32;
         assert_eq!(index.position(text, x), Position { line: 2, column: 8 });
         assert_eq!(index.position(text, text.len() as u32).line, 3);
-        let m = text.find('m').unwrap() as u32;
-        let from = index.position(text, m);
-        assert_eq!(
-            index.position_from(text, m, from, x),
-            index.position(text, x)
-        );
-        assert_eq!(
-            index.position_from(text, x, index.position(text, x), 1),
-            index.position(text, 1)
-        );
-        let end = text.len() as u32;
-        assert_eq!(
-            index.position_from(text, m, from, end),
-            index.position(text, end)
-        );
     }
 }

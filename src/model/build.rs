@@ -223,14 +223,19 @@ impl<'a> Builder<'a> {
 
     fn find_or_add(&mut self, id: u32, line_span: Span) -> usize {
         let ascending = &self.locations[..self.ascending];
-        if let Ok(index) = ascending.binary_search_by_key(&id, |location| location.id) {
-            return index;
+        // A new id beyond every one so far is the common case: no search at all (a binary
+        // search costs a cache miss per step on a large file).
+        let beyond = ascending.last().is_none_or(|last| last.id < id);
+        if !beyond {
+            if let Ok(index) = ascending.binary_search_by_key(&id, |location| location.id) {
+                return index;
+            }
         }
         if let Some(&index) = self.index.get(&id) {
             return index as usize;
         }
         let index = self.locations.len();
-        let extends_run = self.ascending == index && ascending.last().is_none_or(|l| l.id < id);
+        let extends_run = self.ascending == index && beyond;
         if extends_run {
             self.ascending += 1;
         } else {
