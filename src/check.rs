@@ -83,6 +83,9 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
     structure::invalid_utf8::check(source, &mut diagnostics);
     compat::compat_bom::check(source.text(), &mut diagnostics);
     tally.admit(&mut diagnostics, 0);
+    // The source keeps the first invalid range of a bounded number of lines only.
+    let unrecorded = source.invalid_utf8_lines() - source.invalid_utf8().len();
+    tally.count_many(&structure::invalid_utf8::INVALID_UTF8, unrecorded);
     let kb = build_tallied(source.text(), options, &mut diagnostics, &mut tally);
     let model_findings = diagnostics.len();
     rules::check_model(&kb, source.text(), &mut diagnostics);
@@ -125,7 +128,14 @@ impl Tally {
 
     /// Counts a finding of `rule` that is not kept.
     pub fn count(&mut self, rule: &'static Rule) {
-        self.0.bump(rule);
+        self.count_many(rule, 1);
+    }
+
+    /// Counts `n` findings of `rule` that are not kept.
+    pub fn count_many(&mut self, rule: &'static Rule, n: usize) {
+        if n > 0 {
+            self.0.add(rule, n);
+        }
     }
 }
 
@@ -190,14 +200,19 @@ struct RuleCounts(Vec<(&'static Rule, usize)>);
 impl RuleCounts {
     /// Counts one more finding of `rule` and returns its count so far.
     fn bump(&mut self, rule: &'static Rule) -> usize {
+        self.add(rule, 1)
+    }
+
+    /// Counts `n` more findings of `rule` and returns its count so far.
+    fn add(&mut self, rule: &'static Rule, n: usize) -> usize {
         match self.0.iter_mut().find(|(r, _)| std::ptr::eq(*r, rule)) {
             Some((_, count)) => {
-                *count += 1;
+                *count += n;
                 *count
             }
             None => {
-                self.0.push((rule, 1));
-                1
+                self.0.push((rule, n));
+                n
             }
         }
     }

@@ -8,6 +8,7 @@ use std::fmt;
 use std::io::Read;
 use std::path::{Path, PathBuf};
 
+use crate::check::MAX_KEPT_PER_RULE;
 use crate::syntax::Span;
 
 /// The largest file `ekb` reads. Larger inputs (or endless ones such as `/dev/zero`) are
@@ -20,6 +21,8 @@ pub struct SourceFile {
     name: String,
     text: String,
     invalid_utf8: Vec<Span>,
+    /// How many lines have invalid UTF-8 (`invalid_utf8` holds the first of them only).
+    invalid_utf8_lines: usize,
 }
 
 /// Why a file could not be read at all (exit code 2).
@@ -46,13 +49,15 @@ impl SourceFile {
                 name,
                 text,
                 invalid_utf8: Vec::new(),
+                invalid_utf8_lines: 0,
             },
             Err(err) => {
-                let (text, invalid_utf8) = sanitize(err.into_bytes());
+                let (text, invalid_utf8, invalid_utf8_lines) = sanitize(err.into_bytes());
                 SourceFile {
                     name,
                     text,
                     invalid_utf8,
+                    invalid_utf8_lines,
                 }
             }
         }
@@ -100,9 +105,15 @@ impl SourceFile {
     }
 
     /// Byte ranges of the original file that were not valid UTF-8 (replaced by `?` in `text`):
-    /// the first of each line (a binary file has millions; one per line is what is reported).
+    /// the first of each line (one per line is what is reported), on the first
+    /// [`MAX_KEPT_PER_RULE`] such lines (a binary file has millions).
     pub fn invalid_utf8(&self) -> &[Span] {
         &self.invalid_utf8
+    }
+
+    /// How many lines have invalid UTF-8, including those past [`SourceFile::invalid_utf8`].
+    pub fn invalid_utf8_lines(&self) -> usize {
+        self.invalid_utf8_lines
     }
 }
 
@@ -140,9 +151,12 @@ fn describe_io_error(err: &std::io::Error) -> String {
 }
 
 /// Replaces every byte of every invalid UTF-8 sequence by `?`, keeping offsets intact, and
-/// returns the first invalid range of each line.
-fn sanitize(mut bytes: Vec<u8>) -> (String, Vec<Span>) {
+/// returns the first invalid range of each line (of the first [`MAX_KEPT_PER_RULE`] lines)
+/// and how many lines have one.
+fn sanitize(mut bytes: Vec<u8>) -> (String, Vec<Span>, usize) {
     let mut invalid: Vec<Span> = Vec::new();
+    let mut lines = 0;
+    let mut last_end = None;
     let mut offset = 0;
     loop {
         match std::str::from_utf8(&bytes[offset..]) {
@@ -153,18 +167,21 @@ fn sanitize(mut bytes: Vec<u8>) -> (String, Vec<Span>) {
                 for byte in &mut bytes[start..start + len] {
                     *byte = b'?';
                 }
-                let same_line = invalid.last().is_some_and(|previous| {
-                    memchr::memchr(b'\n', &bytes[previous.end as usize..start]).is_none()
-                });
+                let same_line =
+                    last_end.is_some_and(|end| memchr::memchr(b'\n', &bytes[end..start]).is_none());
                 if !same_line {
-                    invalid.push(Span::new(start, start + len));
+                    lines += 1;
+                    if invalid.len() < MAX_KEPT_PER_RULE {
+                        invalid.push(Span::new(start, start + len));
+                    }
                 }
+                last_end = Some(start + len);
                 offset = start + len;
             }
         }
     }
     let text = String::from_utf8(bytes).expect("every invalid sequence was replaced");
-    (text, invalid)
+    (text, invalid, lines)
 }
 
 /// Converts byte offsets to 1-based lines and columns (columns count Unicode scalar values).
@@ -219,6 +236,7 @@ mod tests {
         let file = SourceFile::from_bytes("t", b"ab\xffc\xe2\x82\n\xff\xfe".to_vec());
         assert_eq!(file.text(), "ab?c??\n??");
         assert_eq!(file.invalid_utf8(), &[Span::new(2, 3), Span::new(7, 8)]);
+        assert_eq!(file.invalid_utf8_lines(), 2);
     }
 
     #[test]

@@ -97,6 +97,21 @@ fn fifty_megabytes_without_a_newline() {
 }
 
 #[test]
+fn a_line_of_one_word_repeated_keeps_a_bounded_number_of_findings() {
+    // A finding every five bytes: 200,000 of them in one megabyte.
+    let mut text = b"robotLocationDescription 1 ".to_vec();
+    text.extend(std::iter::repeat_n(b"word ".as_slice(), 200_000).flatten());
+    text.push(b'\n');
+    checked(text, |checked| {
+        let repeated = rules(checked)
+            .iter()
+            .filter(|&&rule| rule == "repeated-word")
+            .count();
+        assert_eq!(repeated, ekb::check::MAX_KEPT_PER_RULE);
+    });
+}
+
+#[test]
 fn a_nul_byte_is_a_control_character_and_is_escaped() {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("nul.dat");
