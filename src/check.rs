@@ -1,27 +1,55 @@
 //! The whole check of one file: the model and every finding, sorted by position.
+//!
+//! A huge or broken file can have millions of findings of one rule (a binary file has an
+//! `unknown-key` on nearly every line, each finding a few hundred bytes). So that memory
+//! stays bounded, at most [`MAX_KEPT_PER_RULE`] findings of each rule are kept in
+//! [`Checked::diagnostics`] (the first ones, in the order the rules find them; `ekb fix`
+//! therefore applies at most that many fixes of one rule per run). What is *shown*
+//! ([`Checked::shown`]) is capped lower, at [`MAX_SHOWN_PER_RULE`] of each rule, followed by
+//! one note saying how many more there are. Every output format shows the same capped list,
+//! so output stays bounded whatever the input.
 
 use crate::diagnostic::{Diagnostic, Summary};
-use crate::model::build::{build, Options};
+use crate::model::build::{build_tallied, Options};
 use crate::model::KnowledgeBase;
-use crate::rules::{self, compat, structure};
+use crate::rules::{self, compat, structure, Rule};
 use crate::source::SourceFile;
+
+/// The most findings of one rule shown for one file; the rest are summed up in a note.
+pub const MAX_SHOWN_PER_RULE: usize = 1000;
+
+/// The most findings of one rule kept in memory for one file; the rest are only counted.
+pub const MAX_KEPT_PER_RULE: usize = 10_000;
 
 /// A checked file: what the robot would load, and what is wrong with it.
 #[derive(Debug)]
 pub struct Checked<'a> {
     pub source: &'a SourceFile,
     pub kb: KnowledgeBase<'a>,
-    /// Sorted by position in the file.
+    /// The findings (at most [`MAX_KEPT_PER_RULE`] of each rule), sorted by position.
     pub diagnostics: Vec<Diagnostic>,
+    /// For each rule with more than [`MAX_SHOWN_PER_RULE`] findings, a note
+    /// "… and N more", placed where the first finding not shown is.
+    pub omitted: Vec<Diagnostic>,
+    tally: Tally,
 }
 
 impl Checked<'_> {
+    /// The counts of findings, including those not kept.
     pub fn summary(&self) -> Summary {
         let mut summary = Summary {
             files: 1,
             ..Summary::default()
         };
         self.diagnostics.iter().for_each(|d| summary.add(d));
+        for (rule, count) in &self.tally.0 .0 {
+            let dropped = count.saturating_sub(MAX_KEPT_PER_RULE);
+            match rule.severity {
+                crate::Severity::Error => summary.errors += dropped,
+                crate::Severity::Warning => summary.warnings += dropped,
+                crate::Severity::Info => summary.infos += dropped,
+            }
+        }
         summary
     }
 
@@ -30,20 +58,248 @@ impl Checked<'_> {
             .iter()
             .any(|d| d.severity() == crate::Severity::Error)
     }
+
+    /// The same file with only its errors (for commands that stop on errors and would bury
+    /// them under the warnings).
+    pub fn errors_only(mut self) -> Self {
+        let is_error = |d: &Diagnostic| d.severity() == crate::Severity::Error;
+        self.diagnostics.retain(is_error);
+        self.omitted.retain(is_error);
+        self
+    }
+
+    /// The findings to show, in order: the first [`MAX_SHOWN_PER_RULE`] of each rule, and
+    /// in place of the others the rule's note from [`Checked::omitted`].
+    pub fn shown(&self) -> impl Iterator<Item = &Diagnostic> {
+        let mut counts = RuleCounts::default();
+        self.diagnostics
+            .iter()
+            .filter_map(move |diagnostic| match counts.bump(diagnostic.rule) {
+                n if n <= MAX_SHOWN_PER_RULE => Some(diagnostic),
+                n if n == MAX_SHOWN_PER_RULE + 1 => self
+                    .omitted
+                    .iter()
+                    .find(|note| std::ptr::eq(note.rule, diagnostic.rule)),
+                _ => None,
+            })
+    }
 }
 
 /// Builds the model of `source` and runs every rule on it.
 pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
     let mut diagnostics = Vec::new();
+    let mut tally = Tally::default();
     structure::invalid_utf8::check(source, &mut diagnostics);
     compat::compat_bom::check(source.text(), &mut diagnostics);
-    let kb = build(source.text(), options, &mut diagnostics);
+    tally.admit(&mut diagnostics, 0);
+    // The source keeps the first invalid range of a bounded number of lines only.
+    let unrecorded = source.invalid_utf8_lines() - source.invalid_utf8().len();
+    tally.count_many(&structure::invalid_utf8::INVALID_UTF8, unrecorded);
+    let kb = build_tallied(source.text(), options, &mut diagnostics, &mut tally);
+    let model_findings = diagnostics.len();
     rules::check_model(&kb, source.text(), &mut diagnostics);
-    // Byte order is line-then-column order; the sort is stable, so rule order breaks ties.
-    diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
+    tally.admit(&mut diagnostics, model_findings);
+    sort_by_position(&mut diagnostics);
+    let omitted = omitted_notes(&diagnostics, &tally);
     Checked {
         source,
         kb,
         diagnostics,
+        omitted,
+        tally,
+    }
+}
+
+/// Counts findings by rule as they are made, and drops those beyond
+/// [`MAX_KEPT_PER_RULE`], so that memory stays bounded on any input.
+#[derive(Debug, Default)]
+pub struct Tally(RuleCounts);
+
+impl Tally {
+    /// Counts the findings `out[from..]` and drops those of a rule that has already had
+    /// [`MAX_KEPT_PER_RULE`].
+    pub fn admit(&mut self, out: &mut Vec<Diagnostic>, from: usize) {
+        let mut kept = from;
+        for at in from..out.len() {
+            if self.0.bump(out[at].rule) <= MAX_KEPT_PER_RULE {
+                out.swap(kept, at);
+                kept += 1;
+            }
+        }
+        out.truncate(kept);
+    }
+
+    /// Whether `rule` has had all the findings that are kept: a caller may then just
+    /// [`Tally::count`] a further one instead of making it.
+    pub fn is_full(&self, rule: &'static Rule) -> bool {
+        self.0.get(rule) >= MAX_KEPT_PER_RULE
+    }
+
+    /// Counts a finding of `rule` that is not kept.
+    pub fn count(&mut self, rule: &'static Rule) {
+        self.count_many(rule, 1);
+    }
+
+    /// Counts `n` findings of `rule` that are not kept.
+    pub fn count_many(&mut self, rule: &'static Rule, n: usize) {
+        if n > 0 {
+            self.0.add(rule, n);
+        }
+    }
+}
+
+/// Sorts findings by span; byte order is line-then-column order. Ties keep the order the
+/// rules reported them in. Sorts small keys and then moves each finding once, in place,
+/// instead of merge-sorting the findings themselves with a buffer of half of them.
+fn sort_by_position(diagnostics: &mut [Diagnostic]) {
+    if diagnostics.is_sorted_by_key(|d| (d.span.start, d.span.end)) {
+        return;
+    }
+    let mut order: Vec<(u32, u32, u32)> = (0..)
+        .zip(diagnostics.iter())
+        .map(|(i, d)| (d.span.start, d.span.end, i))
+        .collect();
+    order.sort_unstable();
+    // `source[p]` is the index of the finding that belongs at `p`; follow each cycle once.
+    let mut source: Vec<u32> = order.into_iter().map(|(_, _, i)| i).collect();
+    for start in 0..source.len() {
+        let mut at = start;
+        while source[at] as usize != at {
+            let from = source[at] as usize;
+            source[at] = at as u32;
+            if from == start {
+                break;
+            }
+            diagnostics.swap(at, from);
+            at = from;
+        }
+    }
+}
+
+/// The "… and N more" note of each rule that has more findings than are shown.
+fn omitted_notes(diagnostics: &[Diagnostic], tally: &Tally) -> Vec<Diagnostic> {
+    let mut counts = RuleCounts::default();
+    let mut first_omitted = Vec::new();
+    for diagnostic in diagnostics {
+        if counts.bump(diagnostic.rule) == MAX_SHOWN_PER_RULE + 1 {
+            first_omitted.push(diagnostic);
+        }
+    }
+    first_omitted
+        .into_iter()
+        .map(|first| {
+            let more = tally.0.get(first.rule) - MAX_SHOWN_PER_RULE;
+            Diagnostic::new(
+                first.rule,
+                first.span,
+                format!(
+                    "… and {more} more `{}` findings in this file, not shown (ekb shows the first {MAX_SHOWN_PER_RULE} of each rule)",
+                    first.rule.name
+                ),
+            )
+            .with_help("fix the ones shown and run ekb check again; the summary counts them all")
+        })
+        .collect()
+}
+
+/// How many findings of each rule have been seen (a handful of rules: a list is enough).
+#[derive(Debug, Default)]
+struct RuleCounts(Vec<(&'static Rule, usize)>);
+
+impl RuleCounts {
+    /// Counts one more finding of `rule` and returns its count so far.
+    fn bump(&mut self, rule: &'static Rule) -> usize {
+        self.add(rule, 1)
+    }
+
+    /// Counts `n` more findings of `rule` and returns its count so far.
+    fn add(&mut self, rule: &'static Rule, n: usize) -> usize {
+        match self.0.iter_mut().find(|(r, _)| std::ptr::eq(*r, rule)) {
+            Some((_, count)) => {
+                *count += n;
+                *count
+            }
+            None => {
+                self.0.push((rule, n));
+                n
+            }
+        }
+    }
+
+    fn get(&self, rule: &'static Rule) -> usize {
+        self.0
+            .iter()
+            .find(|(r, _)| std::ptr::eq(*r, rule))
+            .map_or(0, |&(_, count)| count)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn findings_beyond_what_is_kept_are_only_counted() {
+        let lines = MAX_KEPT_PER_RULE + 7;
+        let text = "x\n".repeat(lines);
+        let source = SourceFile::from_bytes("t", text.into_bytes());
+        let checked = check(&source, &Options::default());
+        let unknown = checked
+            .diagnostics
+            .iter()
+            .filter(|d| d.rule.name == "unknown-key");
+        assert_eq!(unknown.count(), MAX_KEPT_PER_RULE);
+        assert_eq!(
+            checked.summary().errors,
+            lines + 1,
+            "unknown keys and tour-missing"
+        );
+        let note = &checked.omitted[0];
+        let more = lines - MAX_SHOWN_PER_RULE;
+        assert!(note.message.starts_with(&format!("… and {more} more")));
+    }
+
+    #[test]
+    fn sorting_by_position_is_stable() {
+        let rule = rules::ALL[0];
+        let at = |start: usize, message: &str| {
+            Diagnostic::new(rule, crate::syntax::Span::new(start, start + 1), message)
+        };
+        let mut diagnostics = vec![
+            at(5, "a"),
+            at(1, "b"),
+            at(5, "c"),
+            at(0, "d"),
+            at(1, "e"),
+            at(9, "f"),
+            at(2, "g"),
+        ];
+        sort_by_position(&mut diagnostics);
+        let messages: Vec<&str> = diagnostics.iter().map(|d| d.message.as_str()).collect();
+        assert_eq!(messages, ["d", "b", "e", "g", "a", "c", "f"]);
+    }
+
+    #[test]
+    fn findings_beyond_the_cap_are_summed_up_in_one_note_per_rule() {
+        let lines = MAX_SHOWN_PER_RULE + 5;
+        let text = "bogusKey 1 x\n".repeat(lines);
+        let source = SourceFile::from_bytes("t", text.into_bytes());
+        let checked = check(&source, &Options::default());
+        let unknown = |d: &&Diagnostic| d.rule.name == "unknown-key";
+        assert_eq!(checked.diagnostics.iter().filter(unknown).count(), lines);
+        let shown: Vec<&Diagnostic> = checked.shown().filter(unknown).collect();
+        assert_eq!(shown.len(), MAX_SHOWN_PER_RULE + 1);
+        let note = shown.last().unwrap();
+        assert!(
+            note.message
+                .starts_with("… and 5 more `unknown-key` findings"),
+            "{}",
+            note.message
+        );
+        // The note stands where the first finding not shown is: line 1001.
+        assert_eq!(note.span.start as usize, MAX_SHOWN_PER_RULE * 13);
+        assert_eq!(checked.summary().errors, lines + 1);
+        // Other rules (tour-missing, one finding) are untouched.
+        assert!(checked.shown().any(|d| d.rule.name == "tour-missing"));
     }
 }

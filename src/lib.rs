@@ -10,6 +10,7 @@
 //! - [`diff`]: the semantic difference of two knowledge bases;
 //! - [`canonical`]: the canonical layout that `fmt` and `import` write; [`fixing`]: `fix`;
 //!   [`rewrite`] and [`mod@write`]: how both show and safely write their result;
+//! - [`generate`]: synthetic knowledge bases of any size, for benchmarks and tests;
 //! - [`cli`]: the `ekb` command line, one module per command under `commands`.
 
 pub mod canonical;
@@ -20,6 +21,7 @@ pub mod config;
 pub mod diagnostic;
 pub mod diff;
 pub mod fixing;
+pub mod generate;
 pub mod model;
 pub mod present;
 pub mod render;

@@ -8,6 +8,7 @@ use std::fmt;
 use std::io::Read;
 use std::path::{Path, PathBuf};
 
+use crate::check::MAX_KEPT_PER_RULE;
 use crate::syntax::Span;
 
 /// The largest file `ekb` reads. Larger inputs (or endless ones such as `/dev/zero`) are
@@ -20,6 +21,8 @@ pub struct SourceFile {
     name: String,
     text: String,
     invalid_utf8: Vec<Span>,
+    /// How many lines have invalid UTF-8 (`invalid_utf8` holds the first of them only).
+    invalid_utf8_lines: usize,
 }
 
 /// Why a file could not be read at all (exit code 2).
@@ -46,13 +49,15 @@ impl SourceFile {
                 name,
                 text,
                 invalid_utf8: Vec::new(),
+                invalid_utf8_lines: 0,
             },
             Err(err) => {
-                let (text, invalid_utf8) = sanitize(err.into_bytes());
+                let (text, invalid_utf8, invalid_utf8_lines) = sanitize(err.into_bytes());
                 SourceFile {
                     name,
                     text,
                     invalid_utf8,
+                    invalid_utf8_lines,
                 }
             }
         }
@@ -65,18 +70,29 @@ impl SourceFile {
             reason,
         };
         if path == Path::new("-") {
-            let bytes = read_limited(std::io::stdin().lock()).map_err(fail)?;
+            let bytes = read_limited(std::io::stdin().lock(), 0).map_err(fail)?;
             return Ok(SourceFile::from_bytes("<stdin>", bytes));
         }
         let metadata = std::fs::metadata(path).map_err(|e| fail(describe_io_error(&e)))?;
         if metadata.is_dir() {
             return Err(fail("it is a directory; give a knowledge-base file".into()));
         }
-        if metadata.is_file() && metadata.len() > MAX_FILE_SIZE {
+        // A FIFO would block until a writer comes (possibly never) and a device such as
+        // /dev/zero never ends: read only regular files by name, and streams through `-`.
+        if !metadata.is_file() {
+            return Err(fail(
+                "it is not a regular file (a pipe, socket or device); to check a stream, \
+                 pipe it to `ekb check -`"
+                    .into(),
+            ));
+        }
+        if metadata.len() > MAX_FILE_SIZE {
             return Err(fail(too_large()));
         }
         let file = std::fs::File::open(path).map_err(|e| fail(describe_io_error(&e)))?;
-        let bytes = read_limited(file).map_err(fail)?;
+        // One allocation of the right size: the text is the largest thing ekb holds, so
+        // growing it by doubling would cost up to twice the file in peak memory.
+        let bytes = read_limited(file, metadata.len() as usize).map_err(fail)?;
         Ok(SourceFile::from_bytes(path.display().to_string(), bytes))
     }
 
@@ -88,9 +104,16 @@ impl SourceFile {
         &self.text
     }
 
-    /// Byte ranges of the original file that were not valid UTF-8 (replaced by `?` in `text`).
+    /// Byte ranges of the original file that were not valid UTF-8 (replaced by `?` in `text`):
+    /// the first of each line (one per line is what is reported), on the first
+    /// [`MAX_KEPT_PER_RULE`] such lines (a binary file has millions).
     pub fn invalid_utf8(&self) -> &[Span] {
         &self.invalid_utf8
+    }
+
+    /// How many lines have invalid UTF-8, including those past [`SourceFile::invalid_utf8`].
+    pub fn invalid_utf8_lines(&self) -> usize {
+        self.invalid_utf8_lines
     }
 }
 
@@ -101,8 +124,11 @@ fn too_large() -> String {
     )
 }
 
-fn read_limited(reader: impl Read) -> Result<Vec<u8>, String> {
-    let mut bytes = Vec::new();
+/// Reads everything, up to [`MAX_FILE_SIZE`] bytes; `expected` is the size if known (a file
+/// may still grow or shrink while it is read, so it is only a hint).
+fn read_limited(reader: impl Read, expected: usize) -> Result<Vec<u8>, String> {
+    // One byte more than expected, so that reading up to the end needs no reallocation.
+    let mut bytes = Vec::with_capacity(expected + 1);
     reader
         .take(MAX_FILE_SIZE + 1)
         .read_to_end(&mut bytes)
@@ -124,9 +150,13 @@ fn describe_io_error(err: &std::io::Error) -> String {
     }
 }
 
-/// Replaces every byte of every invalid UTF-8 sequence by `?`, keeping offsets intact.
-fn sanitize(mut bytes: Vec<u8>) -> (String, Vec<Span>) {
-    let mut invalid = Vec::new();
+/// Replaces every byte of every invalid UTF-8 sequence by `?`, keeping offsets intact, and
+/// returns the first invalid range of each line (of the first [`MAX_KEPT_PER_RULE`] lines)
+/// and how many lines have one.
+fn sanitize(mut bytes: Vec<u8>) -> (String, Vec<Span>, usize) {
+    let mut invalid: Vec<Span> = Vec::new();
+    let mut lines = 0;
+    let mut last_end = None;
     let mut offset = 0;
     loop {
         match std::str::from_utf8(&bytes[offset..]) {
@@ -137,13 +167,21 @@ fn sanitize(mut bytes: Vec<u8>) -> (String, Vec<Span>) {
                 for byte in &mut bytes[start..start + len] {
                     *byte = b'?';
                 }
-                invalid.push(Span::new(start, start + len));
+                let same_line =
+                    last_end.is_some_and(|end| memchr::memchr(b'\n', &bytes[end..start]).is_none());
+                if !same_line {
+                    lines += 1;
+                    if invalid.len() < MAX_KEPT_PER_RULE {
+                        invalid.push(Span::new(start, start + len));
+                    }
+                }
+                last_end = Some(start + len);
                 offset = start + len;
             }
         }
     }
     let text = String::from_utf8(bytes).expect("every invalid sequence was replaced");
-    (text, invalid)
+    (text, invalid, lines)
 }
 
 /// Converts byte offsets to 1-based lines and columns (columns count Unicode scalar values).
@@ -171,10 +209,7 @@ impl LineIndex {
         let line = self.line_starts.partition_point(|&start| start <= offset) - 1;
         let start = self.line_starts[line] as usize;
         let end = (offset as usize).min(text.len());
-        let column = text.as_bytes()[start..end]
-            .iter()
-            .filter(|&&b| (b & 0xC0) != 0x80)
-            .count();
+        let column = count_chars(&text.as_bytes()[start.min(end)..end]);
         Position {
             line: line as u32 + 1,
             column: column as u32 + 1,
@@ -187,15 +222,21 @@ impl LineIndex {
     }
 }
 
+/// The number of characters in valid UTF-8 `bytes` (the bytes that do not continue one).
+pub fn count_chars(bytes: &[u8]) -> usize {
+    bytes.iter().filter(|&&b| (b & 0xC0) != 0x80).count()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
     fn invalid_bytes_become_question_marks_in_place() {
-        let file = SourceFile::from_bytes("t", b"ab\xffc\xe2\x82".to_vec());
-        assert_eq!(file.text(), "ab?c??");
-        assert_eq!(file.invalid_utf8(), &[Span::new(2, 3), Span::new(4, 6)]);
+        let file = SourceFile::from_bytes("t", b"ab\xffc\xe2\x82\n\xff\xfe".to_vec());
+        assert_eq!(file.text(), "ab?c??\n??");
+        assert_eq!(file.invalid_utf8(), &[Span::new(2, 3), Span::new(7, 8)]);
+        assert_eq!(file.invalid_utf8_lines(), 2);
     }
 
     #[test]

@@ -35,14 +35,16 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         .iter()
         .map(|source| check(source, &options))
         .collect();
-    let mut summary = Summary {
-        files: checked.len(),
-        ..Summary::default()
-    };
-    checked
-        .iter()
-        .flat_map(|file| &file.diagnostics)
-        .for_each(|d| summary.add(d));
+    // Checked::summary also counts the findings past the cap of each rule (check.rs).
+    let mut summary = Summary::default();
+    for file in &checked {
+        let one = file.summary();
+        summary.files += one.files;
+        summary.errors += one.errors;
+        summary.warnings += one.warnings;
+        summary.infos += one.infos;
+        summary.fixable += one.fixable;
+    }
     let render_options = RenderOptions {
         color: context.color_stdout(),
         quiet: context.quiet,

@@ -4,11 +4,10 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use super::{CommandError, CommandResult, Context, Exit};
-use crate::check::{check, Checked};
+use crate::check::check;
 use crate::model::export::ExportedKnowledgeBase;
 use crate::present::json;
 use crate::render::{self, escape::escape, Format, RenderOptions};
-use crate::Severity;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -52,16 +51,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     if checked.has_errors() && !args.allow_errors {
         let summary = checked.summary();
         // Only the errors stop the export; the warnings would bury them.
-        let errors = Checked {
-            diagnostics: checked
-                .diagnostics
-                .iter()
-                .filter(|d| d.severity() == Severity::Error)
-                .cloned()
-                .collect(),
-            kb: checked.kb.clone(),
-            source: checked.source,
-        };
+        let errors = checked.errors_only();
         let mut stderr = std::io::stderr().lock();
         let render_options = RenderOptions {
             color: context.color_stderr(),

@@ -4,7 +4,9 @@
 //! line (its key, id, numbers, arity, text) report from here, through their own modules.
 
 use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
 
+use crate::check::Tally;
 use crate::diagnostic::Diagnostic;
 use crate::model::{
     words, Arm, Dialect, Key, KnowledgeBase, Location, Point, Pose, Tour, Value, ValueKind,
@@ -23,11 +25,24 @@ pub struct Options {
 
 /// Builds the model of `text`, appending the findings of the line rules to `out`.
 pub fn build<'a>(text: &'a str, options: &Options, out: &mut Vec<Diagnostic>) -> KnowledgeBase<'a> {
+    build_tallied(text, options, out, &mut Tally::default())
+}
+
+/// [`build`], keeping at most [`MAX_KEPT_PER_RULE`](crate::check::MAX_KEPT_PER_RULE)
+/// findings of each rule as it goes (a file of a million bad lines would otherwise hold a
+/// million findings in memory).
+pub fn build_tallied<'a>(
+    text: &'a str,
+    options: &Options,
+    out: &mut Vec<Diagnostic>,
+    tally: &mut Tally,
+) -> KnowledgeBase<'a> {
     let mut builder = Builder {
         text,
         options: *options,
         locations: Vec::new(),
-        index: HashMap::new(),
+        ascending: 0,
+        index: HashMap::default(),
         last: None,
         tour: None,
         first_pose_key: [None, None],
@@ -36,21 +51,32 @@ pub fn build<'a>(text: &'a str, options: &Options, out: &mut Vec<Diagnostic>) ->
     };
     let mut last_line = None;
     for line in syntax::lines(text) {
-        builder.line(&line, out);
+        let before = out.len();
+        builder.line(&line, out, tally);
+        if out.len() > before {
+            tally.admit(out, before);
+        }
         last_line = Some(line);
     }
+    let before = out.len();
     if let Some(line) = last_line {
         compat::compat_no_final_newline::check(&line, text, out);
     }
     compat::compat_crlf::check(&builder.crlf_endings, out);
-    builder.finish(out)
+    let kb = builder.finish(out);
+    tally.admit(out, before);
+    kb
 }
 
 struct Builder<'a> {
     text: &'a str,
     options: Options,
     locations: Vec<Location<'a>>,
-    index: HashMap<u32, usize>,
+    /// How many of the first `locations` are in ascending id order. Files are usually
+    /// written so; those locations are found by binary search, with no map at all.
+    ascending: usize,
+    /// Where each location after the ascending ones is in `locations`.
+    index: HashMap<u32, u32, BuildHasherDefault<IdHasher>>,
     /// The location of the previous line: most lines follow one of the same id.
     last: Option<(u32, usize)>,
     tour: Option<Tour>,
@@ -63,7 +89,7 @@ struct Builder<'a> {
 }
 
 impl<'a> Builder<'a> {
-    fn line(&mut self, line: &Line, out: &mut Vec<Diagnostic>) {
+    fn line(&mut self, line: &Line, out: &mut Vec<Diagnostic>, tally: &mut Tally) {
         compat::compat_line_too_long::check(line, self.text, out);
         content::trailing_whitespace::check(line, self.text, out);
         if line.ending == syntax::LineEnding::CrLf {
@@ -74,16 +100,21 @@ impl<'a> Builder<'a> {
         }
         if let Body::Entry { key, args } = line.body {
             structure::control_character::check(args, self.text, out);
-            self.entry(key, args, out);
+            self.entry(key, args, out, tally);
         }
     }
 
-    fn entry(&mut self, key_span: Span, args: Span, out: &mut Vec<Diagnostic>) {
+    fn entry(&mut self, key_span: Span, args: Span, out: &mut Vec<Diagnostic>, tally: &mut Tally) {
         let key_text = key_span.text(self.text);
         let Some(key) = Key::from_name(key_text) else {
             let id = leading_id(args.text(self.text));
             match Key::from_name_ignoring_case(key_text) {
                 Some(key) => out.push(structure::key_case::diagnostic(key_span, key_text, key, id)),
+                // Suggesting the nearest key is slow (an edit distance to every key), and a
+                // binary file has millions of unknown keys: past the cap, only count them.
+                None if tally.is_full(&structure::unknown_key::UNKNOWN_KEY) => {
+                    tally.count(&structure::unknown_key::UNKNOWN_KEY)
+                }
                 None => out.push(structure::unknown_key::diagnostic(key_span, key_text, id)),
             }
             return;
@@ -197,11 +228,7 @@ impl<'a> Builder<'a> {
         let index = match self.last {
             Some((last_id, index)) if last_id == id => index,
             _ => {
-                let next = self.locations.len();
-                let index = *self.index.entry(id).or_insert(next);
-                if index == next {
-                    self.locations.push(Location::new(id, line_span));
-                }
+                let index = self.find_or_add(id, line_span);
                 self.last = Some((id, index));
                 index
             }
@@ -225,6 +252,30 @@ impl<'a> Builder<'a> {
     /// Remembers a line whose value was not loaded (see [`Builder::rejected`]).
     fn reject(&mut self, id: u32, key: Key, line_span: Span) {
         self.rejected.entry((id, key.order())).or_insert(line_span);
+    }
+
+    fn find_or_add(&mut self, id: u32, line_span: Span) -> usize {
+        let ascending = &self.locations[..self.ascending];
+        // A new id beyond every one so far is the common case: no search at all (a binary
+        // search costs a cache miss per step on a large file).
+        let beyond = ascending.last().is_none_or(|last| last.id < id);
+        if !beyond {
+            if let Ok(index) = ascending.binary_search_by_key(&id, |location| location.id) {
+                return index;
+            }
+        }
+        if let Some(&index) = self.index.get(&id) {
+            return index as usize;
+        }
+        let index = self.locations.len();
+        let extends_run = self.ascending == index && beyond;
+        if extends_run {
+            self.ascending += 1;
+        } else {
+            self.index.insert(id, index as u32);
+        }
+        self.locations.push(Location::new(id, line_span));
+        index
     }
 
     fn note_pose_key(&mut self, key: Key, line_span: Span) {
@@ -298,6 +349,32 @@ impl<'a> Builder<'a> {
     }
 }
 
+/// A hasher for location ids: one multiplication, instead of SipHash (made to resist
+/// flooding by network peers, which a local file does not need). The high half is folded
+/// in so that ids that are multiples of a power of two still spread over the table.
+#[derive(Default)]
+struct IdHasher(u64);
+
+impl Hasher for IdHasher {
+    fn write(&mut self, bytes: &[u8]) {
+        for &byte in bytes {
+            self.write_u64(u64::from(byte) ^ self.0.rotate_left(8));
+        }
+    }
+
+    fn write_u32(&mut self, n: u32) {
+        self.write_u64(u64::from(n));
+    }
+
+    fn write_u64(&mut self, n: u64) {
+        self.0 = n.wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    }
+
+    fn finish(&self) -> u64 {
+        self.0 ^ (self.0 >> 32)
+    }
+}
+
 /// The span of the value `key` holds in `location`, if it holds one.
 fn earlier_span(location: &Location<'_>, key: Key) -> Option<Span> {
     match key.value_kind() {
@@ -338,17 +415,17 @@ fn looks_numeric(token: &str) -> bool {
 
 /// A location id: a decimal integer in 1..=2147483647.
 pub fn parse_id(token: &str) -> Option<u32> {
-    if token.is_empty() || !token.bytes().all(|b| b.is_ascii_digit()) {
-        return None;
+    let mut id: u64 = 0;
+    for byte in token.bytes() {
+        if !byte.is_ascii_digit() {
+            return None;
+        }
+        id = id * 10 + u64::from(byte - b'0');
+        if id > i32::MAX as u64 {
+            return None;
+        }
     }
-    let digits = token.trim_start_matches('0');
-    if digits.is_empty() || digits.len() > 10 {
-        return None;
-    }
-    digits
-        .parse::<u32>()
-        .ok()
-        .filter(|&id| id <= i32::MAX as u32)
+    (id >= 1).then_some(id as u32)
 }
 
 /// A finite decimal number (`nan`, `inf` and digits out of range are not).
@@ -417,6 +494,29 @@ mod tests {
             assert_eq!(parse_id(bad), None, "{bad}");
         }
         assert_eq!(parse_id(&"1".repeat(40)), None);
+    }
+
+    #[test]
+    fn locations_are_found_in_any_order() {
+        let text = "robotLocationDescription 3 a\nrobotLocationDescription 5 b\n\
+                    robotLocationDescription 4 c\nrobotLocationDescription 1 d\n\
+                    robotLocationDescription 5 e\nrobotLocationDescription 4 f\n\
+                    robotLocationDescription 3 g\nrobotLocationDescription 65536 h\n\
+                    robotLocationDescription 131072 i\nrobotLocationDescription 65536 j\n";
+        let mut out = Vec::new();
+        let kb = build(text, &Options::default(), &mut out);
+        let ids: Vec<u32> = kb.locations().iter().map(|l| l.id).collect();
+        assert_eq!(ids, [1, 3, 4, 5, 65536, 131072]);
+        let description = |id| kb.location(id).unwrap().description.unwrap().value;
+        assert_eq!(
+            [3, 5, 4, 1, 65536].map(description),
+            ["g", "e", "f", "d", "j"]
+        );
+        let duplicates = out
+            .iter()
+            .filter(|d| d.rule.name == "duplicate-key")
+            .count();
+        assert_eq!(duplicates, 4);
     }
 
     #[test]

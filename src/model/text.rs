@@ -7,18 +7,19 @@ pub fn words(text: &str) -> impl Iterator<Item = &str> {
 
 /// Whether a message is a placeholder such as `No message in isiZulu` rather than a message.
 pub fn is_placeholder(text: &str) -> bool {
-    let lower = text.trim().to_ascii_lowercase();
+    // Run on every message: compare in place rather than lowercase a copy.
+    let text = text.trim().as_bytes();
+    // The phrase as a whole: `No message in isiZulu`, but not `No messages are lost`.
     let starts_with_phrase = |phrase: &str| {
-        lower
-            .strip_prefix(phrase)
-            .is_some_and(|rest| rest.is_empty() || rest.starts_with(' '))
+        text.len() >= phrase.len()
+            && text[..phrase.len()].eq_ignore_ascii_case(phrase.as_bytes())
+            && text.get(phrase.len()).is_none_or(|&next| next == b' ')
     };
     starts_with_phrase("no message")
         || starts_with_phrase("no translation")
-        || matches!(
-            lower.as_str(),
-            "todo" | "tbd" | "-" | "n/a" | "none" | "..."
-        )
+        || ["todo", "tbd", "-", "n/a", "none", "..."]
+            .iter()
+            .any(|word| text.eq_ignore_ascii_case(word.as_bytes()))
 }
 
 #[cfg(test)]
