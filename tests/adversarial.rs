@@ -345,9 +345,7 @@ fn control_and_bidi_characters_never_reach_the_terminal_raw() {
          robotLocationDescription 1 \u{1b}]0;pwned\u{7}\n",
     )
     .unwrap();
-    // TODO(json owner): `--format json` prints bidi overrides raw (serde escapes only C0
-    // controls); add "json" here once it escapes them as \u202e.
-    for format in ["concise", "github"] {
+    for format in ["human", "concise", "json", "github", "sarif"] {
         let output = ekb(dir.path())
             .args(["check", "--format", format])
             .arg(&file)
@@ -362,4 +360,21 @@ fn control_and_bidi_characters_never_reach_the_terminal_raw() {
         assert!(raw.is_empty(), "{format} printed {raw:?}");
         assert!(stdout.contains("error"), "{format}: {stdout}");
     }
+    // The verbose trace on standard error quotes the file too.
+    let output = ekb(dir.path())
+        .args(["-v", "check"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert!(
+        stderr.contains("ekb: read preGestureMessageEnglish"),
+        "{stderr}"
+    );
+    assert!(
+        !stderr
+            .chars()
+            .any(|c| c != '\n' && ekb::render::escape::is_unsafe(c)),
+        "{stderr}"
+    );
 }

@@ -10,8 +10,9 @@ use super::{CommandResult, Context, Exit};
 use crate::check::check;
 use crate::diff::{diff, Diff, FieldChange, LocationRef, TourSide};
 use crate::model::Dialect;
-use crate::present::{self, json};
+use crate::present;
 use crate::render::escape::escape;
+use crate::render::safe_json as json;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::check;
 use crate::model::export::ExportedKnowledgeBase;
-use crate::present::json;
+use crate::render::safe_json as json;
 use crate::render::{self, escape::escape, Format, RenderOptions};
 
 #[derive(Debug, clap::Args)]

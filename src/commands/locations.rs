@@ -10,9 +10,8 @@ use super::{CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::export::ExportedLocation;
 use crate::model::{Dialect, Language, Location, Phase};
-use crate::present::{
-    self, json, language, table, Gesture, Message, TourPositions, MESSAGE_LEGEND,
-};
+use crate::present::{self, language, table, Gesture, Message, TourPositions, MESSAGE_LEGEND};
+use crate::render::safe_json as json;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {

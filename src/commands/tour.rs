@@ -10,8 +10,9 @@ use serde::Serialize;
 use super::{CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::{Arm, Language, Location, Phase, Point, Pose};
-use crate::present::{self, json, language, Gesture, Lines, Message};
+use crate::present::{self, language, Gesture, Lines, Message};
 use crate::render::escape::escape;
+use crate::render::safe_json as json;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {

@@ -11,6 +11,7 @@ use crate::diagnostic::Diagnostic;
 use crate::model::{
     words, Arm, Dialect, Key, KnowledgeBase, Location, Point, Pose, Tour, Value, ValueKind,
 };
+use crate::render::escape::escape;
 use crate::rules::{compat, content, structure, tour};
 use crate::syntax::{self, Body, Line, Span};
 
@@ -120,7 +121,8 @@ impl<'a> Builder<'a> {
             return;
         };
         if self.options.verbose {
-            eprintln!("ekb: read {key_text} {}", args.text(self.text));
+            // File text, so escaped: it must not drive the terminal.
+            eprintln!("ekb: read {key_text} {}", escape(args.text(self.text)));
         }
         if let Some(pinned) = self.options.dialect {
             structure::legacy_key::check(key, key_span, args.text(self.text), pinned, out);

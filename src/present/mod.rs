@@ -3,10 +3,9 @@
 //!
 //! Every helper here that formats text from the file for people has passed it through
 //! [`escape`], so callers may print what it returns. Raw values ([`Message::value`],
-//! [`field::FieldValue`]) are for JSON, which [`json::write`] makes just as safe.
+//! [`field::FieldValue`]) are for JSON, which [`safe_json::write`](crate::render::safe_json::write) makes just as safe.
 
 pub mod field;
-pub mod json;
 pub mod language;
 pub mod table;
 

@@ -22,6 +22,5 @@ pub fn render(
         diagnostics: reports.iter().flat_map(|r| &r.diagnostics).collect(),
         summary,
     };
-    serde_json::to_writer_pretty(&mut *out, &output)?;
-    writeln!(out)
+    super::safe_json::write(&output, out)
 }

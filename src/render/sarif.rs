@@ -44,8 +44,7 @@ pub fn render(reports: &[FileReport<'_>], out: &mut dyn Write) -> io::Result<()>
             "results": results,
         }],
     });
-    serde_json::to_writer_pretty(&mut *out, &log)?;
-    writeln!(out)
+    super::safe_json::write(&log, out)
 }
 
 /// A `reportingDescriptor`: the rule as code scanning lists it.
