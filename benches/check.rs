@@ -5,7 +5,7 @@
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use ekb::check::check;
+use ekb::check::{check, Diagnostics};
 use ekb::generate::{generate, Spec};
 use ekb::model::build::{build, Options};
 use ekb::SourceFile;
@@ -45,7 +45,7 @@ fn bench(c: &mut Criterion) {
 
 /// Reads the file into the model, with the line rules that run while it is read.
 fn parse(source: &SourceFile, options: &Options) -> usize {
-    let mut diagnostics = Vec::new();
+    let mut diagnostics = Diagnostics::default();
     let kb = build(source.text(), options, &mut diagnostics);
     kb.locations().len() + diagnostics.len()
 }

@@ -6,8 +6,7 @@
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
 
-use crate::check::Tally;
-use crate::diagnostic::Diagnostic;
+use crate::check::Diagnostics;
 use crate::model::{
     words, Arm, Dialect, Key, KnowledgeBase, Location, Point, Pose, Tour, Value, ValueKind,
 };
@@ -24,20 +23,8 @@ pub struct Options {
     pub verbose: bool,
 }
 
-/// Builds the model of `text`, appending the findings of the line rules to `out`.
-pub fn build<'a>(text: &'a str, options: &Options, out: &mut Vec<Diagnostic>) -> KnowledgeBase<'a> {
-    build_tallied(text, options, out, &mut Tally::default())
-}
-
-/// [`build`], keeping at most [`MAX_KEPT_PER_RULE`](crate::check::MAX_KEPT_PER_RULE)
-/// findings of each rule as it goes (a file of a million bad lines would otherwise hold a
-/// million findings in memory).
-pub fn build_tallied<'a>(
-    text: &'a str,
-    options: &Options,
-    out: &mut Vec<Diagnostic>,
-    tally: &mut Tally,
-) -> KnowledgeBase<'a> {
+/// Builds the model of `text`, reporting the findings of the line rules to `out`.
+pub fn build<'a>(text: &'a str, options: &Options, out: &mut Diagnostics) -> KnowledgeBase<'a> {
     let mut builder = Builder {
         text,
         options: *options,
@@ -52,21 +39,14 @@ pub fn build_tallied<'a>(
     };
     let mut last_line = None;
     for line in syntax::lines(text) {
-        let before = out.len();
-        builder.line(&line, out, tally);
-        if out.len() > before {
-            tally.admit(out, before);
-        }
+        builder.line(&line, out);
         last_line = Some(line);
     }
-    let before = out.len();
     if let Some(line) = last_line {
         compat::compat_no_final_newline::check(&line, text, out);
     }
     compat::compat_crlf::check(&builder.crlf_endings, out);
-    let kb = builder.finish(out);
-    tally.admit(out, before);
-    kb
+    builder.finish(out)
 }
 
 struct Builder<'a> {
@@ -90,7 +70,7 @@ struct Builder<'a> {
 }
 
 impl<'a> Builder<'a> {
-    fn line(&mut self, line: &Line, out: &mut Vec<Diagnostic>, tally: &mut Tally) {
+    fn line(&mut self, line: &Line, out: &mut Diagnostics) {
         compat::compat_line_too_long::check(line, self.text, out);
         content::trailing_whitespace::check(line, self.text, out);
         if line.ending == syntax::LineEnding::CrLf {
@@ -101,22 +81,23 @@ impl<'a> Builder<'a> {
         }
         if let Body::Entry { key, args } = line.body {
             structure::control_character::check(args, self.text, out);
-            self.entry(key, args, out, tally);
+            self.entry(key, args, out);
         }
     }
 
-    fn entry(&mut self, key_span: Span, args: Span, out: &mut Vec<Diagnostic>, tally: &mut Tally) {
+    fn entry(&mut self, key_span: Span, args: Span, out: &mut Diagnostics) {
         let key_text = key_span.text(self.text);
         let Some(key) = Key::from_name(key_text) else {
             let id = leading_id(args.text(self.text));
             match Key::from_name_ignoring_case(key_text) {
-                Some(key) => out.push(structure::key_case::diagnostic(key_span, key_text, key, id)),
+                Some(key) => out.push_with(&structure::key_case::KEY_CASE, || {
+                    structure::key_case::diagnostic(key_span, key_text, key, id)
+                }),
                 // Suggesting the nearest key is slow (an edit distance to every key), and a
-                // binary file has millions of unknown keys: past the cap, only count them.
-                None if tally.is_full(&structure::unknown_key::UNKNOWN_KEY) => {
-                    tally.count(&structure::unknown_key::UNKNOWN_KEY)
-                }
-                None => out.push(structure::unknown_key::diagnostic(key_span, key_text, id)),
+                // binary file has millions of unknown keys: made only if kept.
+                None => out.push_with(&structure::unknown_key::UNKNOWN_KEY, || {
+                    structure::unknown_key::diagnostic(key_span, key_text, id)
+                }),
             }
             return;
         };
@@ -153,7 +134,7 @@ impl<'a> Builder<'a> {
         self.value(key, key_span, id, value_span, out);
     }
 
-    fn value(&mut self, key: Key, key_span: Span, id: u32, span: Span, out: &mut Vec<Diagnostic>) {
+    fn value(&mut self, key: Key, key_span: Span, id: u32, span: Span, out: &mut Diagnostics) {
         let text = span.text(self.text);
         let line_span = key_span.cover(span);
         let (index, earlier) = self.location(id, line_span, key);
@@ -288,7 +269,7 @@ impl<'a> Builder<'a> {
         }
     }
 
-    fn tour(&mut self, args: Span, out: &mut Vec<Diagnostic>) {
+    fn tour(&mut self, args: Span, out: &mut Diagnostics) {
         let text = args.text(self.text);
         let mut items = tour_items(text, args.start as usize);
         let declared = items
@@ -329,7 +310,7 @@ impl<'a> Builder<'a> {
         self.tour = Some(new);
     }
 
-    fn finish(self, out: &mut Vec<Diagnostic>) -> KnowledgeBase<'a> {
+    fn finish(self, out: &mut Diagnostics) -> KnowledgeBase<'a> {
         let dialect = match self.first_pose_key {
             [Some(seed), Some(current)] => {
                 out.push(structure::mixed_dialect::diagnostic(seed, current));
@@ -443,13 +424,7 @@ pub fn parse_number(token: &str) -> Option<f64> {
 }
 
 /// The three numbers of a pose or a point, reporting what is wrong with them.
-fn numbers(
-    key: Key,
-    id: u32,
-    span: Span,
-    text: &str,
-    out: &mut Vec<Diagnostic>,
-) -> Option<[f64; 3]> {
+fn numbers(key: Key, id: u32, span: Span, text: &str, out: &mut Diagnostics) -> Option<[f64; 3]> {
     let mut values = [0.0; 3];
     let mut count = 0;
     let mut valid = true;
@@ -505,7 +480,7 @@ mod tests {
                     robotLocationDescription 5 e\nrobotLocationDescription 4 f\n\
                     robotLocationDescription 3 g\nrobotLocationDescription 65536 h\n\
                     robotLocationDescription 131072 i\nrobotLocationDescription 65536 j\n";
-        let mut out = Vec::new();
+        let mut out = Diagnostics::default();
         let kb = build(text, &Options::default(), &mut out);
         let ids: Vec<u32> = kb.locations().iter().map(|l| l.id).collect();
         assert_eq!(ids, [1, 3, 4, 5, 65536, 131072]);

@@ -5,7 +5,8 @@
 //! the text of a line run while the model is built ([`crate::model::build`]); rules that need
 //! whole locations or the tour run afterwards, over the model ([`check_model`]).
 
-use crate::diagnostic::{Diagnostic, Severity};
+use crate::check::Diagnostics;
+use crate::diagnostic::Severity;
 use crate::model::KnowledgeBase;
 
 pub mod compat;
@@ -139,7 +140,7 @@ pub fn by_name(name: &str) -> Option<&'static Rule> {
 }
 
 /// Runs the rules that look at whole locations and the tour.
-pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, out: &mut Vec<Diagnostic>) {
+pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, out: &mut Diagnostics) {
     structure::missing_field::check(kb, out);
     tour::tour_missing::check(kb, out);
     if let Some(tour) = &kb.tour {

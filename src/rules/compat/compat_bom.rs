@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::rules::declare_rule;
 use crate::syntax::{Span, BOM};
@@ -22,14 +23,12 @@ declare_rule! {
     };
 }
 
-pub fn check(text: &str, out: &mut Vec<Diagnostic>) {
+pub fn check(text: &str, out: &mut Diagnostics) {
     if !text.starts_with(BOM) {
         return;
     }
     let span = Span::new(0, BOM.len());
-    out.push(
-        Diagnostic::new(
-            &COMPAT_BOM,
+    out.push_with(&COMPAT_BOM, || Diagnostic::new(&COMPAT_BOM,
             span,
             "the file starts with a byte-order mark: the robot's reader takes it as part of the first key and ignores line 1",
         )

@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::rules::declare_rule;
 use crate::syntax::Span;
@@ -23,14 +24,12 @@ declare_rule! {
 }
 
 /// `endings` are the spans of every `\r\n` in the file, in order.
-pub fn check(endings: &[Span], out: &mut Vec<Diagnostic>) {
+pub fn check(endings: &[Span], out: &mut Diagnostics) {
     let Some(&first) = endings.first() else {
         return;
     };
     let count = endings.len();
-    out.push(
-        Diagnostic::new(
-            &COMPAT_CRLF,
+    out.push_with(&COMPAT_CRLF, || Diagnostic::new(&COMPAT_CRLF,
             first,
             format!(
                 "{count} line{} end{} with CRLF: the robot's reader keeps the `\\r` at the end of every text value",

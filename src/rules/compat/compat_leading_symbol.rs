@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::{Key, ValueKind};
 use crate::rules::declare_rule;
@@ -27,7 +28,7 @@ declare_rule! {
     };
 }
 
-pub fn check(key: Key, id: u32, span: Span, value: &str, out: &mut Vec<Diagnostic>) {
+pub fn check(key: Key, id: u32, span: Span, value: &str, out: &mut Diagnostics) {
     let Some(first) = value.chars().next() else {
         return;
     };
@@ -55,13 +56,13 @@ pub fn check(key: Key, id: u32, span: Span, value: &str, out: &mut Vec<Diagnosti
         (true, _) => "the robot cannot read a negative first number: move the map's origin, or fix the robot's reader".to_string(),
         (false, _) => "start the value with an ASCII letter or digit".to_string(),
     };
-    out.push(
+    out.push_with(&COMPAT_LEADING_SYMBOL, || {
         Diagnostic::new(
             &COMPAT_LEADING_SYMBOL,
             Span::new(span.start as usize, span.start as usize + first.len_utf8()),
             message,
         )
         .at_location(Some(id))
-        .with_help(help),
-    );
+        .with_help(help)
+    });
 }

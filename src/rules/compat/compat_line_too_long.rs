@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::{Key, ValueKind};
 use crate::rules::{declare_rule, excerpt};
@@ -30,11 +31,17 @@ declare_rule! {
     };
 }
 
-pub fn check(line: &Line, text: &str, out: &mut Vec<Diagnostic>) {
+pub fn check(line: &Line, text: &str, out: &mut Diagnostics) {
     let length = line.span.len();
     if length < LINE_BUFFER {
         return;
     }
+    out.push_with(&COMPAT_LINE_TOO_LONG, || diagnostic(line, text));
+}
+
+/// The finding about `line`, which is too long.
+fn diagnostic(line: &Line, text: &str) -> Diagnostic {
+    let length = line.span.len();
     let content = line.content();
     let content_end = content.end as usize;
     // The robot reads the first 199 bytes (here never half a character) ...
@@ -82,9 +89,8 @@ pub fn check(line: &Line, text: &str, out: &mut Vec<Diagnostic>) {
     } else {
         last_char(content_end)
     };
-    out.push(
-        Diagnostic::new(
-            &COMPAT_LINE_TOO_LONG,
+    Diagnostic::new(
+        &COMPAT_LINE_TOO_LONG,
             Span::new(lost, content_end),
             format!(
                 "this line is {length} bytes long, but the robot reads at most {} bytes per line: {what}",
@@ -94,8 +100,7 @@ pub fn check(line: &Line, text: &str, out: &mut Vec<Diagnostic>) {
         .with_help(format!(
             "shorten the line by {} bytes or more",
             length - (LINE_BUFFER - 1)
-        )),
-    );
+        ))
 }
 
 /// The last few characters of `text`.

@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::model::{Key, ValueKind};
 use crate::rules::declare_rule;
@@ -26,7 +27,7 @@ declare_rule! {
 }
 
 /// Checks the file's last line.
-pub fn check(last: &Line, text: &str, out: &mut Vec<Diagnostic>) {
+pub fn check(last: &Line, text: &str, out: &mut Diagnostics) {
     if last.ending != LineEnding::None || last.span.is_empty() {
         return;
     }
@@ -43,15 +44,15 @@ pub fn check(last: &Line, text: &str, out: &mut Vec<Diagnostic>) {
         }
         None => "the file does not end with a newline: the robot's reader expects one after every line, and drops the last character of a text value that lacks it".to_string(),
     };
-    out.push(
+    out.push_with(&COMPAT_NO_FINAL_NEWLINE, || {
         Diagnostic::new(&COMPAT_NO_FINAL_NEWLINE, Span::empty_at(end), message)
             .with_help("end the file with a newline")
             // LF even in a CRLF file: `compat-crlf` converts the other endings to LF.
             .with_fix(
                 "add a newline at the end of the file",
                 vec![Edit::insert(end as u32, "\n")],
-            ),
-    );
+            )
+    });
 }
 
 /// The text value of a line of a text key (after its id), if it is one.

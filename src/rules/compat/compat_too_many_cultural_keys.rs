@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::KnowledgeBase;
 use crate::rules::declare_rule;
@@ -27,7 +28,7 @@ declare_rule! {
     };
 }
 
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
+pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
     for location in kb.locations() {
         let Some(value) = location.cultural_knowledge else {
             continue;
@@ -40,9 +41,7 @@ pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
         let dropped = &words[MAX_CULTURAL_KEYS..];
         let span = dropped[0].0.cover(dropped[dropped.len() - 1].0);
         let names: Vec<&str> = dropped.iter().map(|(_, word)| *word).collect();
-        out.push(
-            Diagnostic::new(
-                &COMPAT_TOO_MANY_CULTURAL_KEYS,
+        out.push_with(&COMPAT_TOO_MANY_CULTURAL_KEYS, || Diagnostic::new(&COMPAT_TOO_MANY_CULTURAL_KEYS,
                 span,
                 format!(
                     "location {} has {} culturalKnowledge words, but the robot keeps only {MAX_CULTURAL_KEYS}: it ignores {}",

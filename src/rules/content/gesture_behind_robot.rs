@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::{KnowledgeBase, Point, Pose};
 use crate::rules::declare_rule;
@@ -29,7 +30,7 @@ declare_rule! {
     };
 }
 
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
+pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
     for location in kb.locations() {
         let (Some(pose), Some(target)) = (location.pose, location.gesture_target) else {
             continue;
@@ -41,9 +42,7 @@ pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
             continue;
         };
         if offset.abs() > MAX_BEARING_DEGREES {
-            out.push(
-                Diagnostic::new(
-                    &GESTURE_BEHIND_ROBOT,
+            out.push_with(&GESTURE_BEHIND_ROBOT, || Diagnostic::new(&GESTURE_BEHIND_ROBOT,
                     target.span,
                     format!(
                         "the gesture target of location {} is {:.0}° from the robot's heading: the robot would point behind itself",

@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::KnowledgeBase;
 use crate::rules::declare_rule;
@@ -23,7 +24,7 @@ declare_rule! {
     };
 }
 
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
+pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
     for location in kb.locations() {
         let Some(target) = location.gesture_target else {
             continue;
@@ -32,9 +33,7 @@ pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
         if point.is_no_gesture() || !point.robot_sees_no_gesture() {
             continue;
         }
-        out.push(
-            Diagnostic::new(
-                &GESTURE_TARGET_SUMS_TO_ZERO,
+        out.push_with(&GESTURE_TARGET_SUMS_TO_ZERO, || Diagnostic::new(&GESTURE_TARGET_SUMS_TO_ZERO,
                 target.span,
                 format!(
                     "the gesture target of location {} adds up to 0: the robot takes that for \"no gesture\" and will not point",

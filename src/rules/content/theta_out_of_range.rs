@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::KnowledgeBase;
 use crate::rules::{declare_rule, excerpt};
@@ -24,7 +25,7 @@ declare_rule! {
     };
 }
 
-pub fn check(kb: &KnowledgeBase<'_>, source: &str, out: &mut Vec<Diagnostic>) {
+pub fn check(kb: &KnowledgeBase<'_>, source: &str, out: &mut Diagnostics) {
     for location in kb.locations() {
         let Some(pose) = location.pose else {
             continue;
@@ -36,7 +37,7 @@ pub fn check(kb: &KnowledgeBase<'_>, source: &str, out: &mut Vec<Diagnostic>) {
         let (span, written) = syntax::tokens(pose.span.text(source), pose.span.start as usize)
             .nth(2)
             .map_or((pose.span, ""), |(span, token): (Span, _)| (span, token));
-        out.push(
+        out.push_with(&THETA_OUT_OF_RANGE, || {
             Diagnostic::new(
                 &THETA_OUT_OF_RANGE,
                 span,
@@ -49,7 +50,7 @@ pub fn check(kb: &KnowledgeBase<'_>, source: &str, out: &mut Vec<Diagnostic>) {
                 ),
             )
             .at_location(Some(location.id))
-            .with_help("write the heading in degrees between -360 and 360"),
-        );
+            .with_help("write the heading in degrees between -360 and 360")
+        });
     }
 }

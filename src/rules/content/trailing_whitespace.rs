@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::model::{Key, ValueKind};
 use crate::rules::declare_rule;
@@ -25,7 +26,7 @@ declare_rule! {
     };
 }
 
-pub fn check(line: &Line, text: &str, out: &mut Vec<Diagnostic>) {
+pub fn check(line: &Line, text: &str, out: &mut Diagnostics) {
     let span = match line.body {
         // A blank line's whitespace is all indentation (after a byte-order mark, if any).
         Body::Blank => {
@@ -53,13 +54,13 @@ pub fn check(line: &Line, text: &str, out: &mut Vec<Diagnostic>) {
     } else {
         "the robot's reader skips it, but it is invisible and makes diffs noisy"
     };
-    out.push(
+    out.push_with(&TRAILING_WHITESPACE, || {
         Diagnostic::new(
             &TRAILING_WHITESPACE,
             span,
             format!("trailing whitespace: {consequence}"),
         )
         .with_help("remove it")
-        .with_fix("remove trailing whitespace", vec![Edit::delete(span)]),
-    );
+        .with_fix("remove trailing whitespace", vec![Edit::delete(span)])
+    });
 }

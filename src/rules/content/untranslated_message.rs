@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::{is_placeholder, KnowledgeBase, Language};
 use crate::rules::content::messages;
@@ -27,12 +28,13 @@ declare_rule! {
     };
 }
 
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
+pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
     for location in kb.locations() {
         for (phase, language, message) in messages(location) {
             if !is_placeholder(message.value) {
                 continue;
             }
+            out.push_with(&UNTRANSLATED_MESSAGE, || {
             let english = location
                 .message(phase, Language::English)
                 .filter(|english| !is_placeholder(english.value));
@@ -44,9 +46,7 @@ pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
                 ),
                 _ => format!("write the message in {}", language.name()),
             };
-            out.push(
-                Diagnostic::new(
-                    &UNTRANSLATED_MESSAGE,
+                Diagnostic::new(&UNTRANSLATED_MESSAGE,
                     message.span,
                     format!(
                         "the {} message {} the gesture at location {} is a placeholder: the robot would say \"{}\"",
@@ -57,8 +57,8 @@ pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
                     ),
                 )
                 .at_location(Some(location.id))
-                .with_help(help),
-            );
+                .with_help(help)
+            });
         }
     }
 }

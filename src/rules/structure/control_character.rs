@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::rules::declare_rule;
 use crate::syntax::Span;
@@ -27,7 +28,7 @@ declare_rule! {
 }
 
 /// Reports the first control character in `span`.
-pub fn check(span: Span, text: &str, out: &mut Vec<Diagnostic>) {
+pub fn check(span: Span, text: &str, out: &mut Diagnostics) {
     let value = span.text(text);
     // Fast path: nearly every value is printable ASCII. A fold without early exit, so
     // that the compiler vectorises it (this runs on every byte of every value).
@@ -43,9 +44,7 @@ pub fn check(span: Span, text: &str, out: &mut Vec<Diagnostic>) {
         return;
     };
     let start = span.start as usize + offset;
-    out.push(
-        Diagnostic::new(
-            &CONTROL_CHARACTER,
+    out.push_with(&CONTROL_CHARACTER, || Diagnostic::new(&CONTROL_CHARACTER,
             Span::new(start, start + ch.len_utf8()),
             if is_bidi_control(ch) {
                 format!(

@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::rules::declare_rule;
 use crate::source::SourceFile;
@@ -26,7 +27,7 @@ declare_rule! {
 }
 
 /// Reports the first invalid sequence of each line.
-pub fn check(source: &SourceFile, out: &mut Vec<Diagnostic>) {
+pub fn check(source: &SourceFile, out: &mut Diagnostics) {
     let text = source.text().as_bytes();
     let mut previous_line_end = None;
     for &span in source.invalid_utf8() {
@@ -37,9 +38,7 @@ pub fn check(source: &SourceFile, out: &mut Vec<Diagnostic>) {
             memchr::memchr(b'\n', &text[span.end as usize..])
                 .map_or(text.len() as u32, |i| span.end + i as u32),
         );
-        out.push(
-            Diagnostic::new(
-                &INVALID_UTF8,
+        out.push_with(&INVALID_UTF8, || Diagnostic::new(&INVALID_UTF8,
                 span,
                 format!(
                     "{} at byte offset {} is not valid UTF-8: the robot would speak or match garbage here",

@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::model::build::leading_id;
 use crate::model::{Dialect, Key, ValueKind};
@@ -30,7 +31,7 @@ declare_rule! {
 }
 
 /// `args` is the rest of the line, whose first word should be the location's id.
-pub fn check(key: Key, span: Span, args: &str, pinned: Dialect, out: &mut Vec<Diagnostic>) {
+pub fn check(key: Key, span: Span, args: &str, pinned: Dialect, out: &mut Diagnostics) {
     if key.dialect() != Some(pinned.other()) {
         return;
     }

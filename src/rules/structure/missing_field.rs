@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::{Dialect, Key, KnowledgeBase, Language, Location, Phase};
 use crate::rules::{consequence, declare_rule};
@@ -31,14 +32,17 @@ declare_rule! {
 }
 
 /// One finding per incomplete location, naming every field it lacks.
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
+pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
     let pose_key = kb.dialect.unwrap_or(Dialect::Seed).pose_key();
     for location in kb.locations() {
-        let missing = missing_keys(location, pose_key);
-        let Some(&first) = missing.first() else {
+        let mut missing = missing_keys(location, pose_key).peekable();
+        if missing.peek().is_none() {
             continue;
-        };
-        let id = location.id;
+        }
+        out.push_with(&MISSING_FIELD, || {
+            let missing: Vec<Key> = missing.collect();
+            let first = missing[0];
+            let id = location.id;
         let names: Vec<String> = missing
             .iter()
             .map(|key| format!("`{}`", key.name()))
@@ -59,19 +63,18 @@ pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
             .iter()
             .map(|key| format!("`{} {id} …`", key.name()))
             .collect();
-        out.push(
             Diagnostic::new(&MISSING_FIELD, location.first_line, message)
                 .at_location(Some(id))
                 .with_help(match lines.len() {
                     1 => format!("add a line {}", lines[0]),
                     _ => format!("add the lines {}", lines.join(", ")),
-                }),
-        );
+                })
+        });
     }
 }
 
 /// The required keys a location has no line for (a line with a bad value still counts).
-fn missing_keys(location: &Location<'_>, pose_key: Key) -> Vec<Key> {
+fn missing_keys<'l>(location: &'l Location<'_>, pose_key: Key) -> impl Iterator<Item = Key> + 'l {
     let messages = Phase::ALL
         .into_iter()
         .flat_map(|phase| Language::ALL.map(|language| Key::for_message(phase, language)));
@@ -79,5 +82,4 @@ fn missing_keys(location: &Location<'_>, pose_key: Key) -> Vec<Key> {
         .into_iter()
         .chain(messages)
         .filter(|&key| !location.has_line(key))
-        .collect()
 }

@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::Tour;
 use crate::rules::declare_rule;
@@ -24,7 +25,7 @@ declare_rule! {
 }
 
 /// `found` is the number of ids listed after `n` (see [`super::listed_stops`]).
-pub fn check(tour: &Tour, found: u64, out: &mut Vec<Diagnostic>) {
+pub fn check(tour: &Tour, found: u64, out: &mut Diagnostics) {
     let Some(declared) = tour.declared else {
         return;
     };
@@ -36,7 +37,7 @@ pub fn check(tour: &Tour, found: u64, out: &mut Vec<Diagnostic>) {
     } else {
         "the robot would drop the stops after the first n"
     };
-    out.push(
+    out.push_with(&TOUR_COUNT_MISMATCH, || {
         Diagnostic::new(
             &TOUR_COUNT_MISMATCH,
             declared.span,
@@ -48,6 +49,6 @@ pub fn check(tour: &Tour, found: u64, out: &mut Vec<Diagnostic>) {
         .with_help(format!(
             "make the first number {found}, or list {} ids",
             declared.value
-        )),
-    );
+        ))
+    });
 }

@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::Tour;
 use crate::rules::declare_rule;
@@ -23,20 +24,20 @@ declare_rule! {
     };
 }
 
-pub fn check(tour: &Tour, out: &mut Vec<Diagnostic>) {
+pub fn check(tour: &Tour, out: &mut Diagnostics) {
     let empty = match tour.declared {
         Some(declared) => declared.value == 0,
         None => tour.span.is_empty(),
     };
     if empty {
         let span = tour.declared.map_or(tour.span, |declared| declared.span);
-        out.push(
+        out.push_with(&TOUR_EMPTY, || {
             Diagnostic::new(
                 &TOUR_EMPTY,
                 span,
                 "the tour has no stops: the robot would go nowhere and have no start pose",
             )
-            .with_help("write `tourSpecification N ID1 … IDN` with at least one stop"),
-        );
+            .with_help("write `tourSpecification N ID1 … IDN` with at least one stop")
+        });
     }
 }

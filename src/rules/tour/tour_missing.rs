@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::KnowledgeBase;
 use crate::rules::declare_rule;
@@ -25,11 +26,9 @@ declare_rule! {
     };
 }
 
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
+pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
     if kb.tour.is_none() {
-        out.push(
-            Diagnostic::new(
-                &TOUR_MISSING,
+        out.push_with(&TOUR_MISSING, || Diagnostic::new(&TOUR_MISSING,
                 Span::empty_at(0),
                 "there is no `tourSpecification` line: the robot has no tour to follow and no start pose",
             )

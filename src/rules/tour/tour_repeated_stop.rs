@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::Tour;
 use crate::rules::declare_rule;
@@ -24,12 +25,10 @@ declare_rule! {
     };
 }
 
-pub fn check(tour: &Tour, out: &mut Vec<Diagnostic>) {
+pub fn check(tour: &Tour, out: &mut Diagnostics) {
     for pair in tour.stops.windows(2) {
         if pair[0].value == pair[1].value {
-            out.push(
-                Diagnostic::new(
-                    &TOUR_REPEATED_STOP,
+            out.push_with(&TOUR_REPEATED_STOP, || Diagnostic::new(&TOUR_REPEATED_STOP,
                     pair[1].span,
                     format!(
                         "location {} is visited twice in a row: the robot would repeat itself without moving",

@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::Tour;
 use crate::rules::declare_rule;
@@ -27,12 +28,10 @@ declare_rule! {
 }
 
 /// `listed` is the number of ids listed after `n` (see [`super::listed_stops`]).
-pub fn check(tour: &Tour, listed: u64, out: &mut Vec<Diagnostic>) {
+pub fn check(tour: &Tour, listed: u64, out: &mut Diagnostics) {
     let stops = listed.max(tour.declared.map_or(0, |d| d.value));
     if stops > MAX_STOPS {
-        out.push(
-            Diagnostic::new(
-                &TOUR_TOO_LONG,
+        out.push_with(&TOUR_TOO_LONG, || Diagnostic::new(&TOUR_TOO_LONG,
                 tour.span,
                 format!(
                     "the tour has {stops} stops, but the robot holds at most {MAX_STOPS}: its reader would write past the end of its tour buffer and corrupt its memory"

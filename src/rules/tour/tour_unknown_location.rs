@@ -1,3 +1,4 @@
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::KnowledgeBase;
 use crate::rules::declare_rule;
@@ -23,15 +24,13 @@ declare_rule! {
     };
 }
 
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
+pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
     let Some(tour) = &kb.tour else {
         return;
     };
     for stop in &tour.stops {
         if kb.location(stop.value).is_none() {
-            out.push(
-                Diagnostic::new(
-                    &TOUR_UNKNOWN_LOCATION,
+            out.push_with(&TOUR_UNKNOWN_LOCATION, || Diagnostic::new(&TOUR_UNKNOWN_LOCATION,
                     stop.span,
                     format!(
                         "the tour visits location {}, which does not exist: the robot cannot find it",

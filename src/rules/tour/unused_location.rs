@@ -1,5 +1,6 @@
 use std::collections::HashSet;
 
+use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::KnowledgeBase;
 use crate::rules::declare_rule;
@@ -25,14 +26,14 @@ declare_rule! {
     };
 }
 
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
+pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
     if kb.tour.is_none() {
         return; // tour-missing says it all
     }
     let visited: HashSet<u32> = kb.tour_stops().collect();
     for location in kb.locations() {
         if !visited.contains(&location.id) {
-            out.push(
+            out.push_with(&UNUSED_LOCATION, || {
                 Diagnostic::new(
                     &UNUSED_LOCATION,
                     location.first_line,
@@ -45,8 +46,8 @@ pub fn check(kb: &KnowledgeBase<'_>, out: &mut Vec<Diagnostic>) {
                 .with_help(format!(
                     "add {} to `tourSpecification` if visitors should see it",
                     location.id
-                )),
-            );
+                ))
+            });
         }
     }
 }
