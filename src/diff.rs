@@ -111,7 +111,7 @@ pub fn diff<'a>(old: &'a Checked<'a>, new: &'a Checked<'a>) -> Diff<'a> {
         let (first, last) = lines.range(location);
         LocationRef {
             id: location.id,
-            description: location.description.map(|d| d.value),
+            description: location.description().map(|d| d.value),
             lines: [first, last],
         }
     };
@@ -152,7 +152,10 @@ pub fn diff<'a>(old: &'a Checked<'a>, new: &'a Checked<'a>) -> Diff<'a> {
                 .collect();
             (!fields.is_empty()).then(|| LocationChange {
                 id: after.id,
-                description: after.description.or(before.description).map(|d| d.value),
+                description: after
+                    .description()
+                    .or(before.description())
+                    .map(|d| d.value),
                 fields,
             })
         })

@@ -64,7 +64,7 @@ fn render_table(checked: &Checked<'_>) -> String {
         let mut row = vec![
             location.id.to_string(),
             location
-                .description
+                .description()
                 .map_or_else(|| "—".to_string(), |d| present::text(d.value).into_owned()),
             location
                 .pose
@@ -219,7 +219,7 @@ fn render_classic(checked: &Checked<'_>) -> String {
             "{}{} \n",
             label("Location Description"),
             location
-                .description
+                .description()
                 .map_or("".into(), |d| present::text(d.value))
         ));
         out.push_str(&format!(

@@ -63,7 +63,7 @@ fn not_found(checked: &Checked<'_>, id: u32) -> String {
 fn render(checked: &Checked<'_>, location: &Location<'_>) -> String {
     let lines = Lines::new(checked.source.text());
     let dialect = checked.kb.dialect.unwrap_or(Dialect::Seed);
-    let title = location.description.map_or_else(
+    let title = location.description().map_or_else(
         || "(no description)".to_string(),
         |d| present::text(d.value).into_owned(),
     );

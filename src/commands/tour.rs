@@ -127,7 +127,7 @@ impl<'a> Tour<'a> {
                     id,
                     start: index == 0,
                     found: location.is_some(),
-                    description: location.and_then(|l| l.description).map(|d| d.value),
+                    description: location.and_then(|l| l.description()).map(|d| d.value),
                     pose: location.and_then(|l| l.pose).map(|p| p.value),
                     gesture_target: location.and_then(|l| l.gesture_target).map(|t| t.value),
                     points: location

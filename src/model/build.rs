@@ -157,15 +157,7 @@ impl<'a> Builder<'a> {
         compat::compat_leading_symbol::check(key, id, span, text, out);
         let location = &mut self.locations[index];
         match key.value_kind() {
-            ValueKind::Text => {
-                let value = Some(Value { value: text, span });
-                match key.message() {
-                    Some((phase, language)) => {
-                        location.messages[phase.index()][language.index()] = value
-                    }
-                    None => location.description = value,
-                }
-            }
+            ValueKind::Text | ValueKind::Words => location.set_text(key, span),
             ValueKind::Pose => {
                 self.note_pose_key(key, line_span);
                 let location = &mut self.locations[index];
@@ -200,7 +192,6 @@ impl<'a> Builder<'a> {
                     self.reject(id, key, line_span);
                 }
             },
-            ValueKind::Words => location.cultural_knowledge = Some(Value { value: text, span }),
             ValueKind::Tour => unreachable!("the tour has no id and is read by Builder::tour"),
         }
     }
@@ -257,7 +248,7 @@ impl<'a> Builder<'a> {
         } else {
             self.index.insert(id, index as u32);
         }
-        self.locations.push(Location::new(id, line_span));
+        self.locations.push(Location::new(self.text, id, line_span));
         index
     }
 
@@ -325,7 +316,7 @@ impl<'a> Builder<'a> {
             [None, None] => self
                 .locations
                 .iter()
-                .any(|l| l.gesture_arm.is_some() || l.cultural_knowledge.is_some())
+                .any(|l| l.gesture_arm.is_some() || l.cultural_knowledge().is_some())
                 .then_some(Dialect::Current),
         };
         KnowledgeBase::new(dialect, self.locations, self.tour)
@@ -361,14 +352,10 @@ impl Hasher for IdHasher {
 /// The span of the value `key` holds in `location`, if it holds one.
 fn earlier_span(location: &Location<'_>, key: Key) -> Option<Span> {
     match key.value_kind() {
-        ValueKind::Text => match key.message() {
-            Some((phase, language)) => location.message(phase, language).map(|v| v.span),
-            None => location.description.map(|v| v.span),
-        },
+        ValueKind::Text | ValueKind::Words => location.text_value(key).map(|v| v.span),
         ValueKind::Pose => location.pose.map(|v| v.span),
         ValueKind::Point => location.gesture_target.map(|v| v.span),
         ValueKind::Arm => location.gesture_arm.map(|v| v.span),
-        ValueKind::Words => location.cultural_knowledge.map(|v| v.span),
         ValueKind::Tour => None,
     }
 }
@@ -484,7 +471,7 @@ mod tests {
         let kb = build(text, &Options::default(), &mut out);
         let ids: Vec<u32> = kb.locations().iter().map(|l| l.id).collect();
         assert_eq!(ids, [1, 3, 4, 5, 65536, 131072]);
-        let description = |id| kb.location(id).unwrap().description.unwrap().value;
+        let description = |id| kb.location(id).unwrap().description().unwrap().value;
         assert_eq!(
             [3, 5, 4, 1, 65536].map(description),
             ["g", "e", "f", "d", "j"]

@@ -75,7 +75,7 @@ impl From<&Location<'_>> for ExportedLocation {
         };
         ExportedLocation {
             id: location.id,
-            description: location.description.map(|value| value.value.to_string()),
+            description: location.description().map(|value| value.value.to_string()),
             pose: location.pose.map(|value| value.value),
             gesture_target: location.gesture_target.map(|value| value.value),
             gesture_arm: location.gesture_arm.map(|value| value.value),

@@ -81,37 +81,39 @@ impl Arm {
 }
 
 /// One place on the tour.
+///
+/// Its text values are kept as spans into the file's text (8 bytes each, instead of 24 for
+/// a string slice and its span): a 60 MB file has 100,000 locations, and their size is
+/// most of what ekb holds besides the text itself. Read them with the accessors.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Location<'a> {
     pub id: u32,
     /// The first line that mentions this location.
     pub first_line: Span,
-    pub description: Option<Value<&'a str>>,
+    text: SourceText<'a>,
+    /// The text values, by [`text_index`].
+    texts: [TextSlot; 8],
     pub pose: Option<Value<Pose>>,
     /// The key the pose was written with (`robotLocation` or `robotLocationPose`).
     pub pose_key: Option<Key>,
     pub gesture_target: Option<Value<Point>>,
     pub gesture_arm: Option<Value<Arm>>,
-    /// Indexed by [`Phase::index`], then [`Language::index`].
-    pub messages: [[Option<Value<&'a str>>; 3]; 2],
-    /// The words, as one value (split with [`words`]).
-    pub cultural_knowledge: Option<Value<&'a str>>,
     /// Which keys have a line for this location, valid or not: bit `1 << Key::order()`.
     pub given: u16,
 }
 
 impl<'a> Location<'a> {
-    pub fn new(id: u32, first_line: Span) -> Location<'a> {
+    /// A location with no values yet; `text` is the file's text, which values are spans of.
+    pub fn new(text: &'a str, id: u32, first_line: Span) -> Location<'a> {
         Location {
             id,
             first_line,
-            description: None,
+            text: SourceText(text),
+            texts: [TextSlot::EMPTY; 8],
             pose: None,
             pose_key: None,
             gesture_target: None,
             gesture_arm: None,
-            messages: [[None; 3]; 2],
-            cultural_knowledge: None,
             given: 0,
         }
     }
@@ -121,16 +123,87 @@ impl<'a> Location<'a> {
         self.given & (1 << key.order()) != 0
     }
 
+    pub fn description(&self) -> Option<Value<&'a str>> {
+        self.text_value(Key::RobotLocationDescription)
+    }
+
     pub fn message(&self, phase: Phase, language: Language) -> Option<Value<&'a str>> {
-        self.messages[phase.index()][language.index()]
+        self.value_at(message_index(phase, language))
+    }
+
+    /// The words, as one value (split with [`words`]).
+    pub fn cultural_knowledge(&self) -> Option<Value<&'a str>> {
+        self.text_value(Key::CulturalKnowledge)
     }
 
     /// The culturalKnowledge words, empty when there are none.
     pub fn cultural_words(&self) -> impl Iterator<Item = &'a str> {
-        self.cultural_knowledge
+        self.cultural_knowledge()
             .map(|value| value.value)
             .into_iter()
             .flat_map(words)
+    }
+
+    /// Sets the value of a text key (a description, a message or the culturalKnowledge
+    /// words) to the text at `span`.
+    pub fn set_text(&mut self, key: Key, span: Span) {
+        self.texts[text_index(key)] = TextSlot(span);
+    }
+
+    /// The value of a text key, if it has one.
+    pub fn text_value(&self, key: Key) -> Option<Value<&'a str>> {
+        self.value_at(text_index(key))
+    }
+
+    fn value_at(&self, index: usize) -> Option<Value<&'a str>> {
+        let TextSlot(span) = self.texts[index];
+        (TextSlot(span) != TextSlot::EMPTY).then(|| Value {
+            value: span.text(self.text.0),
+            span,
+        })
+    }
+}
+
+/// Where the value of a text key is in [`Location::texts`]: the description, the six
+/// messages, the culturalKnowledge words.
+fn text_index(key: Key) -> usize {
+    match key.message() {
+        Some((phase, language)) => message_index(phase, language),
+        None if key.value_kind() == ValueKind::Words => 7,
+        None => 0,
+    }
+}
+
+fn message_index(phase: Phase, language: Language) -> usize {
+    1 + phase.index() * Language::ALL.len() + language.index()
+}
+
+/// The span of a text value, or [`TextSlot::EMPTY`] (no value).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct TextSlot(Span);
+
+impl TextSlot {
+    /// No value: no file is 4 GiB long (ekb reads at most 512 MiB).
+    const EMPTY: TextSlot = TextSlot(Span {
+        start: u32::MAX,
+        end: u32::MAX,
+    });
+}
+
+/// The file's text, shared by every location. Two locations are equal when they are the same
+/// spans of the same text (not merely equal text), and `Debug` does not print it.
+#[derive(Clone, Copy)]
+struct SourceText<'a>(&'a str);
+
+impl PartialEq for SourceText<'_> {
+    fn eq(&self, other: &Self) -> bool {
+        std::ptr::eq(self.0, other.0)
+    }
+}
+
+impl std::fmt::Debug for SourceText<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "<{} bytes of text>", self.0.len())
     }
 }
 
@@ -193,6 +266,19 @@ impl<'a> KnowledgeBase<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn locations_stay_small() {
+        // 100,000 locations of a 60 MB file: their size counts against peak memory.
+        assert!(std::mem::size_of::<Location>() <= 192);
+        let text = "abc def";
+        let mut location = Location::new(text, 1, Span::new(0, 7));
+        assert_eq!(location.description(), None);
+        location.set_text(Key::CulturalKnowledge, Span::new(4, 7));
+        let words = location.cultural_knowledge().unwrap();
+        assert_eq!((words.value, words.span), ("def", Span::new(4, 7)));
+        assert_eq!(location.text_value(Key::RobotLocationDescription), None);
+    }
 
     #[test]
     fn the_robot_sums_in_single_precision() {

@@ -64,7 +64,7 @@ impl Field {
     pub fn get<'a>(self, location: &Location<'a>) -> Option<(FieldValue<'a>, Span)> {
         match self {
             Field::Description => location
-                .description
+                .description()
                 .map(|v| (FieldValue::Text(v.value), v.span)),
             Field::Pose => location.pose.map(|v| (FieldValue::Pose(v.value), v.span)),
             Field::GestureTarget => location
@@ -77,7 +77,7 @@ impl Field {
                 .message(phase, language)
                 .map(|v| (FieldValue::Text(v.value), v.span)),
             Field::CulturalKnowledge => location
-                .cultural_knowledge
+                .cultural_knowledge()
                 .map(|v| (FieldValue::Words(words(v.value).collect()), v.span)),
         }
     }

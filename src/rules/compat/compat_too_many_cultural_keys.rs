@@ -30,7 +30,7 @@ declare_rule! {
 
 pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
     for location in kb.locations() {
-        let Some(value) = location.cultural_knowledge else {
+        let Some(value) = location.cultural_knowledge() else {
             continue;
         };
         let words: Vec<(Span, &str)> =

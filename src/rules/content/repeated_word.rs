@@ -35,7 +35,7 @@ pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
         let english = messages(location)
             .filter(|&(_, language, _)| language == Language::English)
             .map(|(_, _, message)| message);
-        let texts = location.description.into_iter().chain(english);
+        let texts = location.description().into_iter().chain(english);
         for text in texts {
             for (first, second, word) in repeats(text.value, text.span.start as usize) {
                 out.push_with(&REPEATED_WORD, || {
