@@ -108,16 +108,16 @@ impl SourceFile {
                 if map.len() as u64 > MAX_FILE_SIZE {
                     return Err(fail(too_large()));
                 }
-                return Ok(match std::str::from_utf8(&map) {
-                    Ok(_) => SourceFile {
+                if std::str::from_utf8(&map).is_ok() {
+                    return Ok(SourceFile {
                         name,
                         text: Text::Mapped(map),
                         invalid_utf8: Vec::new(),
                         invalid_utf8_lines: 0,
-                    },
-                    // Not UTF-8: the text is a sanitized copy.
-                    Err(_) => SourceFile::from_bytes(name, map.to_vec()),
-                });
+                    });
+                }
+                // Not UTF-8: the text is a sanitized copy, read below once the mapping is
+                // gone (holding both at once would double the peak memory).
             }
         }
         // One allocation of the right size: the text is the largest thing ekb holds, so
