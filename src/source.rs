@@ -264,6 +264,17 @@ impl LineIndex {
         LineIndex { line_starts }
     }
 
+    /// The 1-based line of a byte offset (without counting columns, which is linear in the
+    /// line's length).
+    pub fn line(&self, offset: u32) -> u32 {
+        self.line_starts.partition_point(|&start| start <= offset) as u32
+    }
+
+    /// The byte offset where the line after 1-based `line` starts, if there is one.
+    pub fn next_line_start(&self, line: u32) -> Option<u32> {
+        self.line_starts.get(line as usize).copied()
+    }
+
     /// The line and column of a byte offset into `text`.
     pub fn position(&self, text: &str, offset: u32) -> Position {
         let line = self.line_starts.partition_point(|&start| start <= offset) - 1;

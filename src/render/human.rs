@@ -28,6 +28,11 @@ const CONTEXT_LINES: usize = 1;
 /// Where messages and help wrap.
 const WIDTH: usize = 100;
 
+/// Lines longer than this (bytes) are not drawn: the layout of a snippet grows with its
+/// line's length, and a pasted paragraph of megabytes would take minutes. The finding is
+/// still reported, with its position, but without its snippet.
+const MAX_DRAWN_LINE: usize = 4096;
+
 pub fn render(
     reports: &[FileReport<'_>],
     summary: &Summary,
@@ -70,17 +75,29 @@ struct Finding<'a> {
     severity: Severity,
     help: Option<String>,
     labels: Vec<LabeledSpan>,
-    excerpt: Excerpt<'a>,
+    /// `None` when a line to underline is too long to draw ([`MAX_DRAWN_LINE`]).
+    excerpt: Option<Excerpt<'a>>,
 }
 
 impl<'a> Finding<'a> {
     fn new(diagnostic: &LocatedDiagnostic<'_>, lines: &Lines<'a>) -> Finding<'a> {
         let source = diagnostic.diagnostic;
-        let excerpt = Excerpt::new(
-            escape(diagnostic.file).into_owned(),
-            lines,
-            std::iter::once(source.span).chain(source.labels.iter().map(|label| label.span)),
-        );
+        let spans = || std::iter::once(source.span).chain(source.labels.iter().map(|l| l.span));
+        let drawable = spans().all(|span| lines.drawable(lines.number(span.start)));
+        let mut finding = Finding::without_snippet(diagnostic);
+        if !drawable {
+            // Without a snippet miette shows no position: say it in the message.
+            let region = diagnostic.region;
+            finding.message = format!(
+                "{}:{}:{}: {}",
+                escape(diagnostic.file),
+                region.line,
+                region.column,
+                finding.message
+            );
+            return finding;
+        }
+        let excerpt = Excerpt::new(escape(diagnostic.file).into_owned(), lines, spans());
         // The message above says what is wrong, the help below what to do: the label only
         // marks the place, or names the fix when there is one.
         let label = match &source.fix {
@@ -97,7 +114,13 @@ impl<'a> Finding<'a> {
                 excerpt.source_span(lines, label.span),
             )
         });
-        let labels = std::iter::once(primary).chain(secondary).collect();
+        finding.labels = std::iter::once(primary).chain(secondary).collect();
+        finding.excerpt = Some(excerpt);
+        finding
+    }
+
+    /// The finding's words, with no place drawn yet.
+    fn without_snippet(diagnostic: &LocatedDiagnostic<'_>) -> Finding<'a> {
         let fix = diagnostic
             .fix
             .as_ref()
@@ -111,8 +134,8 @@ impl<'a> Finding<'a> {
             message: escape(diagnostic.message).into_owned(),
             severity: diagnostic.severity,
             help: help.map(|help| escape(&help).into_owned()),
-            labels,
-            excerpt,
+            labels: Vec::new(),
+            excerpt: None,
         }
     }
 }
@@ -145,11 +168,14 @@ impl miette::Diagnostic for Finding<'_> {
     }
 
     fn source_code(&self) -> Option<&dyn SourceCode> {
-        Some(&self.excerpt)
+        self.excerpt
+            .as_ref()
+            .map(|excerpt| excerpt as &dyn SourceCode)
     }
 
     fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
-        Some(Box::new(self.labels.iter().cloned()))
+        let labels = self.excerpt.is_some().then(|| self.labels.iter().cloned());
+        labels.map(|labels| Box::new(labels) as Box<dyn Iterator<Item = LabeledSpan>>)
     }
 }
 
@@ -176,15 +202,23 @@ impl<'a> Lines<'a> {
 
     /// The 1-based line of a byte offset.
     fn number(&self, offset: u32) -> u32 {
-        self.index.position(self.text, offset).line
+        self.index.line(offset)
     }
 
     /// Where line `number` starts, and its text without the line ending.
     fn line(&self, number: u32) -> (u32, &'a str) {
         let start = self.index.line_start(number);
-        let rest = &self.text[start as usize..];
-        let line = rest.split('\n').next().unwrap_or_default();
+        let end = self
+            .index
+            .next_line_start(number)
+            .map_or(self.text.len(), |next| next as usize - 1);
+        let line = &self.text[start as usize..end.max(start as usize)];
         (start, line.strip_suffix('\r').unwrap_or(line))
+    }
+
+    /// Whether line `number` is short enough to draw.
+    fn drawable(&self, number: u32) -> bool {
+        self.line(number).1.len() <= MAX_DRAWN_LINE
     }
 }
 
@@ -222,7 +256,7 @@ impl<'a> Excerpt<'a> {
             let number = lines.number(span.start);
             numbers.insert(number);
             let around = number.saturating_sub(context).max(1)..=number.saturating_add(context);
-            numbers.extend(around.filter(|&n| n <= lines.last));
+            numbers.extend(around.filter(|&n| n <= lines.last && lines.drawable(n)));
         }
         let mut text = String::new();
         let lines = numbers
@@ -419,7 +453,7 @@ mod tests {
                         Some("here".into()),
                         excerpt.source_span(&lines, span),
                     )],
-                    excerpt,
+                    excerpt: Some(excerpt),
                 };
                 let mut out = String::new();
                 handler
@@ -428,5 +462,19 @@ mod tests {
                 assert!(!out.chars().any(super::super::escape::is_unsafe), "{out}");
             }
         }
+    }
+
+    #[test]
+    fn a_huge_line_is_reported_without_its_snippet() {
+        // 1.5 MB of repeated words on one line: miette would take minutes (or panic).
+        let text = format!("robotLocationDescription 1 {}\n", "word ".repeat(300_000));
+        let out = human("big.dat", &text);
+        assert!(
+            out.contains("big.dat:1:28: \"word\" is repeated"),
+            "{}",
+            &out[..out.len().min(2000)]
+        );
+        assert!(!out.contains("╭─["), "a snippet was drawn");
+        assert!(out.len() < 1_000_000);
     }
 }
