@@ -86,9 +86,11 @@ impl Entry<'_> {
 }
 
 impl Block<'_> {
-    /// Puts the entries in canonical key order, keeping the order of equal keys.
+    /// Puts the entries in canonical key order, keeping the order of equal keys. Each slot
+    /// is found once (a key lookup ignoring case): a block is usually sorted already, and
+    /// `sort_by_key` would look up both keys of every comparison.
     fn sort(&mut self) {
-        self.entries.sort_by_key(Entry::slot);
+        self.entries.sort_by_cached_key(Entry::slot);
     }
 }
 
