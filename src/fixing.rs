@@ -5,16 +5,22 @@
 //! case becomes a key of the other dialect, which `legacy-key` then renames). Only the bytes
 //! of the edits change. The passes stop when nothing is left to fix, or after
 //! [`MAX_PASSES`] (no rule's fix undoes another's, so this bound is never reached in practice).
+//!
+//! `check` keeps at most [`MAX_KEPT_PER_RULE`] findings of a rule; a file with more of one
+//! fixable rule (200,000 lines with trailing blanks) needs a pass per ten thousand. Such a
+//! pass, which saw only some of a rule's findings and fixed them, does not count towards
+//! [`MAX_PASSES`]: one run of `ekb fix` fixes them all, as it fixes everything else.
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use crate::check::check;
+use crate::check::{check, MAX_KEPT_PER_RULE};
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::model::build::Options;
 use crate::source::SourceFile;
 use crate::syntax::Span;
 
-/// The most passes [`fix`] makes.
+/// The most passes [`fix`] makes, not counting those that a rule's cap of findings made
+/// necessary (see the module documentation).
 pub const MAX_PASSES: usize = 10;
 
 /// The outcome of [`fix`].
@@ -30,7 +36,12 @@ pub fn fix(source: &SourceFile, options: &Options) -> Fixed {
     let mut text = source.text().to_string();
     let mut counts = BTreeMap::new();
     let mut options = *options;
-    for _ in 0..MAX_PASSES {
+    let mut passes = 0;
+    // Each pass past MAX_PASSES fixed MAX_KEPT_PER_RULE findings of one rule, and a file has
+    // fewer findings of a rule than bytes; the bound only guards against fixes that would
+    // make each other again, which no rule's do.
+    let most_capped_passes = source.text().len() / MAX_KEPT_PER_RULE + 1;
+    for _ in 0..MAX_PASSES + most_capped_passes {
         let file = SourceFile::from_bytes(source.name(), text.clone().into_bytes());
         let checked = check(&file, &options);
         // `--verbose` shows the file as read, once; later passes read it again.
@@ -43,8 +54,28 @@ pub fn fix(source: &SourceFile, options: &Options) -> Fixed {
             *counts.entry(rule).or_insert(0) += 1;
         }
         text = new;
+        if !saw_only_some(&checked.diagnostics) {
+            passes += 1;
+            if passes == MAX_PASSES {
+                break;
+            }
+        }
     }
     Fixed { text, counts }
+}
+
+/// Whether a fixable rule has as many findings as `check` keeps: it may have more, which the
+/// next pass will see.
+fn saw_only_some(diagnostics: &[Diagnostic]) -> bool {
+    let mut counts: BTreeMap<&str, usize> = BTreeMap::new();
+    diagnostics
+        .iter()
+        .filter(|diagnostic| diagnostic.rule.fixable)
+        .any(|diagnostic| {
+            let count = counts.entry(diagnostic.rule.name).or_insert(0);
+            *count += 1;
+            *count == MAX_KEPT_PER_RULE
+        })
 }
 
 /// Applies the fixes of `diagnostics` to `text`, each whole or not at all, skipping a fix
@@ -154,6 +185,15 @@ mod tests {
         assert_eq!(result.text, "robotLocationPose 1 1 2 3\n");
         assert_eq!(result.counts.get("key-case"), Some(&1));
         assert_eq!(result.counts.get("legacy-key"), Some(&1));
+    }
+
+    #[test]
+    fn more_findings_of_a_rule_than_check_keeps_are_all_fixed_in_one_run() {
+        // One more finding than MAX_PASSES passes of MAX_KEPT_PER_RULE could fix.
+        let lines = MAX_PASSES * MAX_KEPT_PER_RULE + 1;
+        let result = fixed(&" \n".repeat(lines));
+        assert_eq!(result.text, "\n".repeat(lines));
+        assert_eq!(result.counts.get("trailing-whitespace"), Some(&lines));
     }
 
     #[test]

@@ -1,5 +1,7 @@
 //! Hostile and broken inputs (issue 5): each gets a clear diagnostic, or a one-line error
-//! with exit code 2 — never a panic, a hang, unbounded output, or another exit code.
+//! with exit code 2 — never a panic, a hang, unbounded output, or another exit code. Each
+//! goes through `ekb check`, and through `ekb fmt` and `ekb fix`, which rewrite it. Nothing
+//! from a file reaches the terminal raw, whichever command prints it.
 //! Big inputs are generated in a temporary folder, never committed.
 
 use std::path::Path;
@@ -43,18 +45,57 @@ fn check_file(dir: &Path, file: &Path, code: i32) -> String {
     String::from_utf8(output.stdout).expect("output is UTF-8")
 }
 
-/// Runs `ekb check FILE`, expecting exit 2 and one line on standard error with `reason`.
+/// Runs `ekb check FILE`, `ekb fmt FILE` and `ekb fix FILE`, expecting of each exit 2 and
+/// one line on standard error with `reason`.
 fn refused(dir: &Path, file: &Path, reason: &str) {
-    ekb(dir)
-        .arg("check")
-        .arg(file)
-        .assert()
-        .code(2)
-        .stdout("")
-        .stderr(
-            predicate::str::contains(reason)
-                .and(predicate::function(|err: &str| err.lines().count() == 1)),
+    for command in ["check", "fmt", "fix"] {
+        ekb(dir)
+            .arg(command)
+            .arg(file)
+            .assert()
+            .code(2)
+            .stdout("")
+            .stderr(
+                predicate::str::contains(reason)
+                    .and(predicate::function(|err: &str| err.lines().count() == 1)),
+            );
+    }
+}
+
+/// Whether `text` holds a character that could change what a terminal shows.
+fn has_unsafe(text: &str) -> bool {
+    text.chars()
+        .any(|c| c != '\n' && ekb::render::escape::is_unsafe(c))
+}
+
+/// Runs `ekb fmt FILE` and `ekb fix FILE` on a copy each of a file of `bytes`, and returns
+/// their exit codes and standard errors. Neither may panic, exit with another code than 0, 1
+/// or 2, or print anything raw from the file; a refusal (2) is one line on standard error.
+fn rewrite(bytes: &[u8]) -> [(i32, String); 2] {
+    let dir = tempfile::tempdir().unwrap();
+    ["fmt", "fix"].map(|command| {
+        let file = dir.path().join(format!("{command}.dat"));
+        std::fs::write(&file, bytes).unwrap();
+        let output = ekb(dir.path()).arg(command).arg(&file).output().unwrap();
+        let code = output.status.code().unwrap_or(-1);
+        let stderr = String::from_utf8(output.stderr).expect("standard error is UTF-8");
+        assert!(
+            (0..=2).contains(&code),
+            "{command} exited with {code}: {stderr}"
         );
+        assert!(!stderr.contains("panicked"), "{command}: {stderr}");
+        assert!(!has_unsafe(&stderr), "{command} printed raw: {stderr}");
+        if code == 2 {
+            assert_eq!(stderr.lines().count(), 1, "{command}: {stderr}");
+            assert!(stderr.starts_with("ekb: error: "), "{command}: {stderr}");
+        }
+        (code, stderr)
+    })
+}
+
+/// The exit codes of `ekb fmt` and `ekb fix` on a file of `bytes` (see [`rewrite`]).
+fn rewrite_codes(bytes: &[u8]) -> [i32; 2] {
+    rewrite(bytes).map(|(code, _)| code)
 }
 
 #[test]
@@ -62,6 +103,8 @@ fn a_one_megabyte_line_is_too_long_and_that_is_all() {
     let mut text = b"preGestureMessageEnglish      1 ".to_vec();
     text.extend(std::iter::repeat_n(b"robots ".as_slice(), 150_000).flatten());
     text.push(b'\n');
+    // fmt only drops the trailing blank; fix too, and leaves the line too long.
+    assert_eq!(rewrite_codes(&text), [0, 1]);
     checked(text, |checked| {
         let long = checked
             .diagnostics
@@ -94,6 +137,8 @@ fn fifty_megabytes_without_a_newline() {
         "{stdout}"
     );
     assert!(stdout.len() < 100_000, "{} bytes of output", stdout.len());
+    // Both add the final newline; the line stays too long for the robot.
+    assert_eq!(rewrite_codes(&text), [0, 1]);
 }
 
 #[test]
@@ -122,6 +167,14 @@ fn a_nul_byte_is_a_control_character_and_is_escaped() {
         "{stdout}"
     );
     assert!(!stdout.contains('\0'));
+    let [fmt, fix] = rewrite(b"preGestureMessageEnglish 1 Hel\0lo\n");
+    assert_eq!(fmt.0, 0);
+    assert_eq!(fix.0, 1);
+    assert!(
+        fix.1.contains(":1:31: error[control-character]"),
+        "{}",
+        fix.1
+    );
 }
 
 /// Deterministic pseudo-random bytes.
@@ -144,9 +197,15 @@ fn random_binary_is_reported_not_fatal() {
     let stdout = check_file(dir.path(), &file, 1);
     assert!(stdout.contains("error[invalid-utf8]"), "{stdout}");
     // Nothing raw from the file reaches the terminal.
-    assert!(!stdout
-        .chars()
-        .any(|c| c != '\n' && ekb::render::escape::is_unsafe(c)));
+    assert!(!has_unsafe(&stdout));
+    // Rewriting it would lose the bad bytes.
+    for (code, stderr) in rewrite(&noise(256 * 1024, 0x5EED)) {
+        assert_eq!(code, 2);
+        assert!(
+            stderr.contains("is not valid UTF-8 (line 1, column "),
+            "{stderr}"
+        );
+    }
 }
 
 #[test]
@@ -178,6 +237,7 @@ fn a_million_bad_lines_give_bounded_output() {
         .and_then(|n| n.parse().ok())
         .unwrap_or_else(|| panic!("{summary}"));
     assert!(errors > 1_000_000, "{summary}");
+    assert_eq!(rewrite_codes(&bytes), [2, 2], "not valid UTF-8");
 }
 
 #[test]
@@ -186,6 +246,13 @@ fn invalid_utf8_in_a_key_an_id_and_a_value() {
                  robotLocationDescription 1\xfe Roomba\n\
                  preGestureMessageEnglish 1 Hello \xc3\x28 there\n"
         .to_vec();
+    for (code, stderr) in rewrite(&text) {
+        assert_eq!(code, 2);
+        assert!(
+            stderr.contains("is not valid UTF-8 (line 1, column 6)"),
+            "{stderr}"
+        );
+    }
     checked(text, |checked| {
         let utf8: Vec<u32> = checked
             .diagnostics
@@ -249,6 +316,8 @@ fn dev_zero_is_refused() {
 fn an_id_of_forty_digits_is_invalid() {
     let id = "1".repeat(40);
     let text = format!("robotLocationDescription {id} Roomba\n");
+    // fmt keeps the line as written, fix cannot guess the id.
+    assert_eq!(rewrite_codes(text.as_bytes()), [0, 1]);
     checked(text.into_bytes(), |checked| {
         let invalid = checked
             .diagnostics
@@ -263,6 +332,7 @@ fn an_id_of_forty_digits_is_invalid() {
 fn a_float_of_four_hundred_digits_is_invalid() {
     let huge = format!("1{}", "0".repeat(399));
     let text = format!("robotLocation 1 {huge} 1.0 0\n");
+    assert_eq!(rewrite_codes(text.as_bytes()), [0, 1]);
     checked(text.into_bytes(), |checked| {
         let invalid = checked
             .diagnostics
@@ -288,6 +358,7 @@ fn a_million_stop_tour() {
         text.push_str([" 1", " 2", " 3", " 4"][i % 4]);
     }
     text.push('\n');
+    assert_eq!(rewrite_codes(text.as_bytes()), [0, 1]);
     checked(text.into_bytes(), |checked| {
         let count = |rule| rules(checked).iter().filter(|&&r| r == rule).count();
         assert_eq!(count("tour-too-long"), 1);
@@ -323,6 +394,8 @@ fn with_tour(stops: usize) -> Vec<u8> {
 
 #[test]
 fn a_tour_of_twenty_stops_is_fine_and_of_twenty_one_is_not() {
+    assert_eq!(rewrite_codes(&with_tour(20)), [0, 0]);
+    assert_eq!(rewrite_codes(&with_tour(21)), [0, 1]);
     checked(with_tour(20), |checked| {
         assert_eq!(rules(checked), Vec::<&str>::new());
     });
@@ -377,4 +450,100 @@ fn control_and_bidi_characters_never_reach_the_terminal_raw() {
             .any(|c| c != '\n' && ekb::render::escape::is_unsafe(c)),
         "{stderr}"
     );
+}
+
+/// A knowledge base whose description, messages, cultural knowledge and name hold escape
+/// sequences, C1 controls and bidi overrides, and a second version of it for `diff`.
+fn evil_files(dir: &Path) -> (std::path::PathBuf, std::path::PathBuf) {
+    let old = "robotLocationDescription 1 Evil\u{1b}[31m room\u{202E}\n\
+               robotLocation 1 1.0 2.0 0\n\
+               gestureTarget 1 0.0 0.0 0.0\n\
+               preGestureMessageEnglish 1 Hi \u{202E}there\u{2066} \u{7} end\n\
+               postGestureMessageEnglish 1 \u{1b}]0;pwned\u{7}\n\
+               culturalKnowledge 1 a\u{9b}b  \n\
+               robotLocationDescription 2 Lab\u{200F}\n\
+               tourSpecification 2 1 2\n";
+    let new = old
+        .replace("pwned", "owned\u{1b}[2J")
+        .replace("Lab", "L\u{1b}[1mab");
+    // Trailing blanks on line 6, for fix to remove.
+    let (old_file, new_file) = (dir.join("evil\u{202E}.dat"), dir.join("new\u{1b}.dat"));
+    std::fs::write(&old_file, old).unwrap();
+    std::fs::write(&new_file, new).unwrap();
+    (old_file, new_file)
+}
+
+#[test]
+fn tables_tours_diffs_and_rewrites_never_print_raw_control_characters() {
+    let dir = tempfile::tempdir().unwrap();
+    let (old, new) = evil_files(dir.path());
+    let runs: [(&[&str], &[&Path], i32, &str); 8] = [
+        (
+            &["locations"],
+            &[&old],
+            0,
+            "Evil\\u{001B}[31m room\\u{202E}",
+        ),
+        (&["show", "1"], &[&old], 0, "\\u{001B}]0;pwned\\u{0007}"),
+        (&["show", "2"], &[&old], 0, "Lab\\u{200F}"),
+        (&["tour", "--lang", "en"], &[&old], 0, "Hi \\u{202E}there"),
+        (&["diff"], &[&old, &new], 1, "L\\u{001B}[1mab\\u{200F}"),
+        (&["export", "--allow-errors"], &[&old], 0, "a\\u009bb"),
+        // The diffs of fmt and fix, coloured as on a terminal.
+        (
+            &["--color", "always", "fmt", "--check"],
+            &[&old],
+            1,
+            "\\u{001B}]0",
+        ),
+        (
+            &["--color", "always", "fix", "--diff"],
+            &[&old],
+            1,
+            "a\\u{009B}b",
+        ),
+    ];
+    for (args, files, code, expected) in runs {
+        let output = ekb(dir.path()).args(args).args(files).output().unwrap();
+        let (stdout, stderr) = (
+            String::from_utf8(output.stdout).unwrap(),
+            String::from_utf8(output.stderr).unwrap(),
+        );
+        assert_eq!(output.status.code(), Some(code), "{args:?}: {stderr}");
+        // Colour is the one escape sequence ekb writes itself.
+        let stdout = stdout.replace("\u{1b}[0m", "");
+        let stdout = ["\u{1b}[31m", "\u{1b}[32m", "\u{1b}[36m"]
+            .iter()
+            .fold(stdout, |out, colour| out.replace(colour, ""));
+        assert!(!has_unsafe(&stdout), "{args:?} printed raw: {stdout:?}");
+        assert!(!has_unsafe(&stderr), "{args:?} printed raw: {stderr:?}");
+        assert!(stdout.contains(expected), "{args:?}: {stdout}");
+    }
+}
+
+#[test]
+fn fmt_refuses_a_stray_carriage_return_in_one_line() {
+    let [(fmt, stderr), (fix, _)] = rewrite(b"robotLocationDescription 1 A\r\n# note\r\r\n");
+    assert_eq!(fmt, 2);
+    assert!(
+        stderr.contains("line 2 (`# note\\u{000D}`) ends in a stray carriage return"),
+        "{stderr}"
+    );
+    assert!((0..=1).contains(&fix));
+}
+
+#[test]
+fn one_fix_run_fixes_more_findings_of_a_rule_than_check_keeps() {
+    // 20,000 lines with trailing blanks: twice the findings a check keeps of one rule.
+    let lines = 2 * ekb::check::MAX_KEPT_PER_RULE;
+    let text: String = (1..=lines)
+        .map(|id| format!("robotLocationDescription {id} Room {id}  \n"))
+        .collect();
+    let [_, (code, stderr)] = rewrite(text.as_bytes());
+    assert_eq!(code, 1, "missing fields are left: {stderr}");
+    assert!(
+        stderr.contains(&format!("fixed {lines} trailing-whitespace")),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("trailing-whitespace]"), "{stderr}");
 }

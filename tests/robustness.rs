@@ -1,64 +1,20 @@
-//! The fuzz target's invariants, checked on every `cargo test` with a bounded number of
-//! cases: on arbitrary bytes and on random mutations of the seed file, `check` never
-//! panics, every span it reports is in bounds and on character boundaries, and every
-//! output format renders. The inputs the fuzzer once broke on are replayed from
-//! `tests/fixtures/fuzz/`. (fmt and fix join these invariants once they exist; see the
-//! TODO in BENCHMARKS.md.)
+//! The invariants of `tests/invariants/` (the fuzz target's), checked on every `cargo test`
+//! with a bounded number of cases: on arbitrary bytes and on random mutations of the seed
+//! file, `check` never panics and reports valid spans, every output format renders, `fmt`
+//! and `fix` are idempotent, `fmt` keeps the model, and a valid file's export imports to the
+//! same model. The inputs the fuzzer once broke on are replayed from `tests/fixtures/fuzz/`.
+
+mod invariants;
 
 use ekb::check::check;
+use ekb::generate::{generate, Spec};
 use ekb::model::build::Options;
-use ekb::render::{self, Format, RenderOptions};
-use ekb::syntax::Span;
+use ekb::model::Dialect;
 use ekb::SourceFile;
+use invariants::survives;
 use proptest::prelude::*;
 
 const SEED_FILE: &[u8] = include_bytes!("../data/environmentKnowledgeBaseInput.dat");
-
-fn assert_valid(span: Span, text: &str, what: &str) {
-    assert!(span.start <= span.end, "{what}: reversed span {span:?}");
-    assert!(
-        span.end as usize <= text.len(),
-        "{what}: {span:?} out of bounds"
-    );
-    assert!(
-        text.is_char_boundary(span.start as usize) && text.is_char_boundary(span.end as usize),
-        "{what}: {span:?} splits a character"
-    );
-}
-
-/// Everything the fuzz target asserts (fuzz/fuzz_targets/check.rs).
-fn survives(bytes: &[u8]) {
-    let source = SourceFile::from_bytes("input", bytes.to_vec());
-    let text = source.text();
-    assert_eq!(text.len(), bytes.len());
-    let checked = check(&source, &Options::default());
-    for diagnostic in checked.diagnostics.iter().chain(&checked.omitted) {
-        let rule = diagnostic.rule.name;
-        assert_valid(diagnostic.span, text, rule);
-        for label in &diagnostic.labels {
-            assert_valid(label.span, text, rule);
-        }
-        for edit in diagnostic.fix.iter().flat_map(|fix| &fix.edits) {
-            assert_valid(edit.span, text, rule);
-        }
-    }
-    let summary = checked.summary();
-    for format in [Format::Concise, Format::Json, Format::Github] {
-        let mut out = Vec::new();
-        render::render(
-            format,
-            std::slice::from_ref(&checked),
-            &summary,
-            &mut out,
-            &RenderOptions::default(),
-        )
-        .unwrap();
-        assert!(
-            String::from_utf8(out).is_ok(),
-            "{format:?} wrote invalid UTF-8"
-        );
-    }
-}
 
 /// One edit of a file: what fuzzers and careless pastes do.
 #[derive(Debug, Clone)]
@@ -129,8 +85,20 @@ fn apply(mut bytes: Vec<u8>, mutations: &[Mutation]) -> Vec<u8> {
     bytes
 }
 
+/// A valid file (no errors) of a few locations in the current dialect, for mutations that
+/// keep it valid and so reach the export → import round trip.
+fn valid_file() -> Vec<u8> {
+    let spec = Spec {
+        dialect: Dialect::Current,
+        ..Spec::new(4)
+    };
+    generate(&spec).into_bytes()
+}
+
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+    // 3 × 64 cases: a few seconds in a debug build (each case checks the input about ten
+    // times: fmt twice, fix up to twenty passes, the models).
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
 
     #[test]
     fn arbitrary_bytes(bytes in prop::collection::vec(any::<u8>(), 0..2048)) {
@@ -141,11 +109,24 @@ proptest! {
     fn mutations_of_the_seed_file(mutations in prop::collection::vec(mutation(), 1..12)) {
         survives(&apply(SEED_FILE.to_vec(), &mutations));
     }
+
+    #[test]
+    fn mutations_of_a_valid_file(mutations in prop::collection::vec(mutation(), 1..4)) {
+        survives(&apply(valid_file(), &mutations));
+    }
 }
 
 #[test]
 fn the_seed_file_itself() {
     survives(SEED_FILE);
+}
+
+#[test]
+fn a_valid_file_itself() {
+    let file = valid_file();
+    let source = SourceFile::from_bytes("valid", file.clone());
+    assert!(!check(&source, &Options::default()).has_errors());
+    survives(&file);
 }
 
 /// Inputs the fuzzer found (see BENCHMARKS.md, "Fuzzing"), kept so they stay fixed.

@@ -16,7 +16,10 @@
 //! - a comment moves with the line it precedes. Comments above the first entry that are
 //!   separated from it by a blank line are a file header and stay at the top; comments after
 //!   the last entry stay at the end;
-//! - LF line endings, one final newline, no byte-order mark, no trailing whitespace.
+//! - LF line endings, one final newline, no byte-order mark, no trailing whitespace;
+//! - a blank line first if the first line would start with U+FEFF (a line in the middle of
+//!   a file can, as text of a key or comment): at the very start of a file it would be read
+//!   as a byte-order mark and vanish.
 //!
 //! Values are copied byte for byte: a text value keeps its inner spacing, a number keeps its
 //! spelling. Only the blanks *between* the numbers of a pose or a gesture target, and between
@@ -35,6 +38,9 @@ use crate::rules::compat::compat_line_too_long::LINE_BUFFER;
 
 /// The column (1-based) where a location line's id starts.
 pub const VALUE_COLUMN: usize = 31;
+
+/// U+FEFF: a byte-order mark at the start of a file, text anywhere else.
+const BYTE_ORDER_MARK: char = '\u{feff}';
 
 /// The slot of a key that is no known key, even ignoring case: after every known key.
 const UNKNOWN_SLOT: usize = Key::CulturalKnowledge as usize + 1;
@@ -80,9 +86,11 @@ impl Entry<'_> {
 }
 
 impl Block<'_> {
-    /// Puts the entries in canonical key order, keeping the order of equal keys.
+    /// Puts the entries in canonical key order, keeping the order of equal keys. Each slot
+    /// is found once (a key lookup ignoring case): a block is usually sorted already, and
+    /// `sort_by_key` would look up both keys of every comparison.
     fn sort(&mut self) {
-        self.entries.sort_by_key(Entry::slot);
+        self.entries.sort_by_cached_key(Entry::slot);
     }
 }
 
@@ -123,6 +131,9 @@ impl Document<'_> {
         if !self.footer.is_empty() {
             section(&mut out);
             push_comments(&mut out, &self.footer);
+        }
+        if out.starts_with(BYTE_ORDER_MARK) {
+            out.insert(0, '\n');
         }
         out
     }
@@ -197,6 +208,16 @@ mod tests {
              aVeryLongUnknownKeyOfThirtyOneCh 3\n\
              tourSpecification 2 1 3\n"
         );
+    }
+
+    #[test]
+    fn a_line_starting_with_u_feff_is_not_made_the_first_line_of_the_file() {
+        // Found by the fuzzer: the line had no id, so it moved to the top, where the next
+        // reading took its U+FEFF for a byte-order mark.
+        let text = "robotLocationDescription 1 A\n\u{feff}x y\n";
+        let once = Document::parse(text).unwrap().render();
+        assert_eq!(once, "\n\u{feff}x y\n\nrobotLocationDescription      1 A\n");
+        assert_eq!(Document::parse(&once).unwrap().render(), once);
     }
 
     #[test]
