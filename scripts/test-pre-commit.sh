@@ -21,13 +21,17 @@ cd "$repo"
 git init --quiet
 git config user.email editor@example.org
 git config user.name "Content Editor"
-cat > .pre-commit-config.yaml <<YAML
-repos:
-  - repo: $root
-    rev: $(git -C "$root" rev-parse HEAD)
-    hooks:
-      - id: ekb-check
-YAML
+# Writes .pre-commit-config.yaml using this repository's hooks with the given ids.
+use_hooks() {
+  {
+    echo "repos:"
+    echo "  - repo: $root"
+    echo "    rev: $(git -C "$root" rev-parse HEAD)"
+    echo "    hooks:"
+    for id in "$@"; do echo "      - id: $id"; done
+  } > .pre-commit-config.yaml
+}
+use_hooks ekb-check
 pre-commit install --install-hooks >/dev/null
 
 fail() { echo "test-pre-commit: FAILED: $*" >&2; exit 1; }
@@ -47,15 +51,7 @@ git commit --quiet -m "Add the fixed knowledge base" >"$work/accepted.log" 2>&1 
   { cat "$work/accepted.log"; fail "the fixed file was refused"; }
 echo "ok: the fixed file commits"
 
-cat > .pre-commit-config.yaml <<YAML
-repos:
-  - repo: $root
-    rev: $(git -C "$root" rev-parse HEAD)
-    hooks:
-      - id: ekb-fix
-      - id: ekb-fmt
-      - id: ekb-check
-YAML
+use_hooks ekb-fix ekb-fmt ekb-check
 mkdir -p lab2/data
 # A wrong-case key, trailing blanks, CRLF endings and a misaligned line.
 sed -e 's/^postGestureMessageEnglish     5/PostGestureMessageEnglish     5/' \
