@@ -140,6 +140,21 @@ impl Diagnostics {
         }
     }
 
+    /// Adds the findings of `later`, made over a later part of the file (or of its
+    /// locations), as if they had been reported here after these: each rule's cap still
+    /// keeps only the first ones.
+    pub fn append(&mut self, later: Diagnostics) {
+        let mut taken = RuleCounts::default();
+        for diagnostic in later.kept {
+            if self.counts.get(diagnostic.rule) + taken.bump(diagnostic.rule) <= MAX_KEPT_PER_RULE {
+                self.kept.push(diagnostic);
+            }
+        }
+        for (rule, count) in later.counts.0 {
+            self.counts.add(rule, count);
+        }
+    }
+
     /// Reports `n` findings of `rule` that are known not to be kept (never made).
     pub fn count(&mut self, rule: &'static Rule, n: usize) {
         if n > 0 {

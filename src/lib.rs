@@ -23,6 +23,7 @@ pub mod diff;
 pub mod fixing;
 pub mod generate;
 pub mod model;
+mod parallel;
 pub mod present;
 pub mod render;
 pub mod rewrite;

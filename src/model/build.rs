@@ -5,11 +5,13 @@
 
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
+use std::ops::Range;
 
 use crate::check::Diagnostics;
 use crate::model::{
     words, Arm, Dialect, Key, KnowledgeBase, Location, Point, Pose, Tour, Value, ValueKind,
 };
+use crate::parallel;
 use crate::render::escape::escape;
 use crate::rules::{compat, content, structure, tour};
 use crate::syntax::{self, Body, Line, Span};
@@ -24,29 +26,45 @@ pub struct Options {
 }
 
 /// Builds the model of `text`, reporting the findings of the line rules to `out`.
+///
+/// A large file is read in parts, one per core, and the parts joined; when a location or
+/// the tour is written in more than one part in a way that only reading in order can
+/// settle (a key given in both, say), the file is read again in one part.
 pub fn build<'a>(text: &'a str, options: &Options, out: &mut Diagnostics) -> KnowledgeBase<'a> {
-    let mut builder = Builder {
-        text,
-        options: *options,
-        locations: Vec::new(),
-        ascending: 0,
-        index: HashMap::default(),
-        last: None,
-        tour: None,
-        first_pose_key: [None, None],
-        crlf_endings: Vec::new(),
-        rejected: HashMap::new(),
+    // Verbose output lists the lines in order, which only one reader can do.
+    let parts = if options.verbose {
+        1
+    } else {
+        parallel::parts_for_text(text.len())
     };
-    let mut last_line = None;
-    for line in syntax::lines(text) {
-        builder.line(&line, out);
-        last_line = Some(line);
+    build_in_parts(text, options, parts, out)
+}
+
+/// [`build`], reading `text` in at most `parts` parts.
+fn build_in_parts<'a>(
+    text: &'a str,
+    options: &Options,
+    parts: usize,
+    out: &mut Diagnostics,
+) -> KnowledgeBase<'a> {
+    let ranges = parallel::line_ranges(text, parts);
+    if ranges.len() > 1 {
+        let mut read = parallel::map(ranges, |range| {
+            let mut found = Diagnostics::default();
+            let builder = Builder::read(text, options, range, &mut found);
+            (builder, found)
+        })
+        .into_iter();
+        let (mut whole, mut found) = read.next().expect("one part at least");
+        if read.all(|(part, part_found)| {
+            found.append(part_found);
+            whole.join(part)
+        }) {
+            out.append(found);
+            return whole.finish(out);
+        }
     }
-    if let Some(line) = last_line {
-        compat::compat_no_final_newline::check(&line, text, out);
-    }
-    compat::compat_crlf::check(&builder.crlf_endings, out);
-    builder.finish(out)
+    Builder::read(text, options, 0..text.len(), out).finish(out)
 }
 
 struct Builder<'a> {
@@ -64,12 +82,72 @@ struct Builder<'a> {
     /// The first `robotLocation` and `robotLocationPose` lines, and how many of each.
     first_pose_key: [Option<(Span, usize)>; 2],
     crlf_endings: Vec<Span>,
+    /// The last line read.
+    last_line: Option<Line>,
     /// Lines whose value could not be loaded, by id and key slot: the model holds no span
     /// for them, yet a later duplicate must point back at them.
     rejected: HashMap<(u32, usize), Span>,
 }
 
 impl<'a> Builder<'a> {
+    /// Reads the lines in `range` (whole lines) of `text`.
+    fn read(
+        text: &'a str,
+        options: &Options,
+        range: Range<usize>,
+        out: &mut Diagnostics,
+    ) -> Builder<'a> {
+        let mut builder = Builder {
+            text,
+            options: *options,
+            locations: Vec::new(),
+            ascending: 0,
+            index: HashMap::default(),
+            last: None,
+            tour: None,
+            first_pose_key: [None, None],
+            crlf_endings: Vec::new(),
+            last_line: None,
+            rejected: HashMap::new(),
+        };
+        for line in syntax::lines_from(&text[..range.end], range.start) {
+            builder.line(&line, out);
+            builder.last_line = Some(line);
+        }
+        builder
+    }
+
+    /// Adds what `later` read from the lines after this builder's, as if this builder had
+    /// read them. Returns false, leaving this builder half-joined, when the two parts
+    /// override each other: a key of one location, or the tour, written in both.
+    fn join(&mut self, later: Builder<'a>) -> bool {
+        if self.tour.is_some() && later.tour.is_some() {
+            return false;
+        }
+        self.tour = self.tour.take().or(later.tour);
+        for location in later.locations {
+            match self.find(location.id) {
+                Some(index) => {
+                    if !self.locations[index].join(location) {
+                        return false;
+                    }
+                }
+                None => {
+                    self.add(location);
+                }
+            }
+        }
+        for (first, next) in self.first_pose_key.iter_mut().zip(later.first_pose_key) {
+            *first = match (*first, next) {
+                (Some((span, count)), Some((_, more))) => Some((span, count + more)),
+                (first, next) => first.or(next),
+            };
+        }
+        self.crlf_endings.extend(later.crlf_endings);
+        self.last_line = later.last_line.or(self.last_line);
+        true
+    }
+
     fn line(&mut self, line: &Line, out: &mut Diagnostics) {
         compat::compat_line_too_long::check(line, self.text, out);
         content::trailing_whitespace::check(line, self.text, out);
@@ -229,26 +307,38 @@ impl<'a> Builder<'a> {
     }
 
     fn find_or_add(&mut self, id: u32, line_span: Span) -> usize {
+        match self.find(id) {
+            Some(index) => index,
+            None => self.add(Location::new(self.text, id, line_span)),
+        }
+    }
+
+    /// Where location `id` is in `locations`, if it is there.
+    fn find(&self, id: u32) -> Option<usize> {
         let ascending = &self.locations[..self.ascending];
         // A new id beyond every one so far is the common case: no search at all (a binary
         // search costs a cache miss per step on a large file).
         let beyond = ascending.last().is_none_or(|last| last.id < id);
         if !beyond {
             if let Ok(index) = ascending.binary_search_by_key(&id, |location| location.id) {
-                return index;
+                return Some(index);
             }
         }
-        if let Some(&index) = self.index.get(&id) {
-            return index as usize;
-        }
+        self.index.get(&id).map(|&index| index as usize)
+    }
+
+    /// Adds a location not yet in `locations` and returns its index.
+    fn add(&mut self, location: Location<'a>) -> usize {
         let index = self.locations.len();
-        let extends_run = self.ascending == index && beyond;
-        if extends_run {
+        let beyond = self.locations[..self.ascending]
+            .last()
+            .is_none_or(|last| last.id < location.id);
+        if self.ascending == index && beyond {
             self.ascending += 1;
         } else {
-            self.index.insert(id, index as u32);
+            self.index.insert(location.id, index as u32);
         }
-        self.locations.push(Location::new(self.text, id, line_span));
+        self.locations.push(location);
         index
     }
 
@@ -302,6 +392,10 @@ impl<'a> Builder<'a> {
     }
 
     fn finish(self, out: &mut Diagnostics) -> KnowledgeBase<'a> {
+        if let Some(line) = &self.last_line {
+            compat::compat_no_final_newline::check(line, self.text, out);
+        }
+        compat::compat_crlf::check(&self.crlf_endings, out);
         let dialect = match self.first_pose_key {
             [Some(seed), Some(current)] => {
                 out.push(structure::mixed_dialect::diagnostic(seed, current));
@@ -449,6 +543,7 @@ pub(crate) fn leading_id(args: &str) -> Option<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::syntax::BOM;
 
     #[test]
     fn ids() {
@@ -482,6 +577,115 @@ mod tests {
             .count();
         assert_eq!(duplicates, 4);
     }
+
+    /// Builds `text` in one part and in 2 to 6, and asserts the same model and findings.
+    fn assert_parts_agree(text: &str) {
+        let options = Options::default();
+        let mut expected = Diagnostics::default();
+        let whole = build_in_parts(text, &options, 1, &mut expected);
+        for parts in 2..=6 {
+            let mut found = Diagnostics::default();
+            let kb = build_in_parts(text, &options, parts, &mut found);
+            assert_eq!(kb, whole, "{parts} parts of {text:?}");
+            assert_eq!(*found, *expected, "{parts} parts of {text:?}");
+        }
+    }
+
+    /// The builders of `text` cut in two at each line start.
+    fn halves(text: &str) -> impl Iterator<Item = (Builder<'_>, Builder<'_>)> {
+        let options = Options::default();
+        syntax::lines(text).skip(1).map(move |line| {
+            let cut = line.span.start as usize;
+            let mut found = Diagnostics::default();
+            (
+                Builder::read(text, &options, 0..cut, &mut found),
+                Builder::read(text, &options, cut..text.len(), &mut found),
+            )
+        })
+    }
+
+    #[test]
+    fn a_location_written_in_two_parts_is_joined() {
+        let text = "robotLocationDescription 1 hall\nrobotLocation 1 1 2 90\n\
+                    robotLocationDescription 2 lab\ngestureTarget 1 1 1 1\n\
+                    tourSpecification 2 1 2\npreGestureMessageEnglish 1 Hello\n";
+        for (mut first, second) in halves(text) {
+            assert!(first.join(second));
+            assert_eq!(first.locations.len(), 2);
+        }
+        assert_parts_agree(text);
+    }
+
+    #[test]
+    fn parts_that_override_each_other_are_read_again_in_order() {
+        for text in [
+            "robotLocationDescription 1 a\nrobotLocationDescription 1 b\n",
+            "robotLocation 1 1 1 1\nrobotLocationPose 1 2 2 2\n",
+            "tourSpecification 1 1\ntourSpecification 1 2\n",
+        ] {
+            for (mut first, second) in halves(text) {
+                assert!(!first.join(second), "{text:?}");
+            }
+            assert_parts_agree(text);
+        }
+    }
+
+    #[test]
+    fn generated_files_read_in_parts_are_read_as_a_whole() {
+        for dialect in [Dialect::Seed, Dialect::Current] {
+            for shuffle in [false, true] {
+                let spec = crate::generate::Spec {
+                    dialect,
+                    shuffle,
+                    ..crate::generate::Spec::new(300)
+                };
+                assert_parts_agree(&crate::generate::generate(&spec));
+            }
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(200))]
+        /// Any mix of lines (duplicates, both dialects, tours, bad values, CRLF, no final
+        /// newline) reads the same in parts as in one.
+        #[test]
+        fn any_file_reads_the_same_in_parts(
+            lines in proptest::collection::vec(
+                (0..LINES.len(), 1..4u32, proptest::bool::ANY), 0..24),
+            final_newline in proptest::bool::ANY,
+        ) {
+            let mut text = String::from(BOM);
+            for (template, id, crlf) in lines {
+                text.push_str(&LINES[template].replace('#', &id.to_string()));
+                text.push_str(if crlf { "\r\n" } else { "\n" });
+            }
+            if !final_newline {
+                text.pop();
+            }
+            assert_parts_agree(&text);
+        }
+    }
+
+    /// Lines for the property test; `#` stands for an id.
+    const LINES: &[&str] = &[
+        "robotLocationDescription # Hall",
+        "robotLocation # 1 2 90",
+        "robotLocationPose # 1 2 -90",
+        "gestureTarget # 1 1 1",
+        "gestureTarget # x 1",
+        "gestureArm # left",
+        "culturalKnowledge # a b c",
+        "preGestureMessageEnglish # Hello the the lab",
+        "postGestureMessageIsiZulu #",
+        "preGestureMessageenglish # miscased",
+        "bogus # 1",
+        "tourSpecification 2 # 1",
+        "tourSpecification x",
+        "# a comment",
+        "",
+        "robotLocationDescription 0 no id",
+        "robotLocationDescription # be\u{7}ll",
+    ];
 
     #[test]
     fn numbers_are_finite_decimals() {

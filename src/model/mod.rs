@@ -144,6 +144,26 @@ impl<'a> Location<'a> {
             .flat_map(words)
     }
 
+    /// Adds the values of `later`, the same location as read from later lines, if the two
+    /// have no key in common (so that neither overrides the other); returns whether it did.
+    pub(crate) fn join(&mut self, later: Location<'a>) -> bool {
+        let both_posed = self.pose_key.is_some() && later.pose_key.is_some();
+        if self.given & later.given != 0 || both_posed {
+            return false;
+        }
+        for (slot, value) in self.texts.iter_mut().zip(later.texts) {
+            if value != TextSlot::EMPTY {
+                *slot = value;
+            }
+        }
+        self.pose = self.pose.or(later.pose);
+        self.pose_key = self.pose_key.or(later.pose_key);
+        self.gesture_target = self.gesture_target.or(later.gesture_target);
+        self.gesture_arm = self.gesture_arm.or(later.gesture_arm);
+        self.given |= later.given;
+        true
+    }
+
     /// Sets the value of a text key (a description, a message or the culturalKnowledge
     /// words) to the text at `span`.
     pub fn set_text(&mut self, key: Key, span: Span) {

@@ -5,9 +5,11 @@
 //! the text of a line run while the model is built ([`crate::model::build`]); rules that need
 //! whole locations or the tour run afterwards, over the model ([`check_model`]).
 
+use std::collections::HashSet;
+
 use crate::check::Diagnostics;
 use crate::diagnostic::Severity;
-use crate::model::KnowledgeBase;
+use crate::model::{Dialect, Key, KnowledgeBase, Location};
 
 pub mod compat;
 mod consequence;
@@ -141,7 +143,6 @@ pub fn by_name(name: &str) -> Option<&'static Rule> {
 
 /// Runs the rules that look at whole locations and the tour.
 pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, out: &mut Diagnostics) {
-    structure::missing_field::check(kb, out);
     tour::tour_missing::check(kb, out);
     if let Some(tour) = &kb.tour {
         tour::tour_empty::check(tour, out);
@@ -151,13 +152,49 @@ pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, out: &mut Diagnostics) 
         tour::tour_repeated_stop::check(tour, out);
     }
     tour::tour_unknown_location::check(kb, out);
-    tour::unused_location::check(kb, out);
-    content::untranslated_message::check(kb, out);
-    content::repeated_word::check(kb, out);
-    content::theta_out_of_range::check(kb, source, out);
-    content::gesture_target_sums_to_zero::check(kb, out);
-    content::gesture_behind_robot::check(kb, out);
-    compat::compat_too_many_cultural_keys::check(kb, out);
+    let context = LocationContext::new(kb, source);
+    // Each location is checked on its own, so a large file's are checked a part per core.
+    let parts = crate::parallel::item_parts(kb.locations()).collect();
+    for part in crate::parallel::map(parts, |locations| {
+        let mut found = Diagnostics::default();
+        for location in locations {
+            check_location(location, &context, &mut found);
+        }
+        found
+    }) {
+        out.append(part);
+    }
+}
+
+/// What the rules about one location need to know of the rest of the file.
+pub struct LocationContext<'k> {
+    pub source: &'k str,
+    /// The key a location's pose must be written with, in the file's dialect.
+    pub pose_key: Key,
+    /// The ids the tour visits; `None` if there is no tour.
+    pub visited: Option<HashSet<u32>>,
+}
+
+impl<'k> LocationContext<'k> {
+    fn new(kb: &KnowledgeBase<'_>, source: &'k str) -> Self {
+        LocationContext {
+            source,
+            pose_key: kb.dialect.unwrap_or(Dialect::Seed).pose_key(),
+            visited: kb.tour.is_some().then(|| kb.tour_stops().collect()),
+        }
+    }
+}
+
+/// Runs the rules about one location.
+fn check_location(location: &Location<'_>, context: &LocationContext<'_>, out: &mut Diagnostics) {
+    structure::missing_field::check(location, context, out);
+    tour::unused_location::check(location, context, out);
+    content::untranslated_message::check(location, out);
+    content::repeated_word::check(location, out);
+    content::theta_out_of_range::check(location, context, out);
+    content::gesture_target_sums_to_zero::check(location, out);
+    content::gesture_behind_robot::check(location, out);
+    compat::compat_too_many_cultural_keys::check(location, out);
 }
 
 #[cfg(test)]

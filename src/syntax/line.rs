@@ -85,14 +85,20 @@ impl Line {
 
 /// The lines of `text`, lexed lazily (nothing is stored, so this is cheap on any file size).
 pub fn lines(text: &str) -> Lines<'_> {
+    lines_from(text, 0)
+}
+
+/// The lines of `text` from byte `offset`, the start of a line, on; numbered from 1 at that
+/// line (so not the file's line numbers, unless `offset` is 0).
+pub fn lines_from(text: &str, offset: usize) -> Lines<'_> {
     Lines {
         text,
-        offset: 0,
+        offset,
         number: 0,
     }
 }
 
-/// Iterator returned by [`lines`].
+/// Iterator returned by [`lines`] and [`lines_from`].
 #[derive(Debug, Clone)]
 pub struct Lines<'a> {
     text: &'a str,

@@ -9,7 +9,7 @@
 mod line;
 mod span;
 
-pub use line::{lines, Body, Line, LineEnding, Lines, BOM};
+pub use line::{lines, lines_from, Body, Line, LineEnding, Lines, BOM};
 pub use span::Span;
 
 /// Space and tab separate the fields of a line; nothing else does.

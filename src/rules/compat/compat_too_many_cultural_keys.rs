@@ -1,6 +1,6 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::model::KnowledgeBase;
+use crate::model::Location;
 use crate::rules::declare_rule;
 use crate::syntax::{self, Span};
 
@@ -28,30 +28,27 @@ declare_rule! {
     };
 }
 
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
-    for location in kb.locations() {
-        let Some(value) = location.cultural_knowledge() else {
-            continue;
-        };
-        let words: Vec<(Span, &str)> =
-            syntax::tokens(value.value, value.span.start as usize).collect();
-        if words.len() <= MAX_CULTURAL_KEYS {
-            continue;
-        }
-        let dropped = &words[MAX_CULTURAL_KEYS..];
-        let span = dropped[0].0.cover(dropped[dropped.len() - 1].0);
-        let names: Vec<&str> = dropped.iter().map(|(_, word)| *word).collect();
-        out.push_with(&COMPAT_TOO_MANY_CULTURAL_KEYS, || Diagnostic::new(&COMPAT_TOO_MANY_CULTURAL_KEYS,
-                span,
-                format!(
-                    "location {} has {} culturalKnowledge words, but the robot keeps only {MAX_CULTURAL_KEYS}: it ignores {}",
-                    location.id,
-                    words.len(),
-                    names.join(", ")
-                ),
-            )
-            .at_location(Some(location.id))
-            .with_help("keep the two that matter most"),
-        );
+pub fn check(location: &Location<'_>, out: &mut Diagnostics) {
+    let Some(value) = location.cultural_knowledge() else {
+        return;
+    };
+    let words: Vec<(Span, &str)> = syntax::tokens(value.value, value.span.start as usize).collect();
+    if words.len() <= MAX_CULTURAL_KEYS {
+        return;
     }
+    let dropped = &words[MAX_CULTURAL_KEYS..];
+    let span = dropped[0].0.cover(dropped[dropped.len() - 1].0);
+    let names: Vec<&str> = dropped.iter().map(|(_, word)| *word).collect();
+    out.push_with(&COMPAT_TOO_MANY_CULTURAL_KEYS, || Diagnostic::new(&COMPAT_TOO_MANY_CULTURAL_KEYS,
+            span,
+            format!(
+                "location {} has {} culturalKnowledge words, but the robot keeps only {MAX_CULTURAL_KEYS}: it ignores {}",
+                location.id,
+                words.len(),
+                names.join(", ")
+            ),
+        )
+        .at_location(Some(location.id))
+        .with_help("keep the two that matter most"),
+    );
 }

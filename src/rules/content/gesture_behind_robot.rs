@@ -1,6 +1,6 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::model::{KnowledgeBase, Point, Pose};
+use crate::model::{Location, Point, Pose};
 use crate::rules::declare_rule;
 
 /// How far from its heading (either way) the robot can point without turning.
@@ -30,31 +30,29 @@ declare_rule! {
     };
 }
 
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
-    for location in kb.locations() {
-        let (Some(pose), Some(target)) = (location.pose, location.gesture_target) else {
-            continue;
-        };
-        if target.value.is_no_gesture() {
-            continue;
-        }
-        let Some(offset) = bearing_offset(&pose.value, &target.value) else {
-            continue;
-        };
-        if offset.abs() > MAX_BEARING_DEGREES {
-            out.push_with(&GESTURE_BEHIND_ROBOT, || Diagnostic::new(&GESTURE_BEHIND_ROBOT,
-                    target.span,
-                    format!(
-                        "the gesture target of location {} is {:.0}° from the robot's heading: the robot would point behind itself",
-                        location.id,
-                        offset.abs()
-                    ),
-                )
-                .at_location(Some(location.id))
-                .with_label(pose.span, "the robot's pose")
-                .with_help("check the sign of theta and the target's x and y"),
-            );
-        }
+pub fn check(location: &Location<'_>, out: &mut Diagnostics) {
+    let (Some(pose), Some(target)) = (location.pose, location.gesture_target) else {
+        return;
+    };
+    if target.value.is_no_gesture() {
+        return;
+    }
+    let Some(offset) = bearing_offset(&pose.value, &target.value) else {
+        return;
+    };
+    if offset.abs() > MAX_BEARING_DEGREES {
+        out.push_with(&GESTURE_BEHIND_ROBOT, || Diagnostic::new(&GESTURE_BEHIND_ROBOT,
+                target.span,
+                format!(
+                    "the gesture target of location {} is {:.0}° from the robot's heading: the robot would point behind itself",
+                    location.id,
+                    offset.abs()
+                ),
+            )
+            .at_location(Some(location.id))
+            .with_label(pose.span, "the robot's pose")
+            .with_help("check the sign of theta and the target's x and y"),
+        );
     }
 }
 

@@ -1,6 +1,6 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::model::KnowledgeBase;
+use crate::model::Location;
 use crate::rules::declare_rule;
 
 declare_rule! {
@@ -24,24 +24,22 @@ declare_rule! {
     };
 }
 
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
-    for location in kb.locations() {
-        let Some(target) = location.gesture_target else {
-            continue;
-        };
-        let point = target.value;
-        if point.is_no_gesture() || !point.robot_sees_no_gesture() {
-            continue;
-        }
-        out.push_with(&GESTURE_TARGET_SUMS_TO_ZERO, || Diagnostic::new(&GESTURE_TARGET_SUMS_TO_ZERO,
-                target.span,
-                format!(
-                    "the gesture target of location {} adds up to 0: the robot takes that for \"no gesture\" and will not point",
-                    location.id
-                ),
-            )
-            .at_location(Some(location.id))
-            .with_help("move the target slightly (e.g. change z by 0.01) so its coordinates do not sum to 0"),
-        );
+pub fn check(location: &Location<'_>, out: &mut Diagnostics) {
+    let Some(target) = location.gesture_target else {
+        return;
+    };
+    let point = target.value;
+    if point.is_no_gesture() || !point.robot_sees_no_gesture() {
+        return;
     }
+    out.push_with(&GESTURE_TARGET_SUMS_TO_ZERO, || Diagnostic::new(&GESTURE_TARGET_SUMS_TO_ZERO,
+            target.span,
+            format!(
+                "the gesture target of location {} adds up to 0: the robot takes that for \"no gesture\" and will not point",
+                location.id
+            ),
+        )
+        .at_location(Some(location.id))
+        .with_help("move the target slightly (e.g. change z by 0.01) so its coordinates do not sum to 0"),
+    );
 }

@@ -1,6 +1,6 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::model::{KnowledgeBase, Language};
+use crate::model::{Language, Location};
 use crate::rules::content::messages;
 use crate::rules::declare_rule;
 use crate::syntax::{self, Span};
@@ -30,26 +30,24 @@ declare_rule! {
     };
 }
 
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
-    for location in kb.locations() {
-        let english = messages(location)
-            .filter(|&(_, language, _)| language == Language::English)
-            .map(|(_, _, message)| message);
-        let texts = location.description().into_iter().chain(english);
-        for text in texts {
-            for (first, second, word) in repeats(text.value, text.span.start as usize) {
-                out.push_with(&REPEATED_WORD, || {
-                    Diagnostic::new(
-                        &REPEATED_WORD,
-                        first.cover(second),
-                        format!("\"{word}\" is repeated: the robot would say it twice"),
-                    )
-                    .at_location(Some(location.id))
-                    .with_help(format!(
-                        "delete one \"{word}\", or write the word that was meant"
-                    ))
-                });
-            }
+pub fn check(location: &Location<'_>, out: &mut Diagnostics) {
+    let english = messages(location)
+        .filter(|&(_, language, _)| language == Language::English)
+        .map(|(_, _, message)| message);
+    let texts = location.description().into_iter().chain(english);
+    for text in texts {
+        for (first, second, word) in repeats(text.value, text.span.start as usize) {
+            out.push_with(&REPEATED_WORD, || {
+                Diagnostic::new(
+                    &REPEATED_WORD,
+                    first.cover(second),
+                    format!("\"{word}\" is repeated: the robot would say it twice"),
+                )
+                .at_location(Some(location.id))
+                .with_help(format!(
+                    "delete one \"{word}\", or write the word that was meant"
+                ))
+            });
         }
     }
 }

@@ -1,6 +1,6 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::model::{is_placeholder, KnowledgeBase, Language};
+use crate::model::{is_placeholder, Language, Location};
 use crate::rules::content::messages;
 use crate::rules::declare_rule;
 
@@ -28,37 +28,35 @@ declare_rule! {
     };
 }
 
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
-    for location in kb.locations() {
-        for (phase, language, message) in messages(location) {
-            if !is_placeholder(message.value) {
-                continue;
-            }
-            out.push_with(&UNTRANSLATED_MESSAGE, || {
-            let english = location
-                .message(phase, Language::English)
-                .filter(|english| !is_placeholder(english.value));
-            let help = match english {
-                Some(english) if language != Language::English => format!(
-                    "translate the English message into {}: \"{}\"",
-                    language.name(),
-                    english.value
-                ),
-                _ => format!("write the message in {}", language.name()),
-            };
-                Diagnostic::new(&UNTRANSLATED_MESSAGE,
-                    message.span,
-                    format!(
-                        "the {} message {} the gesture at location {} is a placeholder: the robot would say \"{}\"",
-                        language.name(),
-                        phase.name(),
-                        location.id,
-                        message.value
-                    ),
-                )
-                .at_location(Some(location.id))
-                .with_help(help)
-            });
+pub fn check(location: &Location<'_>, out: &mut Diagnostics) {
+    for (phase, language, message) in messages(location) {
+        if !is_placeholder(message.value) {
+            continue;
         }
+        out.push_with(&UNTRANSLATED_MESSAGE, || {
+        let english = location
+            .message(phase, Language::English)
+            .filter(|english| !is_placeholder(english.value));
+        let help = match english {
+            Some(english) if language != Language::English => format!(
+                "translate the English message into {}: \"{}\"",
+                language.name(),
+                english.value
+            ),
+            _ => format!("write the message in {}", language.name()),
+        };
+            Diagnostic::new(&UNTRANSLATED_MESSAGE,
+                message.span,
+                format!(
+                    "the {} message {} the gesture at location {} is a placeholder: the robot would say \"{}\"",
+                    language.name(),
+                    phase.name(),
+                    location.id,
+                    message.value
+                ),
+            )
+            .at_location(Some(location.id))
+            .with_help(help)
+        });
     }
 }

@@ -1,7 +1,7 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::model::{Dialect, Key, KnowledgeBase, Language, Location, Phase};
-use crate::rules::{consequence, declare_rule};
+use crate::model::{Key, Language, Location, Phase};
+use crate::rules::{consequence, declare_rule, LocationContext};
 
 declare_rule! {
     /// ## What it does
@@ -32,45 +32,42 @@ declare_rule! {
 }
 
 /// One finding per incomplete location, naming every field it lacks.
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
-    let pose_key = kb.dialect.unwrap_or(Dialect::Seed).pose_key();
-    for location in kb.locations() {
-        let mut missing = missing_keys(location, pose_key).peekable();
-        if missing.peek().is_none() {
-            continue;
-        }
-        out.push_with(&MISSING_FIELD, || {
-            let missing: Vec<Key> = missing.collect();
-            let first = missing[0];
-            let id = location.id;
-        let names: Vec<String> = missing
-            .iter()
-            .map(|key| format!("`{}`", key.name()))
-            .collect();
-        let message = match missing.len() {
-            1 => format!(
-                "location {id} has no {}: {}",
-                names[0],
-                consequence::lost(first, Some(id))
-            ),
-            count => format!(
-                "location {id} lacks {count} fields ({}): the robot's reader leaves them empty; for one, {}",
-                names.join(", "),
-                consequence::lost(first, Some(id))
-            ),
-        };
-        let lines: Vec<String> = missing
-            .iter()
-            .map(|key| format!("`{} {id} …`", key.name()))
-            .collect();
-            Diagnostic::new(&MISSING_FIELD, location.first_line, message)
-                .at_location(Some(id))
-                .with_help(match lines.len() {
-                    1 => format!("add a line {}", lines[0]),
-                    _ => format!("add the lines {}", lines.join(", ")),
-                })
-        });
+pub fn check(location: &Location<'_>, context: &LocationContext<'_>, out: &mut Diagnostics) {
+    let mut missing = missing_keys(location, context.pose_key).peekable();
+    if missing.peek().is_none() {
+        return;
     }
+    out.push_with(&MISSING_FIELD, || {
+        let missing: Vec<Key> = missing.collect();
+        let first = missing[0];
+        let id = location.id;
+    let names: Vec<String> = missing
+        .iter()
+        .map(|key| format!("`{}`", key.name()))
+        .collect();
+    let message = match missing.len() {
+        1 => format!(
+            "location {id} has no {}: {}",
+            names[0],
+            consequence::lost(first, Some(id))
+        ),
+        count => format!(
+            "location {id} lacks {count} fields ({}): the robot's reader leaves them empty; for one, {}",
+            names.join(", "),
+            consequence::lost(first, Some(id))
+        ),
+    };
+    let lines: Vec<String> = missing
+        .iter()
+        .map(|key| format!("`{} {id} …`", key.name()))
+        .collect();
+        Diagnostic::new(&MISSING_FIELD, location.first_line, message)
+            .at_location(Some(id))
+            .with_help(match lines.len() {
+                1 => format!("add a line {}", lines[0]),
+                _ => format!("add the lines {}", lines.join(", ")),
+            })
+    });
 }
 
 /// The required keys a location has no line for (a line with a bad value still counts).

@@ -1,9 +1,7 @@
-use std::collections::HashSet;
-
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::model::KnowledgeBase;
-use crate::rules::declare_rule;
+use crate::model::Location;
+use crate::rules::{declare_rule, LocationContext};
 
 declare_rule! {
     /// ## What it does
@@ -26,28 +24,25 @@ declare_rule! {
     };
 }
 
-pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
-    if kb.tour.is_none() {
+pub fn check(location: &Location<'_>, context: &LocationContext<'_>, out: &mut Diagnostics) {
+    let Some(visited) = &context.visited else {
         return; // tour-missing says it all
-    }
-    let visited: HashSet<u32> = kb.tour_stops().collect();
-    for location in kb.locations() {
-        if !visited.contains(&location.id) {
-            out.push_with(&UNUSED_LOCATION, || {
-                Diagnostic::new(
-                    &UNUSED_LOCATION,
-                    location.first_line,
-                    format!(
-                        "location {} is not on the tour: the robot will never go there",
-                        location.id
-                    ),
-                )
-                .at_location(Some(location.id))
-                .with_help(format!(
-                    "add {} to `tourSpecification` if visitors should see it",
+    };
+    if !visited.contains(&location.id) {
+        out.push_with(&UNUSED_LOCATION, || {
+            Diagnostic::new(
+                &UNUSED_LOCATION,
+                location.first_line,
+                format!(
+                    "location {} is not on the tour: the robot will never go there",
                     location.id
-                ))
-            });
-        }
+                ),
+            )
+            .at_location(Some(location.id))
+            .with_help(format!(
+                "add {} to `tourSpecification` if visitors should see it",
+                location.id
+            ))
+        });
     }
 }

@@ -1,0 +1,114 @@
+//! Splitting one check over the machine's cores.
+//!
+//! A check is one pass over the file and one over its locations; on a large file each pass
+//! is cut into contiguous parts, one per core, whose results are joined in order, so that
+//! the output is the same as a single thread's (the tests compare the two).
+
+use std::ops::Range;
+
+/// Below this many bytes (or items) a part is not worth a thread: starting one costs about
+/// as much as reading 100 kB, and a real knowledge base is a few kilobytes.
+const MIN_BYTES_PER_PART: usize = 1 << 20;
+const MIN_ITEMS_PER_PART: usize = 2_000;
+
+/// The most parts one pass is cut into.
+const MAX_PARTS: usize = 16;
+
+/// How many parts to cut `size` units into, given at least `min_per_part` units per part.
+fn parts_for(size: usize, min_per_part: usize) -> usize {
+    let cores = std::thread::available_parallelism().map_or(1, usize::from);
+    (size / min_per_part).clamp(1, cores.min(MAX_PARTS))
+}
+
+/// `text` cut into about `parts` ranges of whole lines (fewer if it has too few lines).
+pub fn line_ranges(text: &str, parts: usize) -> Vec<Range<usize>> {
+    let bytes = text.as_bytes();
+    let mut ranges = Vec::with_capacity(parts);
+    let mut start = 0;
+    for part in 1..parts {
+        let target = (bytes.len() / parts * part).max(start);
+        let Some(newline) = memchr::memchr(b'\n', &bytes[target..]) else {
+            break;
+        };
+        let end = target + newline + 1;
+        ranges.push(start..end);
+        start = end;
+    }
+    if start < bytes.len() || ranges.is_empty() {
+        ranges.push(start..bytes.len());
+    }
+    ranges
+}
+
+/// How many parts to read a text of `len` bytes in.
+pub fn parts_for_text(len: usize) -> usize {
+    parts_for(len, MIN_BYTES_PER_PART)
+}
+
+/// `items` cut into contiguous parts, one per core if there are enough items.
+pub fn item_parts<T>(items: &[T]) -> std::slice::Chunks<'_, T> {
+    let parts = parts_for(items.len(), MIN_ITEMS_PER_PART);
+    items.chunks(items.len().div_ceil(parts).max(1))
+}
+
+/// `work` applied to every input, each on its own thread (the first on this one); the
+/// results in the order of the inputs.
+pub fn map<I: Send, R: Send>(inputs: Vec<I>, work: impl Fn(I) -> R + Sync) -> Vec<R> {
+    let mut inputs = inputs.into_iter();
+    let Some(first) = inputs.next() else {
+        return Vec::new();
+    };
+    std::thread::scope(|scope| {
+        let work = &work;
+        let others: Vec<_> = inputs
+            .map(|input| scope.spawn(move || work(input)))
+            .collect();
+        let mut results = Vec::with_capacity(others.len() + 1);
+        results.push(work(first));
+        for other in others {
+            match other.join() {
+                Ok(result) => results.push(result),
+                // A panic on another thread is a bug: let it surface as one.
+                Err(panic) => std::panic::resume_unwind(panic),
+            }
+        }
+        results
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges_cover_the_text_in_whole_lines() {
+        let text = "a\nbb\nccc\ndddd\ne";
+        for parts in 1..8 {
+            let ranges = line_ranges(text, parts);
+            assert_eq!(ranges[0].start, 0);
+            assert_eq!(ranges.last().unwrap().end, text.len());
+            for pair in ranges.windows(2) {
+                assert_eq!(pair[0].end, pair[1].start);
+                assert_eq!(&text[pair[0].end - 1..pair[0].end], "\n");
+            }
+            assert!(ranges.len() <= parts, "{parts}: {ranges:?}");
+        }
+        let whole = |text: &str, parts| {
+            line_ranges(text, parts)
+                == [Range {
+                    start: 0,
+                    end: text.len(),
+                }]
+        };
+        assert!(whole("", 2));
+        assert!(whole("no newline at all", 3));
+        assert!(whole("ends\n", 2));
+    }
+
+    #[test]
+    fn results_come_in_input_order() {
+        let squares = map((0..5).collect(), |n: u64| n * n);
+        assert_eq!(squares, [0, 1, 4, 9, 16]);
+        assert!(map(Vec::<u8>::new(), |n| n).is_empty());
+    }
+}
