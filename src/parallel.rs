@@ -20,9 +20,9 @@ fn parts_for(size: usize, min_per_part: usize) -> usize {
     (size / min_per_part).clamp(1, cores.min(MAX_PARTS))
 }
 
-/// `text` cut into about `parts` ranges of whole lines (fewer if it has too few lines).
-pub fn line_ranges(text: &str, parts: usize) -> Vec<Range<usize>> {
-    let bytes = text.as_bytes();
+/// `bytes` cut into about `parts` ranges of whole lines (fewer if it has too few lines).
+/// A newline is never inside a UTF-8 character, so each range of a `str` is one too.
+pub fn line_ranges(bytes: &[u8], parts: usize) -> Vec<Range<usize>> {
     let mut ranges = Vec::with_capacity(parts);
     let mut start = 0;
     for part in 1..parts {
@@ -84,7 +84,7 @@ mod tests {
     fn ranges_cover_the_text_in_whole_lines() {
         let text = "a\nbb\nccc\ndddd\ne";
         for parts in 1..8 {
-            let ranges = line_ranges(text, parts);
+            let ranges = line_ranges(text.as_bytes(), parts);
             assert_eq!(ranges[0].start, 0);
             assert_eq!(ranges.last().unwrap().end, text.len());
             for pair in ranges.windows(2) {
@@ -94,7 +94,7 @@ mod tests {
             assert!(ranges.len() <= parts, "{parts}: {ranges:?}");
         }
         let whole = |text: &str, parts| {
-            line_ranges(text, parts)
+            line_ranges(text.as_bytes(), parts)
                 == [Range {
                     start: 0,
                     end: text.len(),

@@ -108,7 +108,7 @@ impl SourceFile {
                 if map.len() as u64 > MAX_FILE_SIZE {
                     return Err(fail(too_large()));
                 }
-                if std::str::from_utf8(&map).is_ok() {
+                if is_utf8(&map) {
                     return Ok(SourceFile {
                         name,
                         text: Text::Mapped(map),
@@ -167,6 +167,15 @@ impl Clone for Text {
             Text::Mapped(map) => Text::Owned(String::from_utf8_lossy(map).into_owned()),
         }
     }
+}
+
+/// Whether `bytes` are UTF-8, checked a part per core on a large file.
+fn is_utf8(bytes: &[u8]) -> bool {
+    let parts = crate::parallel::parts_for_text(bytes.len());
+    let ranges = crate::parallel::line_ranges(bytes, parts);
+    crate::parallel::map(ranges, |range| std::str::from_utf8(&bytes[range]).is_ok())
+        .into_iter()
+        .all(|valid| valid)
 }
 
 /// Maps `file` read-only, its pages loaded up front (one system call instead of a page
@@ -328,6 +337,18 @@ mod tests {
         assert!(matches!(file.text, Text::Owned(_)));
         assert_eq!(&file.text()[29..32], "r?b");
         assert_eq!(file.invalid_utf8(), &[Span::new(30, 31)]);
+    }
+
+    #[test]
+    fn invalid_utf8_is_found_in_any_part_of_a_large_file() {
+        let mut bytes = "Ùmuntu\n".repeat(1 << 19).into_bytes();
+        assert!(is_utf8(&bytes));
+        // Each offset is the second byte of a `Ù`.
+        for at in [1, bytes.len() / 2 + 1, bytes.len() - 7] {
+            let was = std::mem::replace(&mut bytes[at], b'x');
+            assert!(!is_utf8(&bytes), "at {at}");
+            bytes[at] = was;
+        }
     }
 
     #[test]

@@ -47,7 +47,7 @@ fn build_in_parts<'a>(
     parts: usize,
     out: &mut Diagnostics,
 ) -> KnowledgeBase<'a> {
-    let ranges = parallel::line_ranges(text, parts);
+    let ranges = parallel::line_ranges(text.as_bytes(), parts);
     if ranges.len() > 1 {
         let mut read = parallel::map(ranges, |range| {
             let mut found = Diagnostics::default();

@@ -9,6 +9,10 @@ pub fn words(text: &str) -> impl Iterator<Item = &str> {
 pub fn is_placeholder(text: &str) -> bool {
     // Run on every message: compare in place rather than lowercase a copy.
     let text = text.trim().as_bytes();
+    // Nearly every message is a message: most start with a letter no placeholder starts with.
+    if !matches!(text.first(), Some(b'n' | b'N' | b't' | b'T' | b'-' | b'.')) {
+        return false;
+    }
     // The phrase as a whole: `No message in isiZulu`, but not `No messages are lost`.
     let starts_with_phrase = |phrase: &str| {
         text.len() >= phrase.len()

@@ -1,4 +1,4 @@
-use super::{is_blank, Span};
+use super::{is_blank, next_blank, next_non_blank, Span};
 
 /// The UTF-8 byte-order mark.
 pub const BOM: &str = "\u{FEFF}";
@@ -144,14 +144,12 @@ fn lex_line(
     end: usize,
 ) -> Line {
     // A byte-order mark belongs to the first line's indentation, not to its key.
-    let mut body_start = if start == 0 && bytes.starts_with(BOM.as_bytes()) {
+    let after_bom = if start == 0 && bytes.starts_with(BOM.as_bytes()) {
         BOM.len()
     } else {
         start
     };
-    while body_start < content_end && is_blank(bytes[body_start]) {
-        body_start += 1;
-    }
+    let body_start = next_non_blank(bytes, after_bom, content_end);
     let mut body_end = content_end;
     while body_end > body_start && is_blank(bytes[body_end - 1]) {
         body_end -= 1;
@@ -161,14 +159,8 @@ fn lex_line(
     } else if bytes[body_start] == b'#' {
         Body::Comment(Span::new(body_start, body_end))
     } else {
-        let mut key_end = body_start;
-        while key_end < body_end && !is_blank(bytes[key_end]) {
-            key_end += 1;
-        }
-        let mut args_start = key_end;
-        while args_start < body_end && is_blank(bytes[args_start]) {
-            args_start += 1;
-        }
+        let key_end = next_blank(bytes, body_start, body_end);
+        let args_start = next_non_blank(bytes, key_end, body_end);
         Body::Entry {
             key: Span::new(body_start, key_end),
             args: Span::new(args_start, body_end),

@@ -6,11 +6,14 @@
 //! what lets `fix` and `fmt` change exactly what they mean to. The typed model in
 //! [`crate::model`] is built on top of this layer and never looks at raw bytes itself.
 
+mod blanks;
 mod line;
 mod span;
 
 pub use line::{lines, lines_from, Body, Line, LineEnding, Lines, BOM};
 pub use span::Span;
+
+use blanks::{next_blank, next_non_blank};
 
 /// Space and tab separate the fields of a line; nothing else does.
 pub fn is_blank(byte: u8) -> bool {
@@ -21,6 +24,7 @@ pub fn is_blank(byte: u8) -> bool {
 pub fn tokens(text: &str, offset: usize) -> impl Iterator<Item = (Span, &str)> {
     let bytes = text.as_bytes();
     let mut pos = 0;
+    // A byte loop: tokens are short words and numbers (see `blanks` for long runs).
     std::iter::from_fn(move || {
         while pos < bytes.len() && is_blank(bytes[pos]) {
             pos += 1;

@@ -57,21 +57,50 @@ pub fn check(location: &Location<'_>, out: &mut Diagnostics) {
 fn repeats(text: &str, offset: usize) -> impl Iterator<Item = (Span, Span, &str)> {
     let mut previous: Option<(Span, &str)> = None;
     syntax::tokens(text, offset).filter_map(move |(span, token)| {
-        let word = token.trim_matches(|c: char| !c.is_alphanumeric());
+        let word = trim_to_word(token);
         let repeat = previous
             .filter(|&(_, previous_word)| {
                 same_word(word, previous_word) && word.chars().any(char::is_alphabetic)
             })
             .map(|(previous_span, _)| (previous_span, span, word));
         // `that, that` is meant: a word followed by punctuation starts afresh.
-        let ends_word = token.ends_with(|c: char| c.is_alphanumeric());
-        previous = ends_word.then_some((span, word));
+        previous = ends_in_word(token).then_some((span, word));
         repeat
     })
 }
 
+// Every word of every description and English message passes through the three functions
+// below: each first answers from the ASCII bytes at hand, which is nearly always enough.
+
+/// `token` without the punctuation around it.
+fn trim_to_word(token: &str) -> &str {
+    let bytes = token.as_bytes();
+    match (bytes.first(), bytes.last()) {
+        (Some(first), Some(last))
+            if first.is_ascii_alphanumeric() && last.is_ascii_alphanumeric() =>
+        {
+            token
+        }
+        _ => token.trim_matches(|c: char| !c.is_alphanumeric()),
+    }
+}
+
+fn ends_in_word(token: &str) -> bool {
+    match token.as_bytes().last() {
+        Some(last) if last.is_ascii() => last.is_ascii_alphanumeric(),
+        _ => token.ends_with(char::is_alphanumeric),
+    }
+}
+
 fn same_word(a: &str, b: &str) -> bool {
-    a.eq_ignore_ascii_case(b) || (!a.is_ascii() && a.to_lowercase() == b.to_lowercase())
+    if a.is_ascii() {
+        return a.eq_ignore_ascii_case(b);
+    }
+    // Lowercasing may change the length of a non-ASCII word: compare the lowercase
+    // characters, without making lowercase copies.
+    a.chars()
+        .flat_map(char::to_lowercase)
+        .eq(b.chars().flat_map(char::to_lowercase))
 }
 
 #[cfg(test)]

@@ -30,11 +30,15 @@ declare_rule! {
 /// Reports the first control character in `span`.
 pub fn check(span: Span, text: &str, out: &mut Diagnostics) {
     let value = span.text(text);
-    // Fast path: nearly every value is printable ASCII. A fold without early exit, so
-    // that the compiler vectorises it (this runs on every byte of every value).
-    if !value.bytes().fold(false, |odd, b| {
-        odd | ((b < 0x20 && b != b'\t') | (b >= 0x7f))
-    }) {
+    // Fast path: nearly every value is printable ASCII. Folded into a byte without an
+    // early exit, so that the compiler tests 16 bytes at a time (this runs on every byte of
+    // every value). `b - 0x20 >= 0x5f` is `b < 0x20 || b >= 0x7f`.
+    let suspect = |chunk: &[u8]| {
+        chunk.iter().fold(0u8, |odd, &b| {
+            odd | (u8::from(b.wrapping_sub(0x20) >= 0x5f) & u8::from(b != b'\t'))
+        }) != 0
+    };
+    if !value.as_bytes().chunks(64).any(suspect) {
         return;
     }
     let Some((offset, ch)) = value
