@@ -94,7 +94,7 @@ pub fn main() -> ExitCode {
     };
     match outcome {
         Ok(exit) => exit.into(),
-        Err(error) if error.is_broken_pipe() => commands::Exit::Clean.into(),
+        Err(commands::CommandError::OutputClosed) => commands::Exit::Clean.into(),
         Err(error) => {
             // Errors quote file names and file text: never let them drive the terminal.
             eprintln!("ekb: error: {}", escape(&error.to_string()));

@@ -33,7 +33,7 @@ pub fn ensure_rewritable(source: &SourceFile) -> Result<(), CommandError> {
         return Ok(());
     };
     let position = LineIndex::new(source.text()).position(source.text(), first.start);
-    Err(CommandError(format!(
+    Err(CommandError::Failed(format!(
         "{} is not valid UTF-8 (line {}, column {}): ekb does not rewrite it, as that would lose \
          the bad bytes; save it as UTF-8 and run again",
         escape(source.name()),

@@ -64,7 +64,9 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     match written {
         // A reader that stops early (`ekb check | head`) is not a failure of the check.
         Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => Ok(exit),
-        Err(error) => Err(CommandError(format!("cannot write the report: {error}"))),
+        Err(error) => Err(CommandError::Failed(format!(
+            "cannot write the report: {error}"
+        ))),
         Ok(()) => Ok(exit),
     }
 }

@@ -41,7 +41,7 @@ pub enum DiffFormat {
 pub fn run(args: &Args, context: &Context) -> CommandResult {
     let options = context.read_options()?;
     if args.old.as_os_str() == "-" && args.new.as_os_str() == "-" {
-        return Err(super::CommandError(
+        return Err(super::CommandError::Failed(
             "OLD and NEW cannot both be standard input".into(),
         ));
     }

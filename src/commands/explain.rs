@@ -21,7 +21,7 @@ pub fn run(args: &Args, _context: &Context) -> CommandResult {
             .filter(|&(distance, _)| distance <= 4)
             .map(|(_, name)| format!("; did you mean `{name}`?"))
             .unwrap_or_else(|| "; `ekb rules` lists them".to_string());
-        return Err(CommandError(format!(
+        return Err(CommandError::Failed(format!(
             "no rule named `{}`{nearest}",
             args.rule
         )));

@@ -96,7 +96,8 @@ fn write_output(output: Option<&Path>, value: &impl serde::Serialize) -> Result<
         stdout.flush()?;
         return Ok(());
     };
-    let fail = |reason: String| CommandError(format!("cannot write {}: {reason}", path.display()));
+    let fail =
+        |reason: String| CommandError::Failed(format!("cannot write {}: {reason}", path.display()));
     let dir = match path.parent() {
         Some(parent) if !parent.as_os_str().is_empty() => parent,
         _ => Path::new("."),

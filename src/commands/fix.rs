@@ -83,7 +83,7 @@ fn refuse_inexpressible(source: &SourceFile, target: Dialect) -> Result<(), Comm
     if lines.is_empty() {
         return Ok(());
     }
-    Err(CommandError(format!(
+    Err(CommandError::Failed(format!(
         "cannot migrate {} to the {} dialect: {} {} no equivalent in it; remove {} by hand \
          first if the robot can do without {}",
         escape(source.name()),

@@ -51,8 +51,9 @@ fn format_file(
 ) -> Result<bool, CommandError> {
     let source = context.read(path)?;
     rewrite::ensure_rewritable(&source)?;
-    let cannot =
-        |reason: String| CommandError(format!("cannot format {}: {reason}", escape(source.name())));
+    let cannot = |reason: String| {
+        CommandError::Failed(format!("cannot format {}: {reason}", escape(source.name())))
+    };
     let document = Document::parse(source.text()).map_err(|e| cannot(e.to_string()))?;
     let formatted = document.render();
     // The layout keeps every line and value: reading the result must give the same document.

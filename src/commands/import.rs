@@ -26,12 +26,12 @@ pub fn run(args: &Args, _context: &Context) -> CommandResult {
     let json = SourceFile::read(&args.input)?;
     let name = escape(json.name()).into_owned();
     if !json.invalid_utf8().is_empty() {
-        return Err(CommandError(format!("{name} is not valid UTF-8")));
+        return Err(CommandError::Failed(format!("{name} is not valid UTF-8")));
     }
     let kb = parse(json.text())
-        .map_err(|reason| CommandError(format!("{name}: {}", escape(&reason))))?;
+        .map_err(|reason| CommandError::Failed(format!("{name}: {}", escape(&reason))))?;
     let document = Document::from_export(&kb)
-        .map_err(|error| CommandError(format!("{name}: {}", escape(&error.to_string()))))?;
+        .map_err(|error| CommandError::Failed(format!("{name}: {}", escape(&error.to_string()))))?;
     let text = document.render();
     match &args.output {
         Some(out) if out != Path::new("-") => write_atomically(out, text.as_bytes())?,

@@ -43,24 +43,21 @@ impl From<Exit> for ExitCode {
     }
 }
 
-/// Why a command could not do its job: one line for standard error, exit code 2.
+/// Why a command stopped before the end of its job.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct CommandError(pub String);
+pub enum CommandError {
+    /// It could not do its job: one line for standard error, exit code 2.
+    Failed(String),
+    /// Whoever read its output went away (`ekb … | head`): not a failure of `ekb`.
+    OutputClosed,
+}
 
 impl std::fmt::Display for CommandError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.0)
-    }
-}
-
-impl CommandError {
-    /// Whoever read our output went away (`ekb … | head`): not a failure of `ekb`.
-    pub fn broken_pipe() -> CommandError {
-        CommandError(String::new())
-    }
-
-    pub fn is_broken_pipe(&self) -> bool {
-        self.0.is_empty()
+        match self {
+            CommandError::Failed(message) => f.write_str(message),
+            CommandError::OutputClosed => f.write_str("the output was closed"),
+        }
     }
 }
 
@@ -68,9 +65,9 @@ impl<E: std::error::Error + 'static> From<E> for CommandError {
     fn from(error: E) -> CommandError {
         let io_error = (&error as &dyn std::error::Error).downcast_ref::<std::io::Error>();
         if io_error.is_some_and(|e| e.kind() == std::io::ErrorKind::BrokenPipe) {
-            return CommandError::broken_pipe();
+            return CommandError::OutputClosed;
         }
-        CommandError(error.to_string())
+        CommandError::Failed(error.to_string())
     }
 }
 
