@@ -2,12 +2,12 @@
 //!
 //! A huge or broken file can have millions of findings of one rule (a binary file has an
 //! `unknown-key` on nearly every line, each finding a few hundred bytes). So that memory
-//! stays bounded, at most [`MAX_KEPT_PER_RULE`] findings of each rule are kept in
-//! [`Checked::diagnostics`] (the first ones, in the order the rules find them; `ekb fix`
-//! therefore applies at most that many fixes of one rule per run). What is *shown*
-//! ([`Checked::shown`]) is capped lower, at [`MAX_SHOWN_PER_RULE`] of each rule, followed by
-//! one note saying how many more there are. Every output format shows the same capped list,
-//! so output stays bounded whatever the input.
+//! stays bounded, only the first findings of each rule are kept in [`Checked::diagnostics`]
+//! (in the order the rules find them; see [`kept_at_most`]). What is *shown*
+//! ([`Checked::shown`]) is capped at [`MAX_SHOWN_PER_RULE`] of each rule, followed by one
+//! note saying how many more there are. Every output format shows the same capped list, so
+//! output stays bounded whatever the input. Of a rule that `ekb fix` can fix, up to
+//! [`MAX_KEPT_PER_RULE`] are kept, so that one run of `fix` applies that many fixes.
 
 use crate::diagnostic::{Diagnostic, Summary};
 use crate::model::build::{build, Options};
@@ -18,15 +18,28 @@ use crate::source::SourceFile;
 /// The most findings of one rule shown for one file; the rest are summed up in a note.
 pub const MAX_SHOWN_PER_RULE: usize = 1000;
 
-/// The most findings of one rule kept in memory for one file; the rest are only counted.
+/// The most findings of one fixable rule kept in memory for one file; the rest are only
+/// counted.
 pub const MAX_KEPT_PER_RULE: usize = 10_000;
+
+/// How many findings of `rule` are kept for one file: those shown and the first one not
+/// shown (where the "… and N more" note stands), or for a fixable rule, the fixes one run
+/// of `ekb fix` applies. Keeping no more than that matters on a large file: every location
+/// past the 20 the tour can visit has an `unused-location` note.
+pub fn kept_at_most(rule: &Rule) -> usize {
+    if rule.fixable {
+        MAX_KEPT_PER_RULE
+    } else {
+        MAX_SHOWN_PER_RULE + 1
+    }
+}
 
 /// A checked file: what the robot would load, and what is wrong with it.
 #[derive(Debug)]
 pub struct Checked<'a> {
     pub source: &'a SourceFile,
     pub kb: KnowledgeBase<'a>,
-    /// The findings (at most [`MAX_KEPT_PER_RULE`] of each rule), sorted by position.
+    /// The findings (at most [`kept_at_most`] of each rule), sorted by position.
     pub diagnostics: Vec<Diagnostic>,
     /// For each rule with more than [`MAX_SHOWN_PER_RULE`] findings, a note
     /// "… and N more", placed where the first finding not shown is.
@@ -44,7 +57,7 @@ impl Checked<'_> {
         };
         self.diagnostics.iter().for_each(|d| summary.add(d));
         for (rule, count) in &self.counts.0 {
-            let dropped = count.saturating_sub(MAX_KEPT_PER_RULE);
+            let dropped = count.saturating_sub(kept_at_most(rule));
             match rule.severity {
                 crate::Severity::Error => summary.errors += dropped,
                 crate::Severity::Warning => summary.warnings += dropped,
@@ -111,7 +124,7 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
     }
 }
 
-/// Where the rules report their findings: it keeps the first [`MAX_KEPT_PER_RULE`] of each
+/// Where the rules report their findings: it keeps the first [`kept_at_most`] of each
 /// rule, in the order reported, and only counts the others, so that memory stays bounded on
 /// any input. A rule that can find something on every line or location makes its findings
 /// through [`Diagnostics::push_with`], so that those past the cap are never even built
@@ -126,14 +139,14 @@ pub struct Diagnostics {
 impl Diagnostics {
     /// Reports a finding.
     pub fn push(&mut self, diagnostic: Diagnostic) {
-        if self.counts.bump(diagnostic.rule) <= MAX_KEPT_PER_RULE {
+        if self.counts.bump(diagnostic.rule) <= kept_at_most(diagnostic.rule) {
             self.kept.push(diagnostic);
         }
     }
 
     /// Reports a finding of `rule`, made by `make` only if it is kept.
     pub fn push_with(&mut self, rule: &'static Rule, make: impl FnOnce() -> Diagnostic) {
-        if self.counts.bump(rule) <= MAX_KEPT_PER_RULE {
+        if self.counts.bump(rule) <= kept_at_most(rule) {
             let diagnostic = make();
             debug_assert!(std::ptr::eq(diagnostic.rule, rule), "{}", rule.name);
             self.kept.push(diagnostic);
@@ -146,7 +159,8 @@ impl Diagnostics {
     pub fn append(&mut self, later: Diagnostics) {
         let mut taken = RuleCounts::default();
         for diagnostic in later.kept {
-            if self.counts.get(diagnostic.rule) + taken.bump(diagnostic.rule) <= MAX_KEPT_PER_RULE {
+            let rule = diagnostic.rule;
+            if self.counts.get(rule) + taken.bump(rule) <= kept_at_most(rule) {
                 self.kept.push(diagnostic);
             }
         }
@@ -265,14 +279,15 @@ mod tests {
     #[test]
     fn findings_beyond_what_is_kept_are_only_counted() {
         let lines = MAX_KEPT_PER_RULE + 7;
-        let text = "x\n".repeat(lines);
+        let text = "x \n".repeat(lines);
         let source = SourceFile::from_bytes("t", text.into_bytes());
         let checked = check(&source, &Options::default());
-        let unknown = checked
-            .diagnostics
-            .iter()
-            .filter(|d| d.rule.name == "unknown-key");
-        assert_eq!(unknown.count(), MAX_KEPT_PER_RULE);
+        let kept = |name| {
+            let of_rule = |d: &&Diagnostic| d.rule.name == name;
+            checked.diagnostics.iter().filter(of_rule).count()
+        };
+        assert_eq!(kept("unknown-key"), MAX_SHOWN_PER_RULE + 1);
+        assert_eq!(kept("trailing-whitespace"), MAX_KEPT_PER_RULE, "fixable");
         assert_eq!(
             checked.summary().errors,
             lines + 1,
@@ -285,7 +300,7 @@ mod tests {
 
     #[test]
     fn findings_past_the_cap_are_counted_but_never_made() {
-        let rule = rules::ALL[0];
+        let rule = &rules::content::trailing_whitespace::TRAILING_WHITESPACE;
         let mut out = Diagnostics::default();
         let mut made = 0;
         for _ in 0..MAX_KEPT_PER_RULE + 3 {
@@ -297,6 +312,27 @@ mod tests {
         out.count(rule, 4);
         assert_eq!((made, out.len()), (MAX_KEPT_PER_RULE, MAX_KEPT_PER_RULE));
         assert_eq!(out.counts.get(rule), MAX_KEPT_PER_RULE + 7);
+    }
+
+    #[test]
+    fn appended_findings_keep_the_first_ones_and_count_all() {
+        let rule = &rules::tour::unused_location::UNUSED_LOCATION;
+        let findings = |from: usize, n: usize| {
+            let mut out = Diagnostics::default();
+            for start in from..from + n {
+                out.push(Diagnostic::new(
+                    rule,
+                    crate::syntax::Span::new(start, start + 1),
+                    "x",
+                ));
+            }
+            out
+        };
+        let mut out = findings(0, 600);
+        out.append(findings(600, 700));
+        let starts: Vec<u32> = out.iter().map(|d| d.span.start).collect();
+        assert_eq!(starts, (0..=MAX_SHOWN_PER_RULE as u32).collect::<Vec<_>>());
+        assert_eq!(out.counts.get(rule), 1300);
     }
 
     #[test]
@@ -326,7 +362,8 @@ mod tests {
         let source = SourceFile::from_bytes("t", text.into_bytes());
         let checked = check(&source, &Options::default());
         let unknown = |d: &&Diagnostic| d.rule.name == "unknown-key";
-        assert_eq!(checked.diagnostics.iter().filter(unknown).count(), lines);
+        let kept = checked.diagnostics.iter().filter(unknown).count();
+        assert_eq!(kept, MAX_SHOWN_PER_RULE + 1);
         let shown: Vec<&Diagnostic> = checked.shown().filter(unknown).collect();
         assert_eq!(shown.len(), MAX_SHOWN_PER_RULE + 1);
         let note = shown.last().unwrap();

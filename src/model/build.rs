@@ -67,6 +67,9 @@ fn build_in_parts<'a>(
     Builder::read(text, options, 0..text.len(), out).finish(out)
 }
 
+/// How many locations [`Builder::join`] moves between giving memory back.
+const JOIN_STEP: usize = 4096;
+
 struct Builder<'a> {
     text: &'a str,
     options: Options,
@@ -125,7 +128,15 @@ impl<'a> Builder<'a> {
             return false;
         }
         self.tour = self.tour.take().or(later.tour);
-        for location in later.locations {
+        // The largest thing a part holds is its locations. They are taken from the end of
+        // the reversed list (so in file order), which gives its memory back as it shrinks,
+        // so that the two parts' locations are never all held twice.
+        let mut rest = later.locations;
+        rest.reverse();
+        while let Some(location) = rest.pop() {
+            if rest.len() % JOIN_STEP == 0 {
+                rest.shrink_to_fit();
+            }
             match self.find(location.id) {
                 Some(index) => {
                     if !self.locations[index].join(location) {

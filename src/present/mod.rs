@@ -221,11 +221,7 @@ impl TourPositions {
 /// Tells the user, on standard error, that the file has errors, so that a view that looks
 /// incomplete (a missing message, a pose at 0) is not taken for the whole story.
 pub fn note_errors(checked: &Checked<'_>, quiet: bool) {
-    let errors = checked
-        .diagnostics
-        .iter()
-        .filter(|d| d.severity() == crate::Severity::Error)
-        .count();
+    let errors = checked.summary().errors;
     if errors > 0 && !quiet {
         let plural = if errors == 1 { "" } else { "s" };
         eprintln!(
