@@ -181,6 +181,22 @@ impl<'a> Document<'a> {
         out
     }
 
+    /// Whether `text` is this document's [`render`](Self::render) already (the usual case of
+    /// `ekb fmt --check`), found without writing the whole text: each line is written into
+    /// one small buffer and compared.
+    pub fn renders_as(&self, text: &str) -> bool {
+        let mut line = String::new();
+        let mut rest = text.as_bytes();
+        let mut same = true;
+        self.walk(|item| {
+            line.clear();
+            push_item(&mut line, item);
+            same = same && rest.starts_with(line.as_bytes());
+            rest = rest.get(line.len()..).unwrap_or_default();
+        });
+        same && rest.is_empty()
+    }
+
     /// Whether reading `formatted` (this document's [`render`](Self::render)) back would
     /// give this document again: every line reads as exactly the line that was written there.
     /// That is what [`parse`](Self::parse) would compare, line by line, without a second
@@ -369,7 +385,9 @@ mod tests {
         let document = Document::parse(text).unwrap();
         let formatted = document.render();
         assert!(document.reads_back_from(&formatted));
+        assert!(document.renders_as(&formatted));
         assert!(!document.reads_back_from(text));
+        assert!(!document.renders_as(text));
         for changed in [
             formatted.replace("1 2 3", "1 2 4"),
             formatted.replace("# c", "# d"),
@@ -384,6 +402,7 @@ mod tests {
             formatted.replace("# end\n", "# end\r\r\n"),
         ] {
             assert!(!document.reads_back_from(&changed), "{changed:?}");
+            assert!(!document.renders_as(&changed), "{changed:?}");
         }
     }
 

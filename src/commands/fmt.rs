@@ -1,5 +1,6 @@
 //! `ekb fmt [FILE...] [--check]`: rewrite files in the canonical layout ([`crate::canonical`]).
 
+use std::borrow::Cow;
 use std::path::{Path, PathBuf};
 
 use super::{CommandError, CommandResult, Context, Exit};
@@ -54,7 +55,11 @@ fn format_file(
     let cannot =
         |reason: String| CommandError(format!("cannot format {}: {reason}", escape(source.name())));
     let document = Document::parse(source.text()).map_err(|e| cannot(e.to_string()))?;
-    let formatted = document.render();
+    let formatted = if document.renders_as(source.text()) {
+        Cow::Borrowed(source.text())
+    } else {
+        Cow::Owned(document.render())
+    };
     // The layout keeps every line and value: reading the result must give the same document
     // (checked line by line, without reading a second one).
     if !document.reads_back_from(&formatted) {
