@@ -1,6 +1,5 @@
 //! `ekb fmt [FILE...] [--check]`: rewrite files in the canonical layout ([`crate::canonical`]).
 
-use std::borrow::Cow;
 use std::path::{Path, PathBuf};
 
 use super::{CommandError, CommandResult, Context, Exit};
@@ -55,11 +54,11 @@ fn format_file(
     let cannot =
         |reason: String| CommandError(format!("cannot format {}: {reason}", escape(source.name())));
     let document = Document::parse(source.text()).map_err(|e| cannot(e.to_string()))?;
-    let formatted = if document.renders_as(source.text()) {
-        Cow::Borrowed(source.text())
-    } else {
-        Cow::Owned(document.render())
-    };
+    if document.renders_as(source.text()) {
+        // Already canonical: reading it back is reading the file again, which gave `document`.
+        return rewrite::deliver(path, &source, source.text(), mode, style);
+    }
+    let formatted = document.render();
     // The layout keeps every line and value: reading the result must give the same document
     // (checked line by line, without reading a second one).
     if !document.reads_back_from(&formatted) {
