@@ -85,8 +85,8 @@ pub struct Document<'a> {
 /// written with one space between.
 #[derive(Debug, Clone, Copy)]
 struct Entry {
-    /// The comments above it end at `comments[comments_end]` and start where the previous
-    /// entry's end (or after the header).
+    /// The comments above it are `comments[start..comments_end]`, `start` being the
+    /// previous entry's `comments_end` (for the first entry, the end of the header).
     comments_end: u32,
     key: Span,
     id: Option<Span>,
@@ -218,10 +218,9 @@ impl<'a> Document<'a> {
         let mut sections = 0;
         let mut visit = |item: Item<'_>, new_section: bool| {
             if new_section {
-                if sections > 0 {
-                    visit(Item::Blank);
-                } else if item.starts_with_byte_order_mark() {
-                    // At the very start of a file it would be read as a byte-order mark.
+                // Sections are apart; and a first line starting with U+FEFF would be read as a
+                // byte-order mark.
+                if sections > 0 || item.starts_with_byte_order_mark() {
                     visit(Item::Blank);
                 }
                 sections += 1;
