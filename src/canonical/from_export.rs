@@ -8,10 +8,10 @@ use std::borrow::Cow;
 use std::collections::HashMap;
 use std::fmt;
 
-use super::{Block, Document, Entry};
+use super::{Document, Entry};
 use crate::model::export::{ExportedKnowledgeBase, ExportedLocation, ExportedMessages};
 use crate::model::{Dialect, Key, Language, Phase};
-use crate::syntax::is_blank;
+use crate::syntax::{is_blank, Span};
 
 /// Numbers whose plain decimal form is longer than this are written with an exponent.
 const LONGEST_PLAIN_NUMBER: usize = 24;
@@ -38,7 +38,7 @@ impl<'a> Document<'a> {
     pub fn from_export(kb: &'a ExportedKnowledgeBase) -> Result<Document<'a>, ImportError> {
         let pose_key = kb.dialect.unwrap_or(Dialect::Current).pose_key();
         let mut seen: HashMap<u32, usize> = HashMap::new();
-        let mut document = Document::default();
+        let mut writer = Writer::default();
         for (index, location) in kb.locations.iter().enumerate() {
             let path = format!("locations[{index}]");
             check_id(location.id, &format!("{path}.id"))?;
@@ -51,7 +51,7 @@ impl<'a> Document<'a> {
                     ),
                 ));
             }
-            document.blocks.push(block(location, pose_key, &path)?);
+            writer.block(location.id, &values(location, pose_key, &path)?);
         }
         if let Some(stops) = &kb.tour {
             for (index, &id) in stops.iter().enumerate() {
@@ -61,22 +61,70 @@ impl<'a> Document<'a> {
                 .chain(stops.iter().copied())
                 .map(|n| n.to_string())
                 .collect();
-            document.tour.push(Entry {
-                comments: Vec::new(),
-                key: Key::TourSpecification.name().into(),
-                id: None,
-                value: items.join(" ").into(),
-            });
+            writer.tour(&items.join(" "));
         }
-        Ok(document)
+        Ok(writer.into())
     }
 }
 
-fn block<'a>(
+/// Builds a [`Document`] of its own text: every key, id and value written once, as a span.
+#[derive(Default)]
+struct Writer {
+    document: Document<'static>,
+    text: String,
+}
+
+impl Writer {
+    fn span(&mut self, part: &str) -> Span {
+        let start = self.text.len();
+        self.text.push_str(part);
+        Span::new(start, self.text.len())
+    }
+
+    fn entry(&mut self, key: Key, id: Option<Span>, value: &str) -> u32 {
+        let entry = Entry {
+            comments_end: 0,
+            key: self.span(key.name()),
+            id,
+            value: self.span(value),
+        };
+        self.document.entries.push(entry);
+        self.document.entries.len() as u32 - 1
+    }
+
+    /// A location's block, its lines in canonical order.
+    fn block(&mut self, id: u32, values: &[(Key, Cow<'_, str>)]) {
+        let id = Some(self.span(&id.to_string()));
+        for (key, value) in values {
+            let index = self.entry(*key, id, value);
+            self.document.order.push(index);
+        }
+        self.document
+            .block_ends
+            .push(self.document.order.len() as u32);
+    }
+
+    fn tour(&mut self, value: &str) {
+        let index = self.entry(Key::TourSpecification, None, value);
+        self.document.tour.push(index);
+    }
+}
+
+impl From<Writer> for Document<'static> {
+    fn from(writer: Writer) -> Document<'static> {
+        Document {
+            text: Cow::Owned(writer.text),
+            ..writer.document
+        }
+    }
+}
+
+/// A location's values, in canonical order.
+fn values<'a>(
     location: &'a ExportedLocation,
     pose_key: Key,
     path: &str,
-) -> Result<Block<'a>, ImportError> {
+) -> Result<Vec<(Key, Cow<'a, str>)>, ImportError> {
     let mut values: Vec<(Key, Cow<'a, str>)> = Vec::new();
     if let Some(description) = &location.description {
         let at = format!("{path}.description");
@@ -124,18 +172,7 @@ fn block<'a>(
             ),
         ));
     }
-    let id: Cow<'a, str> = location.id.to_string().into();
-    Ok(Block {
-        entries: values
-            .into_iter()
-            .map(|(key, value)| Entry {
-                comments: Vec::new(),
-                key: key.name().into(),
-                id: Some(id.clone()),
-                value,
-            })
-            .collect(),
-    })
+    Ok(values)
 }
 
 fn message(messages: &ExportedMessages, language: Language) -> Option<&String> {

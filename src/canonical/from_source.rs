@@ -10,12 +10,12 @@ use std::borrow::Cow;
 use std::collections::HashMap;
 use std::fmt;
 
-use super::{Block, Document, Entry};
+use super::{known_key, slot, Document, Entry, Written};
 use crate::model::build::{parse_id, tour_items};
 use crate::model::{Key, ValueKind};
 use crate::render::escape::escape;
 use crate::rewrite::name_lines;
-use crate::syntax::{self, Body, Span};
+use crate::syntax::{self, Body, Line, Span};
 
 /// Lines ending in a carriage return that is not part of a CRLF: written before the
 /// layout's LF, it would turn into a line ending and vanish from the value.
@@ -42,15 +42,16 @@ impl std::error::Error for Unformattable {}
 impl<'a> Document<'a> {
     /// Lays out the lines of `text` canonically.
     pub fn parse(text: &'a str) -> Result<Document<'a>, Unformattable> {
-        let mut document = Document::default();
-        let mut blocks: HashMap<u32, usize> = HashMap::new();
-        let mut pending: Vec<Cow<'a, str>> = Vec::new();
+        let mut document = Document {
+            text: Cow::Borrowed(text),
+            ..Document::default()
+        };
+        let mut blocks: HashMap<u32, u32> = HashMap::new();
+        let mut located: Vec<Located> = Vec::new();
         let mut seen_entry = false;
         let mut stray_returns = Vec::new();
         for line in syntax::lines(text) {
-            if line.body != Body::Blank
-                && text.as_bytes()[line.trailing.start as usize - 1] == b'\r'
-            {
+            if ends_in_stray_return(text, &line) {
                 let content: String = line
                     .content()
                     .text(text)
@@ -64,52 +65,44 @@ impl<'a> Document<'a> {
             let (key, args) = match line.body {
                 Body::Blank => {
                     if !seen_entry {
-                        document.header.append(&mut pending);
+                        document.header = document.comments.len() as u32;
                     }
                     continue;
                 }
                 Body::Comment(comment) => {
-                    pending.push(comment.text(text).into());
+                    document.comments.push(comment);
                     continue;
                 }
-                Body::Entry { key, args } => (key.text(text), args),
+                Body::Entry { key, args } => (key, args),
             };
             seen_entry = true;
-            let comments = std::mem::take(&mut pending);
-            let known = Key::from_name_ignoring_case(key);
-            if known == Some(Key::TourSpecification) {
-                let items = args.text(text);
-                document.tour.push(Entry {
-                    comments,
-                    key: key.into(),
-                    id: None,
-                    value: single_spaced(items, tour_items(items, 0).map(|(_, item)| item)),
-                });
-                continue;
-            }
-            let Some((id, id_text, value)) = split_id(text, args) else {
-                document.unplaced.push(Entry {
-                    comments,
-                    key: key.into(),
-                    id: None,
-                    value: args.text(text).into(),
-                });
-                continue;
-            };
-            let value = match known.map(Key::value_kind) {
-                Some(ValueKind::Pose | ValueKind::Point) => {
-                    single_spaced(value, syntax::tokens(value, 0).map(|(_, token)| token))
+            let index = document.entries.len() as u32;
+            let read = read(text, key, args);
+            let (id, value) = match read.place {
+                Place::Tour(value) => {
+                    document.tour.push(index);
+                    (None, value)
                 }
-                _ => value.into(),
+                Place::Unplaced(value) => {
+                    document.unplaced.push(index);
+                    (None, value.into())
+                }
+                Place::Located { id, id_text, value } => {
+                    let next = blocks.len() as u32;
+                    let block = *blocks.entry(id).or_insert(next);
+                    located.push(Located {
+                        entry: index,
+                        block,
+                        slot: slot(read.known),
+                    });
+                    (Some(Span::of(id_text, text)), value)
+                }
             };
-            let index = *blocks.entry(id).or_insert_with(|| {
-                document.blocks.push(Block::default());
-                document.blocks.len() - 1
-            });
-            document.blocks[index].entries.push(Entry {
-                comments,
-                key: key.into(),
-                id: Some(id_text.into()),
+            let value = document.span_of(value);
+            document.entries.push(Entry {
+                comments_end: document.comments.len() as u32,
+                key,
+                id,
                 value,
             });
         }
@@ -118,31 +111,143 @@ impl<'a> Document<'a> {
                 lines: stray_returns,
             });
         }
-        document.blocks.iter_mut().for_each(Block::sort);
-        document.footer = pending;
         if !seen_entry {
-            // Without entries there is nothing to set a header apart from.
-            let footer = std::mem::take(&mut document.footer);
-            document.footer = std::mem::take(&mut document.header);
-            document.footer.extend(footer);
+            // Without entries there is nothing to set a header apart from: it is all footer.
+            document.header = 0;
         }
+        (document.order, document.block_ends) = arrange(&located, blocks.len());
         Ok(document)
     }
 }
 
-/// The id of a location line, its text, and the value after it (possibly empty).
-fn split_id(text: &str, args: Span) -> Option<(u32, &str, &str)> {
-    let args_text = args.text(text);
-    let mut tokens = syntax::tokens(args_text, 0);
-    let (id_span, id_text) = tokens.next()?;
+/// A line that goes to a location's block.
+struct Located {
+    /// Its index in the document's entries.
+    entry: u32,
+    /// Its block, numbered in order of first appearance.
+    block: u32,
+    /// Where it goes inside the block.
+    slot: u8,
+}
+
+/// The located entries in canonical order, and where each block ends in it: grouped by block
+/// by a counting sort (linear), then each block in key order, keeping the order of equal
+/// keys (a block is usually in order already, and small).
+fn arrange(located: &[Located], block_count: usize) -> (Vec<u32>, Vec<u32>) {
+    let mut starts = vec![0u32; block_count + 1];
+    for line in located {
+        starts[line.block as usize + 1] += 1;
+    }
+    for block in 0..block_count {
+        starts[block + 1] += starts[block];
+    }
+    let ends = starts[1..].to_vec();
+    // Positions in `located` first, to sort by slot; entries once sorted.
+    let mut order = vec![0u32; located.len()];
+    for (position, line) in located.iter().enumerate() {
+        let at = &mut starts[line.block as usize];
+        order[*at as usize] = position as u32;
+        *at += 1;
+    }
+    let mut start = 0;
+    for &end in &ends {
+        let block = &mut order[start as usize..end as usize];
+        let slot = |&position: &u32| located[position as usize].slot;
+        if !block.is_sorted_by_key(slot) {
+            block.sort_by_key(slot);
+        }
+        start = end;
+    }
+    order
+        .iter_mut()
+        .for_each(|position| *position = located[*position as usize].entry);
+    (order, ends)
+}
+
+/// Whether a line that is not blank ends in a carriage return that is not part of a CRLF.
+pub(super) fn ends_in_stray_return(text: &str, line: &Line) -> bool {
+    line.body != Body::Blank && text.as_bytes()[line.trailing.start as usize - 1] == b'\r'
+}
+
+/// How an entry line reads: its key, and where it goes with what value.
+pub(super) struct Read<'t> {
+    known: Option<Key>,
+    place: Place<'t>,
+}
+
+pub(super) enum Place<'t> {
+    /// A `tourSpecification` line, its items single-spaced.
+    Tour(Cow<'t, str>),
+    /// A line of location `id`, written `id_text`, with its value as the layout writes it.
+    Located {
+        id: u32,
+        id_text: &'t str,
+        value: Cow<'t, str>,
+    },
+    /// A line without a valid id, and everything after its key.
+    Unplaced(&'t str),
+}
+
+impl Read<'_> {
+    /// Whether this is the line `written`.
+    pub(super) fn is(&self, written: Written<'_>) -> bool {
+        match &self.place {
+            Place::Tour(value) => written.tour && written.id.is_none() && value == written.value,
+            Place::Located { id_text, value, .. } => {
+                !written.tour && written.id == Some(id_text) && value == written.value
+            }
+            Place::Unplaced(value) => {
+                !written.tour && written.id.is_none() && *value == written.value
+            }
+        }
+    }
+}
+
+/// Reads the entry line `key args` of `text`.
+pub(super) fn read(text: &str, key: Span, args: Span) -> Read<'_> {
+    let known = known_key(key.text(text));
+    let args = args.text(text);
+    let place = if known == Some(Key::TourSpecification) {
+        Place::Tour(single_spaced(args, || tour_items(args, 0)))
+    } else if let Some((id, id_text, value)) = split_id(args) {
+        let value = match known.map(Key::value_kind) {
+            Some(ValueKind::Pose | ValueKind::Point) => {
+                single_spaced(value, || syntax::tokens(value, 0))
+            }
+            _ => value.into(),
+        };
+        Place::Located { id, id_text, value }
+    } else {
+        Place::Unplaced(args)
+    };
+    Read { known, place }
+}
+
+/// The id of a location line's arguments, its text, and the value after it (possibly empty).
+fn split_id(args: &str) -> Option<(u32, &str, &str)> {
+    let (id_span, id_text) = syntax::tokens(args, 0).next()?;
     let id = parse_id(id_text)?;
-    let value = args_text[id_span.end as usize..].trim_start_matches([' ', '\t']);
+    let value = args[id_span.end as usize..].trim_start_matches([' ', '\t']);
     Some((id, id_text, value))
 }
 
-/// `items` joined by single spaces; borrowed when `text` already is exactly that.
-fn single_spaced<'a>(text: &'a str, items: impl Iterator<Item = &'a str>) -> Cow<'a, str> {
-    let joined = items.collect::<Vec<_>>().join(" ");
+/// The `items` of `text` (with their spans in it) joined by single spaces; borrowed when
+/// `text` already is exactly that, as almost always: then nothing is allocated.
+fn single_spaced<'t, I>(text: &'t str, items: impl Fn() -> I) -> Cow<'t, str>
+where
+    I: Iterator<Item = (Span, &'t str)>,
+{
+    let mut end = None;
+    let aligned = items().all(|(span, _)| {
+        let at = end.map_or(0, |end| end + 1);
+        let follows = end.is_none_or(|end| text.as_bytes()[end] == b' ');
+        end = Some(span.end as usize);
+        follows && span.start as usize == at
+    });
+    if aligned && end.unwrap_or(0) == text.len() {
+        return Cow::Borrowed(text);
+    }
+    let joined = items().map(|(_, item)| item).collect::<Vec<_>>().join(" ");
     if joined == text {
         Cow::Borrowed(text)
     } else {

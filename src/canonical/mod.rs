@@ -32,9 +32,11 @@ pub use from_export::ImportError;
 pub use from_source::Unformattable;
 
 use std::borrow::Cow;
+use std::ops::Range;
 
 use crate::model::Key;
 use crate::rules::compat::compat_line_too_long::LINE_BUFFER;
+use crate::syntax::Span;
 
 /// The column (1-based) where a location line's id starts.
 pub const VALUE_COLUMN: usize = 31;
@@ -43,121 +45,249 @@ pub const VALUE_COLUMN: usize = 31;
 const BYTE_ORDER_MARK: char = '\u{feff}';
 
 /// The slot of a key that is no known key, even ignoring case: after every known key.
-const UNKNOWN_SLOT: usize = Key::CulturalKnowledge as usize + 1;
+const UNKNOWN_SLOT: u8 = Key::CulturalKnowledge as u8 + 1;
+
+/// The widest padding a key gets (`VALUE_COLUMN - 1` spaces, for a key of one character).
+const PADDING: &str = "                              ";
 
 /// A knowledge base as lines to write, in canonical order (see the module documentation).
-#[derive(Debug, Clone, Default, PartialEq, Eq)]
+///
+/// Lean on purpose (`ekb fmt` holds one for a whole file): every key, id, value and comment
+/// is a [`Span`] of `text`, and all entries live in one vector in file order; the blocks are
+/// ranges of `order`, a permutation of that vector. A span that starts at or after the end of
+/// `text` is a span of `rewritten` (positions continuing after `text`), for the few values
+/// the layout rewrites.
+#[derive(Debug, Clone, Default)]
 pub struct Document<'a> {
-    /// Comments at the top of the file, apart from any entry.
-    pub header: Vec<Cow<'a, str>>,
-    /// Entries without a valid id, as written: no block is theirs, so they come first, where
-    /// they are seen.
-    pub unplaced: Vec<Entry<'a>>,
-    /// One per location, in order of first appearance.
-    pub blocks: Vec<Block<'a>>,
+    /// What the spans are spans of: the file (`parse`) or the values of an export.
+    text: Cow<'a, str>,
+    /// Values that are not in `text` as written (re-spaced numbers and tour items).
+    rewritten: String,
+    /// Every comment, in file order: the header's, each entry's, the footer's.
+    comments: Vec<Span>,
+    /// `comments[..header]`: comments at the top of the file, apart from any entry.
+    header: u32,
+    /// Every entry, in file order.
+    entries: Vec<Entry>,
+    /// Entries without a valid id, as written: no block is theirs, so they come first,
+    /// where they are seen.
+    unplaced: Vec<u32>,
+    /// The located entries, block after block (one per location, in order of first
+    /// appearance), each block in key order.
+    order: Vec<u32>,
+    /// Where each block ends in `order`.
+    block_ends: Vec<u32>,
     /// The `tourSpecification` lines, in file order (the last wins on the robot).
-    pub tour: Vec<Entry<'a>>,
-    /// Comments after the last entry.
-    pub footer: Vec<Cow<'a, str>>,
+    tour: Vec<u32>,
 }
 
-/// The lines of one location.
-#[derive(Debug, Clone, Default, PartialEq, Eq)]
-pub struct Block<'a> {
-    pub entries: Vec<Entry<'a>>,
-}
-
-/// One `key id value` line, with the comments above it. The tour and unplaced lines have no
-/// id: their key and value are written with one space between.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Entry<'a> {
-    pub comments: Vec<Cow<'a, str>>,
-    pub key: Cow<'a, str>,
-    pub id: Option<Cow<'a, str>>,
+/// One `key id value` line. The tour and unplaced lines have no id: their key and value are
+/// written with one space between.
+#[derive(Debug, Clone, Copy)]
+struct Entry {
+    /// The comments above it are `comments[start..comments_end]`, `start` being the
+    /// previous entry's `comments_end` (for the first entry, the end of the header).
+    comments_end: u32,
+    key: Span,
+    id: Option<Span>,
     /// Everything after the id, as it will be written (may be empty).
-    pub value: Cow<'a, str>,
+    value: Span,
 }
 
-impl Entry<'_> {
-    /// Where the line goes inside its block.
-    fn slot(&self) -> usize {
-        Key::from_name_ignoring_case(&self.key).map_or(UNKNOWN_SLOT, Key::order)
+/// One line of the canonical text, as the layout writes it and as reading it back must
+/// see it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Item<'d> {
+    Blank,
+    Comment(&'d str),
+    Entry(Written<'d>),
+}
+
+/// An entry as written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Written<'d> {
+    key: &'d str,
+    id: Option<&'d str>,
+    value: &'d str,
+    /// A `tourSpecification` line (which has no id either).
+    tour: bool,
+}
+
+impl Item<'_> {
+    fn starts_with_byte_order_mark(self) -> bool {
+        match self {
+            Item::Blank => false,
+            Item::Comment(text) => text.starts_with(BYTE_ORDER_MARK),
+            Item::Entry(entry) => entry.key.starts_with(BYTE_ORDER_MARK),
+        }
     }
 }
 
-impl Block<'_> {
-    /// Puts the entries in canonical key order, keeping the order of equal keys. Each slot
-    /// is found once (a key lookup ignoring case): a block is usually sorted already, and
-    /// `sort_by_key` would look up both keys of every comparison.
-    fn sort(&mut self) {
-        self.entries.sort_by_cached_key(Entry::slot);
-    }
+/// Where a key goes inside its block: SPEC §1's order, a key in the wrong case as the key it
+/// means, an unknown key last.
+fn slot(known: Option<Key>) -> u8 {
+    known.map_or(UNKNOWN_SLOT, |key| key.order() as u8)
 }
 
-impl Document<'_> {
+/// The key `name` means, ignoring case; the exact spelling (almost every line) is looked up
+/// first, by a `match`.
+fn known_key(name: &str) -> Option<Key> {
+    Key::from_name(name).or_else(|| Key::from_name_ignoring_case(name))
+}
+
+impl<'a> Document<'a> {
+    /// The text of a span of this document.
+    fn str(&self, span: Span) -> &str {
+        let base = self.text.len();
+        if span.end as usize <= base {
+            span.text(&self.text)
+        } else {
+            &self.rewritten[span.start as usize - base..span.end as usize - base]
+        }
+    }
+
+    /// The span of `value`, kept as a slice of `text` when it is one.
+    fn span_of(&mut self, value: Cow<'_, str>) -> Span {
+        match value {
+            Cow::Borrowed(slice) if is_within(slice, &self.text) => Span::of(slice, &self.text),
+            value => {
+                let start = self.text.len() + self.rewritten.len();
+                self.rewritten.push_str(&value);
+                Span::new(start, start + value.len())
+            }
+        }
+    }
+
+    /// The comments above `entries[index]`.
+    fn comments_of(&self, index: usize) -> Range<usize> {
+        let start = match index {
+            0 => self.header,
+            _ => self.entries[index - 1].comments_end,
+        };
+        start as usize..self.entries[index].comments_end as usize
+    }
+
+    /// Where the footer starts in `comments`: after the last entry's comments.
+    fn footer(&self) -> usize {
+        self.entries
+            .last()
+            .map_or(0, |entry| entry.comments_end as usize)
+    }
+
     /// The canonical text.
     pub fn render(&self) -> String {
-        let mut out = String::new();
-        let mut sections = 0;
-        let mut section = |out: &mut String| {
-            if sections > 0 {
-                out.push('\n');
-            }
-            sections += 1;
-        };
-        if !self.header.is_empty() {
-            section(&mut out);
-            push_comments(&mut out, &self.header);
-        }
-        if !self.unplaced.is_empty() {
-            section(&mut out);
-            self.unplaced
-                .iter()
-                .for_each(|entry| push_entry(&mut out, entry));
-        }
-        for block in &self.blocks {
-            section(&mut out);
-            block
-                .entries
-                .iter()
-                .for_each(|entry| push_entry(&mut out, entry));
-        }
-        if !self.tour.is_empty() {
-            section(&mut out);
-            self.tour
-                .iter()
-                .for_each(|entry| push_entry(&mut out, entry));
-        }
-        if !self.footer.is_empty() {
-            section(&mut out);
-            push_comments(&mut out, &self.footer);
-        }
-        if out.starts_with(BYTE_ORDER_MARK) {
-            out.insert(0, '\n');
-        }
+        let mut out = String::with_capacity(self.text.len() + self.text.len() / 4);
+        self.walk(|item| push_item(&mut out, item));
         out
     }
-}
 
-fn push_comments(out: &mut String, comments: &[Cow<'_, str>]) {
-    for comment in comments {
-        out.push_str(comment);
-        out.push('\n');
+    /// Whether `text` is this document's [`render`](Self::render) already (the usual case of
+    /// `ekb fmt --check`), found without writing the whole text: each line is written into
+    /// one small buffer and compared.
+    pub fn renders_as(&self, text: &str) -> bool {
+        let mut line = String::new();
+        let mut rest = text.as_bytes();
+        let mut same = true;
+        self.walk(|item| {
+            line.clear();
+            push_item(&mut line, item);
+            same = same && rest.starts_with(line.as_bytes());
+            rest = rest.get(line.len()..).unwrap_or_default();
+        });
+        same && rest.is_empty()
+    }
+
+    /// Whether reading `formatted` (this document's [`render`](Self::render)) back would
+    /// give this document again: every line reads as exactly the line that was written there.
+    /// That is what [`parse`](Self::parse) would compare, line by line, without a second
+    /// document: the blocks, their order and the header and footer follow from the lines.
+    pub fn reads_back_from(&self, formatted: &str) -> bool {
+        let mut lines = crate::syntax::lines(formatted);
+        let mut same = true;
+        self.walk(|item| {
+            same = same
+                && lines
+                    .next()
+                    .is_some_and(|line| reads_as(formatted, &line, item));
+        });
+        same && lines.next().is_none()
+    }
+
+    /// Every line of the canonical text, in order.
+    fn walk(&self, mut visit: impl FnMut(Item<'_>)) {
+        let mut sections = 0;
+        let mut visit = |item: Item<'_>, new_section: bool| {
+            if new_section {
+                // Sections are apart; and a first line starting with U+FEFF would be read as a
+                // byte-order mark.
+                if sections > 0 || item.starts_with_byte_order_mark() {
+                    visit(Item::Blank);
+                }
+                sections += 1;
+            }
+            visit(item);
+        };
+        let comments = |range: Range<usize>| self.comments[range].iter().map(|&c| self.str(c));
+        for (n, comment) in comments(0..self.header as usize).enumerate() {
+            visit(Item::Comment(comment), n == 0);
+        }
+        let mut entry = |index: u32, new_section: bool, tour: bool| {
+            let index = index as usize;
+            let mut first = new_section;
+            for comment in comments(self.comments_of(index)) {
+                visit(Item::Comment(comment), std::mem::take(&mut first));
+            }
+            let entry = &self.entries[index];
+            let written = Written {
+                key: self.str(entry.key),
+                id: entry.id.map(|id| self.str(id)),
+                value: self.str(entry.value),
+                tour,
+            };
+            visit(Item::Entry(written), first);
+        };
+        for (n, &index) in self.unplaced.iter().enumerate() {
+            entry(index, n == 0, false);
+        }
+        let mut start = 0;
+        for &end in &self.block_ends {
+            for (n, &index) in self.order[start as usize..end as usize].iter().enumerate() {
+                entry(index, n == 0, false);
+            }
+            start = end;
+        }
+        for (n, &index) in self.tour.iter().enumerate() {
+            entry(index, n == 0, true);
+        }
+        for (n, comment) in comments(self.footer()..self.comments.len()).enumerate() {
+            visit(Item::Comment(comment), n == 0);
+        }
     }
 }
 
-fn push_entry(out: &mut String, entry: &Entry<'_>) {
-    push_comments(out, &entry.comments);
-    out.push_str(&entry.key);
-    if let Some(id) = &entry.id {
-        let key_width = entry.key.chars().count();
+/// Whether `part` is a slice of `whole`'s memory.
+fn is_within(part: &str, whole: &str) -> bool {
+    let (start, end) = (part.as_ptr() as usize, whole.as_ptr() as usize);
+    start >= end && start + part.len() <= end + whole.len()
+}
+
+fn push_item(out: &mut String, item: Item<'_>) {
+    match item {
+        Item::Blank => {}
+        Item::Comment(text) => out.push_str(text),
+        Item::Entry(entry) => push_entry(out, entry.key, entry.id, entry.value),
+    }
+    out.push('\n');
+}
+
+/// `key id value`, the id at [`VALUE_COLUMN`] (without the line ending).
+fn push_entry(out: &mut String, key: &str, id: Option<&str>, value: &str) {
+    out.push_str(key);
+    if let Some(id) = id {
+        let key_width = key.chars().count();
         let padded = (VALUE_COLUMN - 1).max(key_width + 1) - key_width;
-        let value = if entry.value.is_empty() {
-            0
-        } else {
-            1 + entry.value.len()
-        };
-        let unpadded_length = entry.key.len() + 1 + id.len() + value + "\n".len();
+        let value_length = if value.is_empty() { 0 } else { 1 + value.len() };
+        let unpadded_length = key.len() + 1 + id.len() + value_length + "\n".len();
         // Pad unless the padding is what would make the robot cut the line.
         let spaces = if unpadded_length + padded - 1 < LINE_BUFFER || unpadded_length >= LINE_BUFFER
         {
@@ -165,42 +295,69 @@ fn push_entry(out: &mut String, entry: &Entry<'_>) {
         } else {
             1
         };
-        out.extend(std::iter::repeat_n(' ', spaces));
+        out.push_str(&PADDING[..spaces]);
         out.push_str(id);
     }
-    if !entry.value.is_empty() {
+    if !value.is_empty() {
         out.push(' ');
-        out.push_str(&entry.value);
+        out.push_str(value);
     }
-    out.push('\n');
+}
+
+/// Whether `line` of `text` reads as `item`: the same comment, or the same entry (key, id,
+/// value and where it goes), and no stray carriage return.
+fn reads_as(text: &str, line: &crate::syntax::Line, item: Item<'_>) -> bool {
+    use crate::syntax::Body;
+    if from_source::ends_in_stray_return(text, line) {
+        return false;
+    }
+    match (line.body, item) {
+        (Body::Blank, Item::Blank) => true,
+        (Body::Comment(comment), Item::Comment(expected)) => comment.text(text) == expected,
+        (Body::Entry { key, args }, Item::Entry(expected)) => {
+            key.text(text) == expected.key && from_source::read(text, key, args).is(expected)
+        }
+        _ => false,
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn entry<'a>(key: &'a str, id: Option<&'a str>, value: &'a str) -> Entry<'a> {
-        Entry {
-            comments: Vec::new(),
-            key: key.into(),
-            id: id.map(Cow::from),
-            value: value.into(),
+    fn entry<'a>(key: &'a str, id: Option<&'a str>, value: &'a str) -> Written<'a> {
+        Written {
+            key,
+            id,
+            value,
+            tour: false,
         }
+    }
+
+    /// The line of an entry, with its line ending.
+    fn push_line(out: &mut String, entry: Written<'_>) {
+        push_item(out, Item::Entry(entry));
+    }
+
+    #[test]
+    fn the_padding_is_as_wide_as_the_column_says() {
+        assert_eq!(PADDING.len(), VALUE_COLUMN - 1);
+        assert!(PADDING.bytes().all(|byte| byte == b' '));
     }
 
     #[test]
     fn ids_start_at_column_31() {
         let mut out = String::new();
-        push_entry(&mut out, &entry("gestureTarget", Some("1"), "0.0 0.0 0.0"));
-        push_entry(
+        push_line(&mut out, entry("gestureTarget", Some("1"), "0.0 0.0 0.0"));
+        push_line(
             &mut out,
-            &entry("postGestureMessageKinyarwanda", Some("12"), "x"),
+            entry("postGestureMessageKinyarwanda", Some("12"), "x"),
         );
-        push_entry(
+        push_line(
             &mut out,
-            &entry("aVeryLongUnknownKeyOfThirtyOneCh", Some("3"), ""),
+            entry("aVeryLongUnknownKeyOfThirtyOneCh", Some("3"), ""),
         );
-        push_entry(&mut out, &entry("tourSpecification", None, "2 1 3"));
+        push_line(&mut out, entry("tourSpecification", None, "2 1 3"));
         assert_eq!(
             out,
             "gestureTarget                 1 0.0 0.0 0.0\n\
@@ -221,17 +378,45 @@ mod tests {
     }
 
     #[test]
+    fn the_canonical_text_reads_back_and_any_other_does_not() {
+        let text = "# header\n\nzzz 1 x\n# c\nrobotLocation 1 1  2 3\nhello\n\
+                    tourSpecification 2 1,2\n\u{feff}k v\n# end\n";
+        let document = Document::parse(text).unwrap();
+        let formatted = document.render();
+        assert!(document.reads_back_from(&formatted));
+        assert!(document.renders_as(&formatted));
+        assert!(!document.reads_back_from(text));
+        assert!(!document.renders_as(text));
+        for changed in [
+            formatted.replace("1 2 3", "1 2 4"),
+            formatted.replace("# c", "# d"),
+            formatted.replace("tourSpecification 2", "tourspecification 2"),
+            formatted.replace("hello", "hello 7"),
+            formatted.replace("\n\n", "\n"),
+            format!("{formatted}\n"),
+            formatted.replace(
+                "zzz                           1",
+                "zzz                           01",
+            ),
+            formatted.replace("# end\n", "# end\r\r\n"),
+        ] {
+            assert!(!document.reads_back_from(&changed), "{changed:?}");
+            assert!(!document.renders_as(&changed), "{changed:?}");
+        }
+    }
+
+    #[test]
     fn padding_never_makes_a_line_too_long_for_the_robot() {
         // 13 + 1 + 1 + 1 + 182 + newline = 199 bytes with one space; padding would add 16.
         let value = "x".repeat(182);
         let mut out = String::new();
-        push_entry(&mut out, &entry("gestureTarget", Some("1"), &value));
+        push_line(&mut out, entry("gestureTarget", Some("1"), &value));
         assert_eq!(out.len(), LINE_BUFFER - 1);
         assert!(out.starts_with("gestureTarget 1 x"));
         // A line too long anyway is padded as usual.
         let value = "x".repeat(190);
         let mut out = String::new();
-        push_entry(&mut out, &entry("gestureTarget", Some("1"), &value));
+        push_line(&mut out, entry("gestureTarget", Some("1"), &value));
         assert!(out.starts_with("gestureTarget                 1 x"));
     }
 }
