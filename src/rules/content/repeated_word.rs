@@ -1,7 +1,6 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::model::{Language, Location};
-use crate::rules::content::messages;
+use crate::model::{Language, Location, Phase};
 use crate::rules::declare_rule;
 use crate::syntax::{self, Span};
 
@@ -31,10 +30,11 @@ declare_rule! {
 }
 
 pub fn check(location: &Location<'_>, out: &mut Diagnostics) {
-    let english = messages(location)
-        .filter(|&(_, language, _)| language == Language::English)
-        .map(|(_, _, message)| message);
-    let texts = location.description().into_iter().chain(english);
+    let english = Phase::ALL.map(|phase| location.message(phase, Language::English));
+    let texts = location
+        .description()
+        .into_iter()
+        .chain(english.into_iter().flatten());
     for text in texts {
         for (first, second, word) in repeats(text.value, text.span.start as usize) {
             out.push_with(&REPEATED_WORD, || {
@@ -56,11 +56,13 @@ pub fn check(location: &Location<'_>, out: &mut Diagnostics) {
 /// contain a letter, with no punctuation between them.
 fn repeats(text: &str, offset: usize) -> impl Iterator<Item = (Span, Span, &str)> {
     let mut previous: Option<(Span, &str)> = None;
+    // Known once for the whole text: then no word needs to be looked at beyond its bytes.
+    let ascii = text.is_ascii();
     syntax::tokens(text, offset).filter_map(move |(span, token)| {
         let word = trim_to_word(token);
         let repeat = previous
             .filter(|&(_, previous_word)| {
-                same_word(word, previous_word) && word.chars().any(char::is_alphabetic)
+                same_word(word, previous_word, ascii) && word.chars().any(char::is_alphabetic)
             })
             .map(|(previous_span, _)| (previous_span, span, word));
         // `that, that` is meant: a word followed by punctuation starts afresh.
@@ -70,9 +72,11 @@ fn repeats(text: &str, offset: usize) -> impl Iterator<Item = (Span, Span, &str)
 }
 
 // Every word of every description and English message passes through the three functions
-// below: each first answers from the ASCII bytes at hand, which is nearly always enough.
+// below: each answers from the ASCII bytes at hand, which is nearly always enough, and is
+// inlined; the rare rest is out of line.
 
 /// `token` without the punctuation around it.
+#[inline]
 fn trim_to_word(token: &str) -> &str {
     let bytes = token.as_bytes();
     match (bytes.first(), bytes.last()) {
@@ -81,10 +85,16 @@ fn trim_to_word(token: &str) -> &str {
         {
             token
         }
-        _ => token.trim_matches(|c: char| !c.is_alphanumeric()),
+        _ => trim_punctuation(token),
     }
 }
 
+#[cold]
+fn trim_punctuation(token: &str) -> &str {
+    token.trim_matches(|c: char| !c.is_alphanumeric())
+}
+
+#[inline]
 fn ends_in_word(token: &str) -> bool {
     match token.as_bytes().last() {
         Some(last) if last.is_ascii() => last.is_ascii_alphanumeric(),
@@ -92,12 +102,16 @@ fn ends_in_word(token: &str) -> bool {
     }
 }
 
-fn same_word(a: &str, b: &str) -> bool {
-    if a.is_ascii() {
-        return a.eq_ignore_ascii_case(b);
-    }
-    // Lowercasing may change the length of a non-ASCII word: compare the lowercase
-    // characters, without making lowercase copies.
+/// Whether `a` and `b` are the same word; `ascii` if both are known to be ASCII.
+#[inline]
+fn same_word(a: &str, b: &str, ascii: bool) -> bool {
+    a.eq_ignore_ascii_case(b) || (!ascii && !a.is_ascii() && same_lowercase(a, b))
+}
+
+/// Lowercasing may change the length of a non-ASCII word: compares the lowercase
+/// characters, without making lowercase copies.
+#[cold]
+fn same_lowercase(a: &str, b: &str) -> bool {
     a.chars()
         .flat_map(char::to_lowercase)
         .eq(b.chars().flat_map(char::to_lowercase))
