@@ -5,6 +5,7 @@
 //! the output is the same as a single thread's (the tests compare the two).
 
 use std::ops::Range;
+use std::sync::Mutex;
 
 /// Below this many bytes (or items) a part is not worth a thread: starting one costs about
 /// as much as reading 100 kB, and a real knowledge base is a few kilobytes.
@@ -52,27 +53,43 @@ pub fn item_parts<T>(items: &[T]) -> std::slice::Chunks<'_, T> {
 }
 
 /// `work` applied to every input, each on its own thread (the first on this one); the
-/// results in the order of the inputs.
+/// results in the order of the inputs. An input whose thread cannot be started (the system
+/// is out of threads or memory) is worked on here instead.
 pub fn map<I: Send, R: Send>(inputs: Vec<I>, work: impl Fn(I) -> R + Sync) -> Vec<R> {
-    let mut inputs = inputs.into_iter();
-    let Some(first) = inputs.next() else {
+    // Each input is taken once: by its thread, or here if that thread never ran.
+    let slots: Vec<Mutex<Option<I>>> = inputs.into_iter().map(|i| Mutex::new(Some(i))).collect();
+    let run = |slot: &Mutex<Option<I>>| {
+        let input = slot.lock().ok()?.take()?;
+        Some(work(input))
+    };
+    let Some((first, others)) = slots.split_first() else {
         return Vec::new();
     };
     std::thread::scope(|scope| {
-        let work = &work;
-        let others: Vec<_> = inputs
-            .map(|input| scope.spawn(move || work(input)))
+        let run = &run;
+        let threads: Vec<_> = others
+            .iter()
+            .map(|slot| {
+                std::thread::Builder::new()
+                    .spawn_scoped(scope, move || run(slot))
+                    .ok()
+            })
             .collect();
-        let mut results = Vec::with_capacity(others.len() + 1);
-        results.push(work(first));
-        for other in others {
-            match other.join() {
-                Ok(result) => results.push(result),
+        let mut results = Vec::with_capacity(slots.len());
+        results.push(run(first));
+        for (slot, thread) in others.iter().zip(threads) {
+            let result = match thread.map(|thread| thread.join()) {
+                Some(Ok(result)) => result,
                 // A panic on another thread is a bug: let it surface as one.
-                Err(panic) => std::panic::resume_unwind(panic),
-            }
+                Some(Err(panic)) => std::panic::resume_unwind(panic),
+                None => None,
+            };
+            results.push(result.or_else(|| run(slot)));
         }
         results
+            .into_iter()
+            .map(|result| result.expect("every input is worked on once"))
+            .collect()
     })
 }
 
