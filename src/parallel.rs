@@ -17,8 +17,13 @@ const MAX_PARTS: usize = 16;
 
 /// How many parts to cut `size` units into, given at least `min_per_part` units per part.
 fn parts_for(size: usize, min_per_part: usize) -> usize {
+    let most = size / min_per_part;
+    if most < 2 {
+        // Not worth asking how many cores there are (Linux reads the cgroup's CPU quota).
+        return 1;
+    }
     let cores = std::thread::available_parallelism().map_or(1, usize::from);
-    (size / min_per_part).clamp(1, cores.min(MAX_PARTS))
+    most.min(cores).min(MAX_PARTS)
 }
 
 /// `bytes` cut into about `parts` ranges of whole lines (fewer if it has too few lines).
