@@ -85,8 +85,6 @@ struct Builder<'a> {
     /// The first `robotLocation` and `robotLocationPose` lines, and how many of each.
     first_pose_key: [Option<(Span, usize)>; 2],
     crlf_endings: Vec<Span>,
-    /// The last line read.
-    last_line: Option<Line>,
     /// Lines whose value could not be loaded, by id and key slot: the model holds no span
     /// for them, yet a later duplicate must point back at them.
     rejected: HashMap<(u32, usize), Span>,
@@ -110,12 +108,10 @@ impl<'a> Builder<'a> {
             tour: None,
             first_pose_key: [None, None],
             crlf_endings: Vec::new(),
-            last_line: None,
             rejected: HashMap::new(),
         };
         for line in syntax::lines_from(&text[..range.end], range.start) {
             builder.line(&line, out);
-            builder.last_line = Some(line);
         }
         builder
     }
@@ -155,7 +151,6 @@ impl<'a> Builder<'a> {
             };
         }
         self.crlf_endings.extend(later.crlf_endings);
-        self.last_line = later.last_line.or(self.last_line);
         true
     }
 
@@ -403,8 +398,10 @@ impl<'a> Builder<'a> {
     }
 
     fn finish(self, out: &mut Diagnostics) -> KnowledgeBase<'a> {
-        if let Some(line) = &self.last_line {
-            compat::compat_no_final_newline::check(line, self.text, out);
+        // Only a last line without a newline can lack one: the line after the last newline.
+        let last_line_start = memchr::memrchr(b'\n', self.text.as_bytes()).map_or(0, |at| at + 1);
+        if let Some(line) = syntax::lines_from(self.text, last_line_start).next() {
+            compat::compat_no_final_newline::check(&line, self.text, out);
         }
         compat::compat_crlf::check(&self.crlf_endings, out);
         let dialect = match self.first_pose_key {
