@@ -115,7 +115,9 @@ fn unwrapped(text: &str, indent: usize) -> bool {
         line.len() + indent <= WIDTH - 2
             && bytes.first().is_some_and(u8::is_ascii_graphic)
             && bytes.last().is_some_and(u8::is_ascii_graphic)
-            && bytes.iter().all(|&b| b.is_ascii_graphic() || b == b' ')
+            && bytes
+                .iter()
+                .fold(true, |ok, &b| ok & matches!(b, b' '..=b'~'))
     })
 }
 
