@@ -179,12 +179,11 @@ impl<'a> Source<'a> {
 
     fn finding<'d>(&'d self, diagnostic: &'d LocatedDiagnostic<'_>) -> Finding<'d> {
         let fix = diagnostic.fix.as_ref().map(|fix| &fix.message);
-        let help = match (diagnostic.help, fix) {
+        let fix_help = fix.map(|fix| format!("fix available: {fix} (run `ekb fix`)"));
+        let help = match (diagnostic.help, fix_help) {
             (help, None) => help.map(Cow::Borrowed),
-            (None, Some(fix)) => Some(Cow::Owned(format!("fix available: {fix} (run `ekb fix`)"))),
-            (Some(help), Some(fix)) => Some(Cow::Owned(format!(
-                "{help}\nfix available: {fix} (run `ekb fix`)"
-            ))),
+            (None, Some(fix)) => Some(Cow::Owned(fix)),
+            (Some(help), Some(fix)) => Some(Cow::Owned(format!("{help}\n{fix}"))),
         };
         let mut finding = Finding {
             severity: diagnostic.severity,
