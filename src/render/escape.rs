@@ -19,7 +19,10 @@ pub fn is_unsafe(ch: char) -> bool {
 
 /// `text` with every unsafe character written as `\u{…}` (tab as `\t`).
 pub fn escape(text: &str) -> Cow<'_, str> {
-    if !text.chars().any(is_unsafe) {
+    // Nearly all text is printable ASCII: checking bytes first (without stopping early, so
+    // that the check is vectorised) spares decoding characters.
+    let printable = |ok, &b: &u8| ok & matches!(b, b' '..=b'~' | b'\n');
+    if text.as_bytes().iter().fold(true, printable) || !text.chars().any(is_unsafe) {
         return Cow::Borrowed(text);
     }
     let mut out = String::with_capacity(text.len() + 8);

@@ -5,9 +5,12 @@
 //! miette writes source text as it gets it, and copies nothing it does not need, but it
 //! would still need the whole file to count lines. So it never sees the file: each finding
 //! gets an [`Excerpt`], escaped copies of just the lines it shows (a handful, even in a
-//! 60 MB file), with spans translated into the excerpt and line numbers kept.
+//! 60 MB file), with spans translated into the excerpt and line numbers kept. The lines are
+//! cut from the text around each place, and numbered by scanning on from a place already
+//! located ([`Locator`], as every format locates findings): no index of the file's lines.
 
-use std::collections::BTreeSet;
+use std::borrow::Cow;
+use std::cell::Cell;
 use std::fmt;
 use std::io::{self, Write};
 
@@ -17,9 +20,10 @@ use miette::{
 };
 
 use super::escape::escape;
+use super::located::{Locator, Mark};
 use super::{FileReport, LocatedDiagnostic, RenderOptions};
 use crate::diagnostic::{Severity, Summary};
-use crate::source::LineIndex;
+use crate::source::Position;
 use crate::syntax::Span;
 
 /// Lines shown before and after each underlined place.
@@ -39,25 +43,19 @@ pub fn render(
     out: &mut dyn Write,
     options: &RenderOptions,
 ) -> io::Result<()> {
-    let theme = if options.color {
-        GraphicalTheme::unicode()
-    } else {
-        GraphicalTheme::unicode_nocolor()
-    };
-    let handler = GraphicalReportHandler::new_themed(theme)
-        .with_width(WIDTH)
-        .with_urls(false)
-        .with_context_lines(CONTEXT_LINES)
-        .without_syntax_highlighting();
+    let handlers = Handlers::new(options.color);
+    // One buffer for every report: miette draws into a `fmt::Write`.
+    let mut drawn = String::new();
     for report in reports.iter().filter(|r| !r.diagnostics.is_empty()) {
-        let lines = Lines::new(report.checked.source.text());
+        let source = Source::new(report.checked.source.name(), report.checked.source.text());
         for diagnostic in &report.diagnostics {
-            let finding = Finding::new(diagnostic, &lines);
-            let mut text = String::new();
-            handler
-                .render_report(&mut text, &finding)
+            let finding = source.finding(diagnostic);
+            drawn.clear();
+            handlers
+                .for_finding(&finding)
+                .render_report(&mut drawn, &finding)
                 .map_err(|_| io::Error::other("cannot lay out a finding"))?;
-            writeln!(out, "{text}")?;
+            writeln!(out, "{drawn}")?;
         }
     }
     if !options.quiet {
@@ -66,52 +64,173 @@ pub fn render(
     Ok(())
 }
 
+/// miette's report handler, twice: one wraps the message and help at [`WIDTH`], the other
+/// does not. Wrapping (textwrap, finding where Unicode lets a line break) was a third of the
+/// cost of a report, and most messages fit on a line anyway: those are drawn by the handler
+/// that does not wrap, to the same bytes ([`unwrapped`]).
+struct Handlers {
+    wrapping: GraphicalReportHandler,
+    plain: GraphicalReportHandler,
+}
+
+/// The columns before a message's lines (`  × `) and a help's (`  help: `).
+const MESSAGE_INDENT: usize = 4;
+const HELP_INDENT: usize = 8;
+
+impl Handlers {
+    fn new(color: bool) -> Handlers {
+        let theme = if color {
+            GraphicalTheme::unicode()
+        } else {
+            GraphicalTheme::unicode_nocolor()
+        };
+        let wrapping = GraphicalReportHandler::new_themed(theme)
+            .with_width(WIDTH)
+            .with_urls(false)
+            .with_context_lines(CONTEXT_LINES)
+            .without_syntax_highlighting();
+        let plain = wrapping.clone().with_wrap_lines(false);
+        Handlers { wrapping, plain }
+    }
+
+    fn for_finding(&self, finding: &Finding<'_>) -> &GraphicalReportHandler {
+        let help = finding.help.as_deref();
+        if unwrapped(&finding.message, MESSAGE_INDENT)
+            && help.is_none_or(|help| unwrapped(help, HELP_INDENT))
+        {
+            &self.plain
+        } else {
+            &self.wrapping
+        }
+    }
+}
+
+/// Whether miette's wrapping leaves `text`, drawn after `indent` columns, as it is. It does
+/// when each line fits in the width ([`WIDTH`] less miette's margin of 2) and holds only
+/// printable ASCII (one column a byte), neither blank nor beginning or ending with a space
+/// (wrapping drops trailing spaces, and indents blank lines differently).
+fn unwrapped(text: &str, indent: usize) -> bool {
+    text.split('\n').all(|line| {
+        let bytes = line.as_bytes();
+        line.len() + indent <= WIDTH - 2
+            && bytes.first().is_some_and(u8::is_ascii_graphic)
+            && bytes.last().is_some_and(u8::is_ascii_graphic)
+            && bytes
+                .iter()
+                .fold(true, |ok, &b| ok & matches!(b, b' '..=b'~'))
+    })
+}
+
 /// One finding as miette sees it: every text already escaped.
 #[derive(Debug)]
 struct Finding<'a> {
-    /// `error[key-case]`
-    code: String,
-    message: String,
     severity: Severity,
-    help: Option<String>,
+    rule: &'static str,
+    message: Cow<'a, str>,
+    help: Option<Cow<'a, str>>,
     labels: Vec<LabeledSpan>,
     /// `None` when a line to underline is too long to draw ([`MAX_DRAWN_LINE`]).
     excerpt: Option<Excerpt<'a>>,
 }
 
-impl<'a> Finding<'a> {
-    fn new(diagnostic: &LocatedDiagnostic<'_>, lines: &Lines<'a>) -> Finding<'a> {
-        let source = diagnostic.diagnostic;
-        let spans = || std::iter::once(source.span).chain(source.labels.iter().map(|l| l.span));
-        let drawable = spans().all(|span| lines.drawable(lines.number(span.start)));
-        let mut finding = Finding::without_snippet(diagnostic);
-        if !drawable {
-            // Without a snippet miette shows no position: say it in the message.
-            let region = diagnostic.region;
-            finding.message = format!(
-                "{}:{}:{}: {}",
-                escape(diagnostic.file),
-                region.line,
-                region.column,
-                finding.message
-            );
-            return finding;
+/// `error[key-case]`, what miette calls the code.
+struct Code {
+    severity: Severity,
+    rule: &'static str,
+}
+
+impl fmt::Display for Code {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}[{}]", self.severity.name(), self.rule)
+    }
+}
+
+/// A checked file, to draw its findings.
+struct Source<'a> {
+    text: &'a str,
+    /// The file's name, escaped once for all its findings.
+    name: Cow<'a, str>,
+    locator: Locator<'a>,
+    /// Where the last secondary label was. Labels point back (at a first definition, an
+    /// earlier tour), often many findings at the same place, so each is located from the
+    /// nearer of its finding and the last label: never a scan back over the file per finding.
+    last_label: Cell<Mark>,
+}
+
+/// A line of the file: its number, and where it is.
+#[derive(Debug, Clone, Copy)]
+struct FileLine {
+    /// 1-based.
+    number: u32,
+    start: usize,
+    /// Where its `\n` is, or the end of the text.
+    end: usize,
+}
+
+impl<'a> Source<'a> {
+    fn new(name: &'a str, text: &'a str) -> Source<'a> {
+        Source {
+            text,
+            name: escape(name),
+            locator: Locator::new(text),
+            last_label: Cell::new(Mark::START),
         }
-        let excerpt = Excerpt::new(escape(diagnostic.file).into_owned(), lines, spans());
+    }
+
+    fn finding<'d>(&'d self, diagnostic: &'d LocatedDiagnostic<'_>) -> Finding<'d> {
+        let fix = diagnostic.fix.as_ref().map(|fix| &fix.message);
+        let fix_help = fix.map(|fix| format!("fix available: {fix} (run `ekb fix`)"));
+        let help = match (diagnostic.help, fix_help) {
+            (help, None) => help.map(Cow::Borrowed),
+            (None, Some(fix)) => Some(Cow::Owned(fix)),
+            (Some(help), Some(fix)) => Some(Cow::Owned(format!("{help}\n{fix}"))),
+        };
+        let mut finding = Finding {
+            severity: diagnostic.severity,
+            rule: diagnostic.rule,
+            message: escape(diagnostic.message),
+            help: help.map(escaped),
+            labels: Vec::new(),
+            excerpt: None,
+        };
+        let source = diagnostic.diagnostic;
+        let region = diagnostic.region;
+        let primary = Mark {
+            offset: source.span.start,
+            position: Position {
+                line: region.line,
+                column: region.column,
+            },
+        };
+        let places = self.line(primary).and_then(|line| {
+            let labels = source.labels.iter().map(|label| {
+                let line = self.label_line(label.span.start, primary)?;
+                Some((label, line))
+            });
+            Some((line, labels.collect::<Option<Vec<_>>>()?))
+        });
+        let Some((line, labels)) = places else {
+            // Without a snippet miette shows no position: say it in the message.
+            finding.message = Cow::Owned(format!(
+                "{}:{}:{}: {}",
+                self.name, region.line, region.column, finding.message
+            ));
+            return finding;
+        };
+        let lines = std::iter::once(line).chain(labels.iter().map(|(_, line)| *line));
+        let excerpt = Excerpt::new(&self.name, self.text, self.with_context(lines));
         // The message above says what is wrong, the help below what to do: the label only
         // marks the place, or names the fix when there is one.
-        let label = match &source.fix {
-            Some(fix) => escape(&fix.message).into_owned(),
+        let label = match fix {
+            Some(fix) => escape(fix).into_owned(),
             None => "here".to_string(),
         };
-        let primary = LabeledSpan::new_primary_with_span(
-            Some(label),
-            excerpt.source_span(lines, source.span),
-        );
-        let secondary = source.labels.iter().map(|label| {
+        let primary =
+            LabeledSpan::new_primary_with_span(Some(label), excerpt.source_span(line, source.span));
+        let secondary = labels.iter().map(|(label, line)| {
             LabeledSpan::new_with_span(
                 Some(escape(&label.message).into_owned()),
-                excerpt.source_span(lines, label.span),
+                excerpt.source_span(*line, label.span),
             )
         });
         finding.labels = std::iter::once(primary).chain(secondary).collect();
@@ -119,24 +238,114 @@ impl<'a> Finding<'a> {
         finding
     }
 
-    /// The finding's words, with no place drawn yet.
-    fn without_snippet(diagnostic: &LocatedDiagnostic<'_>) -> Finding<'a> {
-        let fix = diagnostic
-            .fix
-            .as_ref()
-            .map(|fix| format!("fix available: {} (run `ekb fix`)", fix.message));
-        let help = match (diagnostic.help, fix) {
-            (Some(help), Some(fix)) => Some(format!("{help}\n{fix}")),
-            (help, fix) => help.map(str::to_string).or(fix),
+    /// The line of `mark`, if it is short enough to draw.
+    fn line(&self, mark: Mark) -> Option<FileLine> {
+        let (start, end) = self.bounds(mark.offset as usize)?;
+        Some(FileLine {
+            number: mark.position.line,
+            start,
+            end,
+        })
+    }
+
+    /// The line of a secondary label's `offset`, if it is short enough to draw, numbered from
+    /// the nearer of `primary` (its finding) and the last label.
+    fn label_line(&self, offset: u32, primary: Mark) -> Option<FileLine> {
+        let (start, end) = self.bounds(offset as usize)?;
+        let last = self.last_label.get();
+        let from = if primary.distance(offset) <= last.distance(offset) {
+            primary
+        } else {
+            last
         };
-        Finding {
-            code: format!("{}[{}]", diagnostic.severity.name(), diagnostic.rule),
-            message: escape(diagnostic.message).into_owned(),
-            severity: diagnostic.severity,
-            help: help.map(|help| escape(&help).into_owned()),
-            labels: Vec::new(),
-            excerpt: None,
+        let position = self.locator.position(from, offset);
+        self.last_label.set(Mark { offset, position });
+        Some(FileLine {
+            number: position.line,
+            start,
+            end,
+        })
+    }
+
+    /// Where the line holding `offset` starts and ends, if it is short enough to draw: the
+    /// search stops [`MAX_DRAWN_LINE`] bytes away, so a huge line costs no more than a short
+    /// one however many findings it has.
+    fn bounds(&self, offset: usize) -> Option<(usize, usize)> {
+        let bytes = self.text.as_bytes();
+        let offset = offset.min(bytes.len());
+        // A drawable line has at most MAX_DRAWN_LINE bytes and a `\r`: the newlines around
+        // any offset in it are at most `reach` bytes away from its start.
+        let reach = MAX_DRAWN_LINE + 2;
+        let back = offset.saturating_sub(reach);
+        let start = match memchr::memrchr(b'\n', &bytes[back..offset]) {
+            Some(newline) => back + newline + 1,
+            None if back == 0 => 0,
+            None => return None,
+        };
+        let ahead = (start + reach).min(bytes.len());
+        let end = match memchr::memchr(b'\n', &bytes[offset..ahead]) {
+            Some(newline) => offset + newline,
+            None if ahead == bytes.len() => ahead,
+            None => return None,
+        };
+        (line_text(self.text, start, end).len() <= MAX_DRAWN_LINE).then_some((start, end))
+    }
+
+    /// `lines`, with [`CONTEXT_LINES`] around each (those short enough to draw), in order.
+    fn with_context(&self, lines: impl Iterator<Item = FileLine>) -> Vec<FileLine> {
+        let mut all = Vec::new();
+        for line in lines {
+            all.push(line);
+            let mut before = line;
+            for _ in 0..CONTEXT_LINES {
+                let Some(previous) = before.start.checked_sub(1).and_then(|end| {
+                    let (start, end) = self.bounds(end)?;
+                    Some(FileLine {
+                        number: before.number - 1,
+                        start,
+                        end,
+                    })
+                }) else {
+                    break;
+                };
+                all.push(previous);
+                before = previous;
+            }
+            let mut after = line;
+            for _ in 0..CONTEXT_LINES {
+                // After a final newline the "line" at the very end is empty: not worth showing.
+                let next_start = after.end + 1;
+                if next_start >= self.text.len() {
+                    break;
+                }
+                let Some((start, end)) = self.bounds(next_start) else {
+                    break;
+                };
+                after = FileLine {
+                    number: after.number + 1,
+                    start,
+                    end,
+                };
+                all.push(after);
+            }
         }
+        all.sort_unstable_by_key(|line| line.number);
+        all.dedup_by_key(|line| line.number);
+        all
+    }
+}
+
+/// The text of the line from `start` to `end`, without its line ending.
+fn line_text(text: &str, start: usize, end: usize) -> &str {
+    let line = &text[start..end];
+    line.strip_suffix('\r').unwrap_or(line)
+}
+
+/// `text`, escaped, still owned if it was.
+fn escaped(text: Cow<'_, str>) -> Cow<'_, str> {
+    match escape(&text) {
+        Cow::Borrowed(_) => text,
+        Cow::Owned(escaped) => Cow::Owned(escaped),
     }
 }
 
@@ -150,7 +359,10 @@ impl std::error::Error for Finding<'_> {}
 
 impl miette::Diagnostic for Finding<'_> {
     fn code<'b>(&'b self) -> Option<Box<dyn fmt::Display + 'b>> {
-        Some(Box::new(&self.code))
+        Some(Box::new(Code {
+            severity: self.severity,
+            rule: self.rule,
+        }))
     }
 
     fn severity(&self) -> Option<miette::Severity> {
@@ -179,55 +391,12 @@ impl miette::Diagnostic for Finding<'_> {
     }
 }
 
-/// A file's text and where its lines are, to cut excerpts from.
-struct Lines<'a> {
-    text: &'a str,
-    index: LineIndex,
-    /// The last line with any content or line ending (0 for an empty file).
-    last: u32,
-}
-
-impl<'a> Lines<'a> {
-    fn new(text: &'a str) -> Lines<'a> {
-        let index = LineIndex::new(text);
-        let end = index.position(text, text.len() as u32).line;
-        // After a final newline the "line" at the very end is empty: not worth showing.
-        let last = if text.is_empty() || text.ends_with('\n') {
-            end - 1
-        } else {
-            end
-        };
-        Lines { text, index, last }
-    }
-
-    /// The 1-based line of a byte offset.
-    fn number(&self, offset: u32) -> u32 {
-        self.index.line(offset)
-    }
-
-    /// Where line `number` starts, and its text without the line ending.
-    fn line(&self, number: u32) -> (u32, &'a str) {
-        let start = self.index.line_start(number);
-        let end = self
-            .index
-            .next_line_start(number)
-            .map_or(self.text.len(), |next| next as usize - 1);
-        let line = &self.text[start as usize..end.max(start as usize)];
-        (start, line.strip_suffix('\r').unwrap_or(line))
-    }
-
-    /// Whether line `number` is short enough to draw.
-    fn drawable(&self, number: u32) -> bool {
-        self.line(number).1.len() <= MAX_DRAWN_LINE
-    }
-}
-
 /// The lines one finding shows, escaped, joined into one text with its own offsets. Lines
 /// not consecutive in the file are kept apart: a span never crosses from one to the next.
 #[derive(Debug)]
 struct Excerpt<'a> {
     /// The file's name, escaped.
-    name: String,
+    name: &'a str,
     /// The escaped lines, each followed by `\n`.
     text: String,
     lines: Vec<ExcerptLine<'a>>,
@@ -248,42 +417,37 @@ struct ExcerptLine<'a> {
 }
 
 impl<'a> Excerpt<'a> {
-    /// The lines of `spans`' starts, with [`CONTEXT_LINES`] around each.
-    fn new(name: String, lines: &Lines<'a>, spans: impl Iterator<Item = Span>) -> Excerpt<'a> {
-        let context = CONTEXT_LINES as u32;
-        let mut numbers = BTreeSet::new();
-        for span in spans {
-            let number = lines.number(span.start);
-            numbers.insert(number);
-            let around = number.saturating_sub(context).max(1)..=number.saturating_add(context);
-            numbers.extend(around.filter(|&n| n <= lines.last && lines.drawable(n)));
-        }
-        let mut text = String::new();
-        let lines = numbers
+    /// The excerpt of `lines` (in order, each once) of the file `text`.
+    fn new(name: &'a str, text: &'a str, lines: Vec<FileLine>) -> Excerpt<'a> {
+        let mut shown = String::new();
+        let lines = lines
             .into_iter()
-            .map(|number| {
-                let (file_start, original) = lines.line(number);
-                let start = text.len();
-                text.push_str(&escape(original));
-                let end = text.len();
-                text.push('\n');
+            .map(|line| {
+                let original = line_text(text, line.start, line.end);
+                let start = shown.len();
+                shown.push_str(&escape(original));
+                let end = shown.len();
+                shown.push('\n');
                 ExcerptLine {
-                    number,
-                    file_start,
+                    number: line.number,
+                    file_start: line.start as u32,
                     original,
                     start,
                     end,
                 }
             })
             .collect();
-        Excerpt { name, text, lines }
+        Excerpt {
+            name,
+            text: shown,
+            lines,
+        }
     }
 
-    /// `span` of the file, in the excerpt's offsets; cut at the end of its first line so
-    /// that every label is drawn on one line.
-    fn source_span(&self, lines: &Lines<'_>, span: Span) -> SourceSpan {
-        let number = lines.number(span.start);
-        let Some(line) = self.lines.iter().find(|line| line.number == number) else {
+    /// `span` of the file, which starts on `line`, in the excerpt's offsets; cut at the end
+    /// of its first line so that every label is drawn on one line.
+    fn source_span(&self, line: FileLine, span: Span) -> SourceSpan {
+        let Some(line) = self.lines.iter().find(|shown| shown.number == line.number) else {
             return SourceSpan::from(0..0);
         };
         let relative = |offset: u32| offset.saturating_sub(line.file_start) as usize;
@@ -381,7 +545,7 @@ impl SourceCode for Excerpt<'_> {
         let data_start = self.lines[from].start;
         let data_end = self.lines[to].end + 1;
         Ok(Box::new(MietteSpanContents::new_named(
-            self.name.clone(),
+            self.name.to_string(),
             &self.text.as_bytes()[data_start..data_end],
             SourceSpan::from(data_start..data_end),
             self.lines[from].number as usize - 1,
@@ -438,20 +602,26 @@ mod tests {
     #[test]
     fn every_span_of_a_tricky_file_renders() {
         let text = "a\u{e4}\x01b\r\n\n\u{1F600}x\ty\nlast";
-        let lines = Lines::new(text);
+        let source = Source::new("t", text);
         let handler = GraphicalReportHandler::new_themed(GraphicalTheme::unicode_nocolor());
         for start in 0..=text.len() {
+            let mark = Mark {
+                offset: start as u32,
+                position: source.locator.position(Mark::START, start as u32),
+            };
+            let line = source.line(mark).unwrap();
             for end in start..=text.len() {
                 let span = Span::new(start, end);
-                let excerpt = Excerpt::new("t".into(), &lines, std::iter::once(span));
+                let lines = source.with_context(std::iter::once(line));
+                let excerpt = Excerpt::new("t", text, lines);
                 let finding = Finding {
-                    code: "error[test]".into(),
-                    message: "m".into(),
                     severity: Severity::Error,
+                    rule: "test",
+                    message: "m".into(),
                     help: None,
                     labels: vec![LabeledSpan::new_primary_with_span(
                         Some("here".into()),
-                        excerpt.source_span(&lines, span),
+                        excerpt.source_span(line, span),
                     )],
                     excerpt: Some(excerpt),
                 };
@@ -461,6 +631,139 @@ mod tests {
                     .unwrap_or_else(|_| panic!("span {start}..{end}"));
                 assert!(!out.chars().any(super::super::escape::is_unsafe), "{out}");
             }
+        }
+    }
+
+    /// `message` and `help` drawn by both handlers, without a snippet.
+    fn drawn_by_both(message: &str, help: Option<&str>) -> (String, String) {
+        let handlers = Handlers::new(false);
+        let finding = Finding {
+            severity: Severity::Warning,
+            rule: "test",
+            message: message.into(),
+            help: help.map(Cow::Borrowed),
+            labels: Vec::new(),
+            excerpt: None,
+        };
+        let draw = |handler: &GraphicalReportHandler| {
+            let mut out = String::new();
+            handler.render_report(&mut out, &finding).unwrap();
+            out
+        };
+        (draw(&handlers.wrapping), draw(&handlers.plain))
+    }
+
+    #[test]
+    fn text_is_left_unwrapped_exactly_when_wrapping_would_not_change_it() {
+        // `len` bytes of words, the last ending with a letter.
+        let words = |len: usize| format!("{}x", &"word ".repeat(len)[..len - 1]);
+        let fits = 98 - MESSAGE_INDENT;
+        for (message, help) in [
+            (words(fits), None),
+            ("m".into(), Some(words(98 - HELP_INDENT))),
+            ("m".into(), Some(format!("{}\n{}", words(20), words(90)))),
+        ] {
+            assert!(unwrapped(&message, MESSAGE_INDENT));
+            assert!(help.as_deref().is_none_or(|h| unwrapped(h, HELP_INDENT)));
+            let (wrapped, plain) = drawn_by_both(&message, help.as_deref());
+            assert_eq!(wrapped, plain);
+        }
+        // One column more, a trailing space, a blank line, a character wider than a byte:
+        // wrapping changes each, so none is taken as unwrapped.
+        for (message, help) in [
+            (words(fits + 1), None),
+            ("m".into(), Some(words(98 - HELP_INDENT + 1))),
+            ("m ".into(), None),
+            ("m".into(), Some("a\n\nb".into())),
+            (format!("{}中", words(fits - 1)), None),
+        ] {
+            let unwrapped = unwrapped(&message, MESSAGE_INDENT)
+                && help.as_deref().is_none_or(|h| unwrapped(h, HELP_INDENT));
+            assert!(!unwrapped, "{message:?} {help:?}");
+            let (wrapped, plain) = drawn_by_both(&message, help.as_deref());
+            assert_ne!(wrapped, plain, "{message:?} {help:?}");
+        }
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn unwrapped_text_is_drawn_as_wrapping_would(
+            message in "[ -~]{1,100}(\n[ -~]{0,100}){0,2}",
+            help in proptest::option::of("[ -~]{1,100}(\n[ -~]{0,100}){0,2}"),
+        ) {
+            let help = help.as_deref();
+            if unwrapped(&message, MESSAGE_INDENT) && help.is_none_or(|h| unwrapped(h, HELP_INDENT)) {
+                let (wrapped, plain) = drawn_by_both(&message, help);
+                proptest::prop_assert_eq!(wrapped, plain);
+            }
+        }
+    }
+
+    /// A description of location `id`, of exactly `len` bytes before `ending`, with "word"
+    /// repeated.
+    fn repeated_word_line(id: u32, len: usize, ending: &str) -> String {
+        let line = format!(
+            "robotLocationDescription {id} word word {}",
+            "x".repeat(len)
+        );
+        format!("{}{ending}", &line[..len])
+    }
+
+    /// The gutter of each line `report` draws (its line number or nothing).
+    fn gutters(report: &str) -> Vec<&str> {
+        let gutters = report.lines().filter_map(|line| line.split_once(" │ "));
+        gutters.map(|(gutter, _)| gutter.trim()).collect()
+    }
+
+    #[test]
+    fn lines_up_to_the_limit_are_drawn_with_their_neighbours() {
+        for ending in ["\n", "\r\n"] {
+            let drawn = |id| repeated_word_line(id, MAX_DRAWN_LINE, ending);
+            let too_long = repeated_word_line(2, MAX_DRAWN_LINE + 1, ending);
+            let (first, fourth) = (drawn(1), drawn(4));
+            let text = format!("# 1\n{first}{too_long}# 4\n{}{fourth}# 7{ending}", drawn(3));
+            let out = human("kb.dat", &text);
+            let repeated = |line| {
+                let start = format!("╭─[kb.dat:{line}:28]");
+                let mut reports = out.split("\n\n");
+                reports.find(|report| report.contains(&start)).unwrap()
+            };
+            // Line 3, too long, is neither drawn nor shown as a neighbour.
+            assert_eq!(gutters(repeated(2)), ["1", "2"], "{ending:?}");
+            assert!(
+                out.contains("kb.dat:3:28: \"word\" is repeated"),
+                "{ending:?}"
+            );
+            assert_eq!(gutters(repeated(5)), ["4", "5", "6"], "{ending:?}");
+            assert_eq!(gutters(repeated(6)), ["5", "6", "7"], "{ending:?}");
+            let tour_missing = out.split("\n\n").nth(1).unwrap();
+            assert!(tour_missing.contains("no `tourSpecification`"));
+            assert_eq!(gutters(tour_missing), ["1", "2"], "{ending:?}");
+        }
+    }
+
+    #[test]
+    fn labels_far_back_are_numbered_right() {
+        // Location 1's description twice, 5000 lines apart, for many locations.
+        let mut text = String::new();
+        for id in 1..=3 {
+            text.push_str(&format!("robotLocationDescription {id} first\n"));
+        }
+        text.push_str(&"# filler\n".repeat(5000));
+        for id in 1..=3 {
+            text.push_str(&format!("robotLocationDescription {id} second\n"));
+        }
+        let out = human("kb.dat", &text);
+        for id in 1..=3 {
+            let report = out
+                .split("\n\n")
+                .find(|report| report.contains(&format!("location {id} has")))
+                .unwrap();
+            let numbered = gutters(report);
+            let (first, second) = (id, 5003 + id);
+            assert!(numbered.contains(&first.to_string().as_str()), "{report}");
+            assert!(numbered.contains(&second.to_string().as_str()), "{report}");
+            assert!(report.contains("first given here"), "{report}");
         }
     }
 

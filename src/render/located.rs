@@ -60,11 +60,7 @@ impl<'a> FileReport<'a> {
     /// Locates the findings [`Checked::shown`] lists (at most
     /// [`MAX_SHOWN_PER_RULE`](crate::check::MAX_SHOWN_PER_RULE) of each rule).
     pub fn new(checked: &'a Checked<'a>) -> FileReport<'a> {
-        let text = checked.source.text();
-        let locator = Locator {
-            text,
-            cursor: Cell::new((0, Position { line: 1, column: 1 })),
-        };
+        let locator = Locator::new(checked.source.text());
         let diagnostics = checked
             .shown()
             .map(|diagnostic| LocatedDiagnostic {
@@ -96,22 +92,53 @@ impl<'a> FileReport<'a> {
     }
 }
 
+/// A byte offset whose position is known: where a scan can start.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Mark {
+    pub offset: u32,
+    pub position: Position,
+}
+
+impl Mark {
+    /// The start of the file.
+    pub const START: Mark = Mark {
+        offset: 0,
+        position: Position { line: 1, column: 1 },
+    };
+
+    /// How far `offset` is from the mark, in bytes.
+    pub fn distance(self, offset: u32) -> u32 {
+        self.offset.abs_diff(offset)
+    }
+}
+
 /// Converts spans to regions by scanning on from the last position found. Findings come
 /// sorted by position, so the scans add up to about one pass over the file (with memchr),
 /// and no index of every line is built (on a 100,000-location file that index was 900,000
 /// entries, built to locate a thousand findings). Locating many findings on one huge line
 /// (a million-stop tour) costs the line's length once, not once per finding.
-struct Locator<'a> {
+pub(super) struct Locator<'a> {
     text: &'a str,
-    /// An offset and its position.
-    cursor: Cell<(u32, Position)>,
+    /// Where the last region started.
+    cursor: Cell<Mark>,
 }
 
-impl Locator<'_> {
+impl<'a> Locator<'a> {
+    pub fn new(text: &'a str) -> Locator<'a> {
+        Locator {
+            text,
+            cursor: Cell::new(Mark::START),
+        }
+    }
+
     fn region(&self, span: Span) -> Region {
         let start = self.position(self.cursor.get(), span.start);
-        self.cursor.set((span.start, start));
-        let end = self.position((span.start, start), span.end);
+        let mark = Mark {
+            offset: span.start,
+            position: start,
+        };
+        self.cursor.set(mark);
+        let end = self.position(mark, span.end);
         Region {
             line: start.line,
             column: start.column,
@@ -120,11 +147,13 @@ impl Locator<'_> {
         }
     }
 
-    /// The position of `offset`, counted from `from`, the known position of another offset.
-    fn position(&self, (from_offset, from): (u32, Position), offset: u32) -> Position {
+    /// The position of `offset`, counted from `from`: the cost is the distance between them
+    /// (and, backwards, the length of the line of `offset`).
+    pub fn position(&self, from: Mark, offset: u32) -> Position {
         let bytes = self.text.as_bytes();
         let offset = (offset as usize).min(bytes.len());
-        let from_offset = (from_offset as usize).min(bytes.len());
+        let from_offset = (from.offset as usize).min(bytes.len());
+        let from = from.position;
         let newlines = |range: &[u8]| memchr::memchr_iter(b'\n', range).count() as u32;
         if offset >= from_offset {
             let skipped = &bytes[from_offset..offset];
@@ -157,13 +186,13 @@ mod tests {
     fn scanning_on_agrees_with_the_line_index() {
         let text = "ab\nÙmuntu x\n\nlast é line";
         let index = LineIndex::new(text);
-        let locator = Locator {
-            text,
-            cursor: Cell::new((0, Position { line: 1, column: 1 })),
-        };
+        let locator = Locator::new(text);
         let offsets = [0, 1, 5, 12, 13, 14, 2, 3, 20, 4, text.len() as u32, 0];
         for from in offsets {
-            let known = (from, index.position(text, from));
+            let known = Mark {
+                offset: from,
+                position: index.position(text, from),
+            };
             for offset in offsets {
                 assert_eq!(
                     locator.position(known, offset),
