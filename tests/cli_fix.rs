@@ -124,6 +124,20 @@ fn fix_changes_only_the_bytes_of_the_fixes() {
 }
 
 #[test]
+fn fix_converts_a_doubled_crlf_ending_in_one_run() {
+    // A file converted to CRLF twice (and one line without an ending at all, which the
+    // fuzzer found): every run of `\r` before a newline is one ending.
+    let text = "robotLocationDescription 1 Roomba\r\r\n\
+                robotLocationDescription 2 Pepper\r\r\r\r\r\r\r\r\r\r\r\r";
+    ekb()
+        .args(["fix", "-"])
+        .write_stdin(text)
+        .assert()
+        .code(1)
+        .stdout("robotLocationDescription 1 Roomba\nrobotLocationDescription 2 Pepper\n");
+}
+
+#[test]
 fn fix_lists_the_errors_left_for_a_person() {
     let text = read_fixture("seed-small.dat")
         .replace("tourSpecification 2 1 2", "tourSpecification 2 1 9");

@@ -158,10 +158,15 @@ impl<'a> Builder<'a> {
         compat::compat_line_too_long::check(line, self.text, out);
         content::trailing_whitespace::check(line, self.text, out);
         if line.ending == syntax::LineEnding::CrLf {
-            self.crlf_endings.push(Span::new(
-                line.trailing.end as usize,
-                line.span.end as usize,
-            ));
+            // A file converted to CRLF twice ends its lines with `\r\r\n`: the whole run is
+            // one ending to convert, or converting `\r\n` would leave another behind.
+            let bytes = self.text.as_bytes();
+            let mut start = line.trailing.end as usize;
+            while start > line.span.start as usize && bytes[start - 1] == b'\r' {
+                start -= 1;
+            }
+            self.crlf_endings
+                .push(Span::new(start, line.span.end as usize));
         }
         if let Body::Entry { key, args } = line.body {
             structure::control_character::check(args, self.text, out);
