@@ -125,10 +125,10 @@ fn fix_changes_only_the_bytes_of_the_fixes() {
 
 #[test]
 fn fix_converts_a_doubled_crlf_ending_in_one_run() {
-    // A file converted to CRLF twice (and one line without an ending at all, which the
-    // fuzzer found): every run of `\r` before a newline is one ending.
+    // A file converted to CRLF twice, and inputs the fuzzer found (a last line without an
+    // ending, `\r`s and blanks mixed): the `\r`s before a newline are one ending.
     let text = "robotLocationDescription 1 Roomba\r\r\n\
-                robotLocationDescription 2 Pepper\r\r\r\r\r\r\r\r\r\r\r\r";
+                robotLocationDescription 2 Pepper\r\r\t\r\r\r \r\r\t\r\r\r\r\r\r\r\r\r\r\r\r";
     ekb()
         .args(["fix", "-"])
         .write_stdin(text)

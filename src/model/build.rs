@@ -158,12 +158,17 @@ impl<'a> Builder<'a> {
         compat::compat_line_too_long::check(line, self.text, out);
         content::trailing_whitespace::check(line, self.text, out);
         if line.ending == syntax::LineEnding::CrLf {
-            // A file converted to CRLF twice ends its lines with `\r\r\n`: the whole run is
-            // one ending to convert, or converting `\r\n` would leave another behind.
+            // A file converted to CRLF twice ends its lines with `\r\r\n`: the `\r`s before
+            // the ending (with any blanks among them) are one ending to convert, or
+            // converting `\r\n` would leave another CRLF behind, pass after pass.
             let bytes = self.text.as_bytes();
             let mut start = line.trailing.end as usize;
-            while start > line.span.start as usize && bytes[start - 1] == b'\r' {
-                start -= 1;
+            let mut at = start;
+            while at > line.span.start as usize && matches!(bytes[at - 1], b'\r' | b' ' | b'\t') {
+                at -= 1;
+                if bytes[at] == b'\r' {
+                    start = at;
+                }
             }
             self.crlf_endings
                 .push(Span::new(start, line.span.end as usize));
