@@ -34,29 +34,27 @@ pub fn check(location: &Location<'_>, out: &mut Diagnostics) {
             continue;
         }
         out.push_with(&UNTRANSLATED_MESSAGE, || {
-        let english = location
-            .message(phase, Language::English)
-            .filter(|english| !is_placeholder(english.value));
-        let help = match english {
-            Some(english) if language != Language::English => format!(
-                "translate the English message into {}: \"{}\"",
-                language.name(),
-                english.value
-            ),
-            _ => format!("write the message in {}", language.name()),
-        };
-            Diagnostic::new(&UNTRANSLATED_MESSAGE,
-                message.span,
-                format!(
-                    "the {} message {} the gesture at location {} is a placeholder: the robot would say \"{}\"",
+            let english = location
+                .message(phase, Language::English)
+                .filter(|english| !is_placeholder(english.value));
+            let help = match english {
+                Some(english) if language != Language::English => format!(
+                    "translate the English message into {}: \"{}\"",
                     language.name(),
-                    phase.name(),
-                    location.id,
-                    message.value
+                    english.value
                 ),
-            )
-            .at_location(Some(location.id))
-            .with_help(help)
+                _ => format!("write the message in {}", language.name()),
+            };
+            let message_text = format!(
+                "the {} message {} the gesture at location {} is a placeholder: the robot would say \"{}\"",
+                language.name(),
+                phase.name(),
+                location.id,
+                message.value
+            );
+            Diagnostic::new(&UNTRANSLATED_MESSAGE, message.span, message_text)
+                .at_location(Some(location.id))
+                .with_help(help)
         });
     }
 }

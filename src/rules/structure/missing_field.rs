@@ -41,26 +41,26 @@ pub fn check(location: &Location<'_>, context: &LocationContext<'_>, out: &mut D
         let missing: Vec<Key> = missing.collect();
         let first = missing[0];
         let id = location.id;
-    let names: Vec<String> = missing
-        .iter()
-        .map(|key| format!("`{}`", key.name()))
-        .collect();
-    let message = match missing.len() {
-        1 => format!(
-            "location {id} has no {}: {}",
-            names[0],
-            consequence::lost(first, Some(id))
-        ),
-        count => format!(
-            "location {id} lacks {count} fields ({}): the robot's reader leaves them empty; for one, {}",
-            names.join(", "),
-            consequence::lost(first, Some(id))
-        ),
-    };
-    let lines: Vec<String> = missing
-        .iter()
-        .map(|key| format!("`{} {id} …`", key.name()))
-        .collect();
+        let names: Vec<String> = missing
+            .iter()
+            .map(|key| format!("`{}`", key.name()))
+            .collect();
+        let message = match missing.len() {
+            1 => format!(
+                "location {id} has no {}: {}",
+                names[0],
+                consequence::lost(first, Some(id))
+            ),
+            count => format!(
+                "location {id} lacks {count} fields ({}): the robot's reader leaves them empty; for one, {}",
+                names.join(", "),
+                consequence::lost(first, Some(id))
+            ),
+        };
+        let lines: Vec<String> = missing
+            .iter()
+            .map(|key| format!("`{} {id} …`", key.name()))
+            .collect();
         Diagnostic::new(&MISSING_FIELD, location.first_line, message)
             .at_location(Some(id))
             .with_help(match lines.len() {
