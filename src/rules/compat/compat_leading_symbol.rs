@@ -35,28 +35,29 @@ pub fn check(key: Key, id: u32, span: Span, value: &str, out: &mut Diagnostics) 
     if first.is_ascii_alphanumeric() {
         return;
     }
-    let loaded = value.trim_start_matches(|c: char| !c.is_ascii_alphanumeric());
-    let is_number = matches!(key.value_kind(), ValueKind::Pose | ValueKind::Point);
-    let first_token = value.split([' ', '\t']).next().unwrap_or(value);
-    let message = if is_number {
-        let loaded_token = first_token.trim_start_matches(|c: char| !c.is_ascii_alphanumeric());
-        format!(
-            "the first number `{first_token}` starts with `{first}`: the robot's reader skips it and loads {}",
-            if loaded_token.is_empty() { "the next number instead".to_string() } else { format!("`{loaded_token}`") }
-        )
-    } else {
-        format!(
-            "the value starts with `{first}`: the robot's reader skips it and loads \"{}\"",
-            loaded.chars().take(40).collect::<String>()
-        )
-    };
-    let help = match (is_number, first) {
-        (true, '.') => format!("write `0{first_token}`"),
-        (true, '+') => format!("write `{}`", &first_token[1..]),
-        (true, _) => "the robot cannot read a negative first number: move the map's origin, or fix the robot's reader".to_string(),
-        (false, _) => "start the value with an ASCII letter or digit".to_string(),
-    };
+    // Made only if kept: a file of negative first numbers has this on every pose line.
     out.push_with(&COMPAT_LEADING_SYMBOL, || {
+        let loaded = value.trim_start_matches(|c: char| !c.is_ascii_alphanumeric());
+        let is_number = matches!(key.value_kind(), ValueKind::Pose | ValueKind::Point);
+        let first_token = value.split([' ', '\t']).next().unwrap_or(value);
+        let message = if is_number {
+            let loaded_token = first_token.trim_start_matches(|c: char| !c.is_ascii_alphanumeric());
+            format!(
+                "the first number `{first_token}` starts with `{first}`: the robot's reader skips it and loads {}",
+                if loaded_token.is_empty() { "the next number instead".to_string() } else { format!("`{loaded_token}`") }
+            )
+        } else {
+            format!(
+                "the value starts with `{first}`: the robot's reader skips it and loads \"{}\"",
+                loaded.chars().take(40).collect::<String>()
+            )
+        };
+        let help = match (is_number, first) {
+            (true, '.') => format!("write `0{first_token}`"),
+            (true, '+') => format!("write `{}`", &first_token[1..]),
+            (true, _) => "the robot cannot read a negative first number: move the map's origin, or fix the robot's reader".to_string(),
+            (false, _) => "start the value with an ASCII letter or digit".to_string(),
+        };
         Diagnostic::new(
             &COMPAT_LEADING_SYMBOL,
             Span::new(span.start as usize, span.start as usize + first.len_utf8()),
