@@ -649,6 +649,33 @@ fn compat_crlf_fix() {
 }
 
 #[test]
+fn blanks_within_a_crlf_ending_are_its_own_to_remove() {
+    // Found by the proptest: `\r \r\n` is one ending, so trailing-whitespace must not also
+    // remove its blank, or the two fixes overlap.
+    for text in ["\r \r\n", "robotLocationDescription 1 Roomba\r\t\r \r\n"] {
+        let source = SourceFile::from_bytes("crlf", text.as_bytes().to_vec());
+        let all = findings_of(&source, Options::default());
+        assert_eq!(
+            of_rule(&all, "compat-crlf").len(),
+            1,
+            "{text:?}:\n{}",
+            show(&all)
+        );
+        assert!(
+            of_rule(&all, "trailing-whitespace").is_empty(),
+            "{text:?}:\n{}",
+            show(&all)
+        );
+        let edits: Vec<&Edit> = all
+            .iter()
+            .filter_map(|f| f.diagnostic.fix.as_ref())
+            .flat_map(|fix| &fix.edits)
+            .collect();
+        assert!(apply(text, &edits).ends_with('\n'));
+    }
+}
+
+#[test]
 fn compat_no_final_newline_fix() {
     assert_fix_gives_good("compat-no-final-newline", Options::default());
 }

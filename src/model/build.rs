@@ -156,23 +156,9 @@ impl<'a> Builder<'a> {
 
     fn line(&mut self, line: &Line, out: &mut Diagnostics) {
         compat::compat_line_too_long::check(line, self.text, out);
-        content::trailing_whitespace::check(line, self.text, out);
-        if line.ending == syntax::LineEnding::CrLf {
-            // A file converted to CRLF twice ends its lines with `\r\r\n`: the `\r`s before
-            // the ending (with any blanks among them) are one ending to convert, or
-            // converting `\r\n` would leave another CRLF behind, pass after pass.
-            let bytes = self.text.as_bytes();
-            let mut start = line.trailing.end as usize;
-            let mut at = start;
-            while at > line.span.start as usize && matches!(bytes[at - 1], b'\r' | b' ' | b'\t') {
-                at -= 1;
-                if bytes[at] == b'\r' {
-                    start = at;
-                }
-            }
-            self.crlf_endings
-                .push(Span::new(start, line.span.end as usize));
-        }
+        let crlf_ending = compat::compat_crlf::ending(line, self.text);
+        content::trailing_whitespace::check(line, crlf_ending, self.text, out);
+        self.crlf_endings.extend(crlf_ending);
         if let Body::Entry { key, args } = line.body {
             structure::control_character::check(args, self.text, out);
             self.entry(key, args, out);

@@ -1,7 +1,7 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::rules::declare_rule;
-use crate::syntax::Span;
+use crate::syntax::{Line, LineEnding, Span};
 
 declare_rule! {
     /// ## What it does
@@ -23,7 +23,28 @@ declare_rule! {
     };
 }
 
-/// `endings` are the spans of every `\r\n` in the file, in order.
+/// The span the fix replaces by `\n` in a line that ends with CRLF.
+///
+/// A file converted to CRLF twice ends its lines with `\r\r\n`: the `\r`s before the
+/// ending (with any blanks among them) are one ending to convert, or converting `\r\n`
+/// would leave another CRLF behind, pass after pass.
+pub fn ending(line: &Line, text: &str) -> Option<Span> {
+    if line.ending != LineEnding::CrLf {
+        return None;
+    }
+    let bytes = text.as_bytes();
+    let mut start = line.trailing.end as usize;
+    let mut at = start;
+    while at > line.span.start as usize && matches!(bytes[at - 1], b'\r' | b' ' | b'\t') {
+        at -= 1;
+        if bytes[at] == b'\r' {
+            start = at;
+        }
+    }
+    Some(Span::new(start, line.span.end as usize))
+}
+
+/// `endings` are the spans [`ending`] gave for every line that ends with CRLF, in order.
 pub fn check(endings: &[Span], out: &mut Diagnostics) {
     let Some(&first) = endings.first() else {
         return;
