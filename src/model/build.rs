@@ -4,12 +4,11 @@
 //! line (its key, id, numbers, arity, text) report from here, through their own modules.
 
 use std::collections::HashMap;
-use std::hash::{BuildHasherDefault, Hasher};
 use std::ops::Range;
 
 use crate::check::Diagnostics;
 use crate::model::{
-    words, Arm, Dialect, Key, KnowledgeBase, Location, Point, Pose, Tour, Value, ValueKind,
+    words, Arm, Dialect, IdMap, Key, KnowledgeBase, Location, Point, Pose, Tour, Value, ValueKind,
 };
 use crate::parallel;
 use crate::render::escape::escape;
@@ -78,13 +77,16 @@ struct Builder<'a> {
     /// written so; those locations are found by binary search, with no map at all.
     ascending: usize,
     /// Where each location after the ascending ones is in `locations`.
-    index: HashMap<u32, u32, BuildHasherDefault<IdHasher>>,
+    index: IdMap<u32>,
     /// The location of the previous line: most lines follow one of the same id.
     last: Option<(u32, usize)>,
     tour: Option<Tour>,
     /// The first `robotLocation` and `robotLocationPose` lines, and how many of each.
     first_pose_key: [Option<(Span, usize)>; 2],
     crlf_endings: Vec<Span>,
+    /// Whether the builder's lines have a byte that may start a control character: nearly
+    /// no file has one, and one pass over all the bytes costs less than a check per value.
+    controls_possible: bool,
     /// Lines whose value could not be loaded, by id and key slot: the model holds no span
     /// for them, yet a later duplicate must point back at them.
     rejected: HashMap<(u32, usize), Span>,
@@ -103,12 +105,13 @@ impl<'a> Builder<'a> {
             options: *options,
             locations: Vec::new(),
             ascending: 0,
-            index: HashMap::default(),
+            index: IdMap::default(),
             last: None,
             tour: None,
             first_pose_key: [None, None],
             crlf_endings: Vec::new(),
             rejected: HashMap::new(),
+            controls_possible: structure::control_character::possible_in(&text[range.clone()]),
         };
         for line in syntax::lines_from(&text[..range.end], range.start) {
             builder.line(&line, out);
@@ -160,7 +163,9 @@ impl<'a> Builder<'a> {
         content::trailing_whitespace::check(line, crlf_ending, self.text, out);
         self.crlf_endings.extend(crlf_ending);
         if let Body::Entry { key, args } = line.body {
-            structure::control_character::check(args, self.text, out);
+            if self.controls_possible {
+                structure::control_character::check(args, self.text, out);
+            }
             self.entry(key, args, out);
         }
     }
@@ -421,32 +426,6 @@ impl<'a> Builder<'a> {
     }
 }
 
-/// A hasher for location ids: one multiplication, instead of SipHash (made to resist
-/// flooding by network peers, which a local file does not need). The high half is folded
-/// in so that ids that are multiples of a power of two still spread over the table.
-#[derive(Default)]
-struct IdHasher(u64);
-
-impl Hasher for IdHasher {
-    fn write(&mut self, bytes: &[u8]) {
-        for &byte in bytes {
-            self.write_u64(u64::from(byte) ^ self.0.rotate_left(8));
-        }
-    }
-
-    fn write_u32(&mut self, n: u32) {
-        self.write_u64(u64::from(n));
-    }
-
-    fn write_u64(&mut self, n: u64) {
-        self.0 = n.wrapping_mul(0x9E37_79B9_7F4A_7C15);
-    }
-
-    fn finish(&self) -> u64 {
-        self.0 ^ (self.0 >> 32)
-    }
-}
-
 /// The span of the value `key` holds in `location`, if it holds one.
 fn earlier_span(location: &Location<'_>, key: Key) -> Option<Span> {
     match key.value_kind() {
@@ -498,6 +477,9 @@ pub fn parse_id(token: &str) -> Option<u32> {
 
 /// A finite decimal number (`nan`, `inf` and digits out of range are not).
 pub fn parse_number(token: &str) -> Option<f64> {
+    if let Some(number) = parse_plain_decimal(token.as_bytes()) {
+        return Some(number);
+    }
     let starts_well = token
         .bytes()
         .next()
@@ -506,6 +488,41 @@ pub fn parse_number(token: &str) -> Option<f64> {
         return None;
     }
     token.parse::<f64>().ok().filter(|n| n.is_finite())
+}
+
+/// A number written as most are, `[-+]digits[.digits]` with at most 15 digits, exactly as
+/// `str::parse` reads it, for a fraction of the work: the digits are an integer below
+/// 2^53 and the power of ten is exact, so the one division rounds correctly (Clinger's
+/// fast path). Anything else is `None`, for `str::parse` to read.
+#[inline]
+fn parse_plain_decimal(bytes: &[u8]) -> Option<f64> {
+    const POWERS_OF_TEN: [f64; 16] = [
+        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+    ];
+    let (negative, digits) = match bytes.first()? {
+        b'-' => (true, &bytes[1..]),
+        b'+' => (false, &bytes[1..]),
+        _ => (false, bytes),
+    };
+    let mut mantissa = 0u64;
+    let mut count = 0;
+    let mut point = None;
+    for (at, &byte) in digits.iter().enumerate() {
+        match byte {
+            b'0'..=b'9' if count < 15 => {
+                mantissa = mantissa * 10 + u64::from(byte - b'0');
+                count += 1;
+            }
+            b'.' if point.is_none() => point = Some(at),
+            _ => return None,
+        }
+    }
+    if count == 0 {
+        return None;
+    }
+    let scale = point.map_or(0, |at| digits.len() - at - 1);
+    let magnitude = mantissa as f64 / POWERS_OF_TEN[scale];
+    Some(if negative { -magnitude } else { magnitude })
 }
 
 /// The three numbers of a pose or a point, reporting what is wrong with them.
@@ -700,6 +717,28 @@ mod tests {
             assert_eq!(parse_number(bad), None, "{bad}");
         }
         assert_eq!(parse_number(&format!("1{}", "0".repeat(399))), None);
+    }
+
+    proptest::proptest! {
+        /// The fast path reads a plain decimal to the same bits as `str::parse`.
+        #[test]
+        fn plain_decimals_read_as_str_parse_reads_them(
+            sign in "[-+]?",
+            whole in "[0-9]{0,17}",
+            fraction in proptest::option::of("[0-9]{0,17}"),
+        ) {
+            let token = match fraction {
+                Some(fraction) => format!("{sign}{whole}.{fraction}"),
+                None => format!("{sign}{whole}"),
+            };
+            let expected = token.parse::<f64>().ok();
+            proptest::prop_assert_eq!(
+                parse_number(&token).map(f64::to_bits),
+                expected.map(f64::to_bits),
+                "{}",
+                token
+            );
+        }
     }
 
     #[test]

@@ -7,9 +7,11 @@
 
 pub mod build;
 pub mod export;
+mod ids;
 mod keys;
 mod text;
 
+pub use ids::{IdMap, IdSet};
 pub use keys::{Dialect, Key, Language, Phase, ValueKind};
 pub use text::{is_placeholder, words};
 

@@ -7,9 +7,15 @@ pub fn words(text: &str) -> impl Iterator<Item = &str> {
 
 /// Whether a message is a placeholder such as `No message in isiZulu` rather than a message.
 pub fn is_placeholder(text: &str) -> bool {
-    // Run on every message: compare in place rather than lowercase a copy.
+    // Run on every message: compare in place rather than lowercase a copy. Nearly every
+    // message is a message, and starts with a letter no placeholder starts with (a value
+    // starts after the blanks, so only a rare Unicode space needs the trim to see that).
+    if text.as_bytes().first().is_some_and(|&first| {
+        first.is_ascii_graphic() && !matches!(first, b'n' | b'N' | b't' | b'T' | b'-' | b'.')
+    }) {
+        return false;
+    }
     let text = text.trim().as_bytes();
-    // Nearly every message is a message: most start with a letter no placeholder starts with.
     if !matches!(text.first(), Some(b'n' | b'N' | b't' | b'T' | b'-' | b'.')) {
         return false;
     }
@@ -37,5 +43,7 @@ mod tests {
         assert!(!is_placeholder("Nomessage is fine as a word"));
         assert!(!is_placeholder("No messages are lost when you follow me"));
         assert!(!is_placeholder("Murakaza neza"));
+        assert!(is_placeholder("\u{a0}TBD "));
+        assert!(!is_placeholder(""));
     }
 }

@@ -5,11 +5,9 @@
 //! the text of a line run while the model is built ([`crate::model::build`]); rules that need
 //! whole locations or the tour run afterwards, over the model ([`check_model`]).
 
-use std::collections::HashSet;
-
 use crate::check::Diagnostics;
 use crate::diagnostic::Severity;
-use crate::model::{Dialect, Key, KnowledgeBase, Location};
+use crate::model::{Dialect, IdSet, Key, KnowledgeBase, Location};
 
 pub mod compat;
 mod consequence;
@@ -181,7 +179,7 @@ pub struct LocationContext<'k> {
     /// The key a location's pose must be written with, in the file's dialect.
     pub pose_key: Key,
     /// The ids the tour visits; `None` if there is no tour.
-    pub visited: Option<HashSet<u32>>,
+    pub visited: Option<IdSet>,
 }
 
 impl<'k> LocationContext<'k> {

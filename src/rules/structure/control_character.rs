@@ -68,6 +68,45 @@ pub fn check(span: Span, text: &str, out: &mut Diagnostics) {
 
 /// The bidirectional embedding, override and isolate controls: invisible, they reorder the
 /// text around them on screen (the "Trojan Source" trick) while the robot says it in order.
+/// Whether `text` has a byte that a control character or a text-direction control can
+/// start with, in UTF-8: below U+0020 (but not a tab or a newline), U+007F, `0xC2` (U+0080
+/// to U+00BF) or `0xE2` (U+2000 to U+2FFF). If not, no value in it needs [`check`].
+pub fn possible_in(text: &str) -> bool {
+    // Folded without an early exit, so that the compiler tests many bytes at a time.
+    let possible = |byte: u8| {
+        (u8::from(byte < 0x20) & u8::from(byte != b'\t') & u8::from(byte != b'\n'))
+            | u8::from(byte == 0x7f)
+            | u8::from(byte == 0xc2)
+            | u8::from(byte == 0xe2)
+    };
+    text.as_bytes()
+        .chunks(4096)
+        .any(|chunk| chunk.iter().fold(0, |any, &byte| any | possible(byte)) != 0)
+}
+
 fn is_bidi_control(ch: char) -> bool {
     matches!(ch, '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_character_the_rule_flags_makes_it_possible() {
+        let mut buffer = [0; 4];
+        for ch in (0..=0x10FFFF).filter_map(char::from_u32) {
+            if (ch.is_control() && ch != '\t' && ch != '\n') || is_bidi_control(ch) {
+                let text = format!("value {}", ch.encode_utf8(&mut buffer));
+                assert!(possible_in(&text), "U+{:04X}", ch as u32);
+            }
+        }
+    }
+
+    #[test]
+    fn plain_text_needs_no_check() {
+        assert!(!possible_in(
+            "robotLocationDescription\t1 Ùmuntu, é, ñ, ß and 中文\nnext line\n"
+        ));
+    }
 }
