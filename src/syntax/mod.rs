@@ -24,18 +24,12 @@ pub fn is_blank(byte: u8) -> bool {
 pub fn tokens(text: &str, offset: usize) -> impl Iterator<Item = (Span, &str)> {
     let bytes = text.as_bytes();
     let mut pos = 0;
-    // A byte loop: tokens are short words and numbers (see `blanks` for long runs).
     std::iter::from_fn(move || {
-        while pos < bytes.len() && is_blank(bytes[pos]) {
-            pos += 1;
-        }
-        if pos == bytes.len() {
+        let start = next_non_blank(bytes, pos, bytes.len());
+        if start == bytes.len() {
             return None;
         }
-        let start = pos;
-        while pos < bytes.len() && !is_blank(bytes[pos]) {
-            pos += 1;
-        }
+        pos = next_blank(bytes, start, bytes.len());
         Some((Span::new(offset + start, offset + pos), &text[start..pos]))
     })
 }
