@@ -7,6 +7,7 @@
 use std::io::{self, Write};
 use std::path::{Path, MAIN_SEPARATOR_STR};
 
+use serde::{Serialize, Serializer};
 use serde_json::{json, Value};
 
 use super::located::Region;
@@ -30,21 +31,49 @@ pub fn render(reports: &[FileReport<'_>], out: &mut dyn Write) -> io::Result<()>
     if !homepage.is_empty() {
         driver["informationUri"] = json!(homepage);
     }
-    let results: Vec<Value> = reports
-        .iter()
-        .flat_map(|report| &report.diagnostics)
-        .map(result)
-        .collect();
-    let log = json!({
-        "$schema": SCHEMA,
-        "version": "2.1.0",
-        "runs": [{
-            "tool": { "driver": driver },
-            "columnKind": "unicodeCodePoints",
-            "results": results,
+    let log = Log {
+        schema: SCHEMA,
+        runs: [Run {
+            column_kind: "unicodeCodePoints",
+            results: Results(reports),
+            tool: json!({ "driver": driver }),
         }],
-    });
+        version: "2.1.0",
+    };
     super::safe_json::write(&log, out)
+}
+
+// The log's fields in the order of their names, as `json!` objects write theirs.
+
+#[derive(Serialize)]
+struct Log<'r, 'a> {
+    #[serde(rename = "$schema")]
+    schema: &'static str,
+    runs: [Run<'r, 'a>; 1],
+    version: &'static str,
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct Run<'r, 'a> {
+    column_kind: &'static str,
+    results: Results<'r, 'a>,
+    tool: Value,
+}
+
+/// The results, each made as it is written: a tree of them all would hold the JSON of
+/// every finding shown at once, the largest part of the peak memory on a huge file.
+struct Results<'r, 'a>(&'r [FileReport<'a>]);
+
+impl Serialize for Results<'_, '_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_seq(
+            self.0
+                .iter()
+                .flat_map(|report| &report.diagnostics)
+                .map(result),
+        )
+    }
 }
 
 /// A `reportingDescriptor`: the rule as code scanning lists it.
