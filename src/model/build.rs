@@ -72,6 +72,9 @@ const JOIN_STEP: usize = 4096;
 struct Builder<'a> {
     text: &'a str,
     options: Options,
+    /// Locations joined from earlier parts (see [`Builder::join`]): each in ascending id
+    /// order, and all before those of `locations`.
+    runs: Vec<Vec<Location<'a>>>,
     locations: Vec<Location<'a>>,
     /// How many of the first `locations` are in ascending id order. Files are usually
     /// written so; those locations are found by binary search, with no map at all.
@@ -103,6 +106,7 @@ impl<'a> Builder<'a> {
         let mut builder = Builder {
             text,
             options: *options,
+            runs: Vec::new(),
             // Room for the locations of a part this size (a location is usually nine lines
             // of 600 bytes together; this leaves room for terser ones): growing the list
             // would copy it, and the join adds the later parts' locations to the first's.
@@ -132,10 +136,83 @@ impl<'a> Builder<'a> {
             return false;
         }
         self.tour = self.tour.take().or(later.tour);
+        let joined = if self.is_continued_by(&later.locations, later.ascending) {
+            self.append_run(later.locations)
+        } else {
+            self.flatten();
+            self.merge(later.locations)
+        };
+        if !joined {
+            return false;
+        }
+        for (first, next) in self.first_pose_key.iter_mut().zip(later.first_pose_key) {
+            *first = match (*first, next) {
+                (Some((span, count)), Some((_, more))) => Some((span, count + more)),
+                (first, next) => first.or(next),
+            };
+        }
+        self.crlf_endings.extend(later.crlf_endings);
+        true
+    }
+
+    /// Whether `later` (the locations of the next part, the first `ascending` of them in
+    /// ascending id order) goes on in id order from where this builder's locations stop, as
+    /// a file written in id order does. Then the only location the two can share is this
+    /// builder's last, `later`'s first, whose lines the parts' boundary cut.
+    fn is_continued_by(&self, later: &[Location<'a>], ascending: usize) -> bool {
+        // (`locations` is empty only if no location was read yet: a run is never empty.)
+        self.ascending == self.locations.len()
+            && ascending == later.len()
+            && match (self.locations.last(), later.first()) {
+                (Some(last), Some(first)) => last.id <= first.id,
+                _ => true,
+            }
+    }
+
+    /// Keeps `later` as it is, a run of its own: nothing is moved (see [`Locations`]).
+    fn append_run(&mut self, mut later: Vec<Location<'a>>) -> bool {
+        if later.is_empty() {
+            return true;
+        }
+        if self.locations.last().map(|last| last.id) == Some(later[0].id) {
+            // The location whose lines the boundary cut: its halves are joined where the
+            // later one is, so that neither list moves.
+            let earlier = self.locations.pop().expect("a last location");
+            let later_half = std::mem::replace(&mut later[0], earlier);
+            if !later[0].join(later_half) {
+                return false;
+            }
+        }
+        if !self.locations.is_empty() {
+            self.runs.push(std::mem::take(&mut self.locations));
+        }
+        self.ascending = later.len();
+        self.locations = later;
+        self.last = None;
+        true
+    }
+
+    /// Makes the runs one list with `locations`, for a join that looks locations up by id.
+    fn flatten(&mut self) {
+        if self.runs.is_empty() {
+            return;
+        }
+        // Only lists in ascending order become runs, so all of them are, one after the
+        // other, with no location in the index.
+        debug_assert!(self.ascending == self.locations.len() && self.index.is_empty());
+        let mut all: Vec<Location<'a>> = self.runs.drain(..).flatten().collect();
+        all.append(&mut self.locations);
+        self.ascending = all.len();
+        self.locations = all;
+        self.last = None;
+    }
+
+    /// Adds `later`'s locations one by one: each joins the one of its id, or is added.
+    fn merge(&mut self, later: Vec<Location<'a>>) -> bool {
         // The largest thing a part holds is its locations. They are taken from the end of
         // the reversed list (so in file order), which gives its memory back as it shrinks,
         // so that the two parts' locations are never all held twice.
-        let mut rest = later.locations;
+        let mut rest = later;
         rest.reverse();
         while let Some(location) = rest.pop() {
             if rest.len() % JOIN_STEP == 0 {
@@ -152,13 +229,6 @@ impl<'a> Builder<'a> {
                 }
             }
         }
-        for (first, next) in self.first_pose_key.iter_mut().zip(later.first_pose_key) {
-            *first = match (*first, next) {
-                (Some((span, count)), Some((_, more))) => Some((span, count + more)),
-                (first, next) => first.or(next),
-            };
-        }
-        self.crlf_endings.extend(later.crlf_endings);
         true
     }
 
@@ -422,12 +492,16 @@ impl<'a> Builder<'a> {
             [Some(_), None] => Some(Dialect::Seed),
             [None, Some(_)] => Some(Dialect::Current),
             [None, None] => self
-                .locations
+                .runs
                 .iter()
+                .flatten()
+                .chain(&self.locations)
                 .any(|l| l.gesture_arm.is_some() || l.cultural_knowledge().is_some())
                 .then_some(Dialect::Current),
         };
-        KnowledgeBase::new(dialect, self.locations, self.tour)
+        let mut runs = self.runs;
+        runs.push(self.locations);
+        KnowledgeBase::from_runs(dialect, runs, self.tour)
     }
 }
 
@@ -602,6 +676,30 @@ mod tests {
             .filter(|d| d.rule.name == "duplicate-key")
             .count();
         assert_eq!(duplicates, 4);
+    }
+
+    #[test]
+    fn a_file_in_id_order_keeps_a_run_per_part() {
+        let text: String = (1..=30)
+            .map(|id| format!("robotLocationDescription {id} a\nrobotLocation {id} 1 2 3\n"))
+            .collect();
+        let mut out = Diagnostics::default();
+        let kb = build_in_parts(&text, &Options::default(), 3, &mut out);
+        assert_eq!(kb.locations().runs().len(), 3);
+        assert_eq!(kb.locations().len(), 30);
+        for id in 1..=30 {
+            // Found in every run, the halves a boundary cut joined.
+            let location = kb.location(id).unwrap();
+            assert!(location.description().is_some() && location.pose.is_some());
+        }
+        assert!(kb.location(0).is_none() && kb.location(31).is_none());
+        assert_parts_agree(&text);
+        // A part out of order after parts in order: the runs become one list again.
+        let targets: String = (1..=30)
+            .rev()
+            .map(|id| format!("gestureTarget {id} 1 2 3\n"))
+            .collect();
+        assert_parts_agree(&format!("{text}{targets}"));
     }
 
     /// Builds `text` in one part and in 2 to 6, and asserts the same model and findings.

@@ -245,36 +245,41 @@ pub struct Tour {
 pub struct KnowledgeBase<'a> {
     /// `None` when the file has no key of either dialect.
     pub dialect: Option<Dialect>,
-    /// In ascending id order.
-    locations: Vec<Location<'a>>,
+    locations: Locations<'a>,
     pub tour: Option<Tour>,
 }
 
 impl<'a> KnowledgeBase<'a> {
     pub fn new(
         dialect: Option<Dialect>,
-        mut locations: Vec<Location<'a>>,
+        locations: Vec<Location<'a>>,
         tour: Option<Tour>,
     ) -> KnowledgeBase<'a> {
-        locations.sort_unstable_by_key(|location| location.id);
+        KnowledgeBase::from_runs(dialect, vec![locations], tour)
+    }
+
+    /// A knowledge base of the locations read from the parts of a file, a run per part in
+    /// file order (see [`Locations`]).
+    pub fn from_runs(
+        dialect: Option<Dialect>,
+        runs: Vec<Vec<Location<'a>>>,
+        tour: Option<Tour>,
+    ) -> KnowledgeBase<'a> {
         KnowledgeBase {
             dialect,
-            locations,
+            locations: Locations::new(runs),
             tour,
         }
     }
 
     /// Every location, in ascending id order.
-    pub fn locations(&self) -> &[Location<'a>] {
+    pub fn locations(&self) -> &Locations<'a> {
         &self.locations
     }
 
     /// The location with this id.
     pub fn location(&self, id: u32) -> Option<&Location<'a>> {
-        self.locations
-            .binary_search_by_key(&id, |location| location.id)
-            .ok()
-            .map(|index| &self.locations[index])
+        self.locations.get(id)
     }
 
     /// The tour's stops, in order (empty without a tour).
@@ -282,6 +287,82 @@ impl<'a> KnowledgeBase<'a> {
         self.tour
             .iter()
             .flat_map(|tour| tour.stops.iter().map(|stop| stop.value))
+    }
+}
+
+/// The locations of a knowledge base, in ascending id order.
+///
+/// A large file is read in parts, each into its own list (see [`build`]). When the lists
+/// are in id order one after the other, as in a file written in id order, they are kept as
+/// they are, as runs: moving them into one list would copy every location and touch as
+/// much new memory again. Otherwise they are made one list and sorted.
+#[derive(Debug, Clone, Default)]
+pub struct Locations<'a> {
+    /// Not empty, each in ascending id order, each after the one before.
+    runs: Vec<Vec<Location<'a>>>,
+}
+
+impl<'a> Locations<'a> {
+    fn new(runs: Vec<Vec<Location<'a>>>) -> Locations<'a> {
+        let mut runs: Vec<_> = runs.into_iter().filter(|run| !run.is_empty()).collect();
+        let in_order = runs
+            .iter()
+            .all(|run| run.is_sorted_by_key(|location| location.id))
+            && runs
+                .windows(2)
+                .all(|pair| pair[0][pair[0].len() - 1].id < pair[1][0].id);
+        if !in_order {
+            let mut all = match runs.len() {
+                1 => runs.pop().expect("one run"),
+                _ => runs.drain(..).flatten().collect(),
+            };
+            all.sort_unstable_by_key(|location| location.id);
+            runs = vec![all];
+        }
+        Locations { runs }
+    }
+
+    pub fn iter(&self) -> std::iter::Flatten<std::slice::Iter<'_, Vec<Location<'a>>>> {
+        self.runs.iter().flatten()
+    }
+
+    pub fn len(&self) -> usize {
+        self.runs.iter().map(Vec::len).sum()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.runs.is_empty()
+    }
+
+    /// The runs, in order: a large file's work is split along them.
+    pub fn runs(&self) -> &[Vec<Location<'a>>] {
+        &self.runs
+    }
+
+    fn get(&self, id: u32) -> Option<&Location<'a>> {
+        let run = &self.runs[self
+            .runs
+            .partition_point(|run| run[run.len() - 1].id < id)
+            .min(self.runs.len().checked_sub(1)?)];
+        run.binary_search_by_key(&id, |location| location.id)
+            .ok()
+            .map(|index| &run[index])
+    }
+}
+
+/// The same locations in the same order, however they are held.
+impl PartialEq for Locations<'_> {
+    fn eq(&self, other: &Self) -> bool {
+        self.len() == other.len() && self.iter().eq(other)
+    }
+}
+
+impl<'k, 'a> IntoIterator for &'k Locations<'a> {
+    type Item = &'k Location<'a>;
+    type IntoIter = std::iter::Flatten<std::slice::Iter<'k, Vec<Location<'a>>>>;
+
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
     }
 }
 

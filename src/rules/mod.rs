@@ -152,7 +152,11 @@ pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, out: &mut Diagnostics) 
     tour::tour_unknown_location::check(kb, out);
     let context = LocationContext::new(kb, source);
     // Each location is checked on its own, so a large file's are checked a part per core.
-    let parts = crate::parallel::item_parts(kb.locations()).collect();
+    let parts = match kb.locations().runs() {
+        [run] => crate::parallel::item_parts(run).collect(),
+        // Runs come from a large file's parts, a part per core.
+        runs => runs.iter().map(Vec::as_slice).collect(),
+    };
     check_locations(parts, &context, out);
 }
 
@@ -249,7 +253,8 @@ mod tests {
         let kb = crate::model::build::build(&text, &Default::default(), &mut found);
         let context = LocationContext::new(&kb, &text);
         let mut whole = Diagnostics::default();
-        check_locations(vec![kb.locations()], &context, &mut whole);
+        let locations = kb.locations().runs()[0].as_slice();
+        check_locations(vec![locations], &context, &mut whole);
         let mut rules: Vec<&str> = whole.iter().map(|d| d.rule.name).collect();
         rules.sort_unstable();
         rules.dedup();
@@ -264,7 +269,7 @@ mod tests {
         );
         for size in [1, 999, 1_500, 2_999] {
             let mut parted = Diagnostics::default();
-            check_locations(kb.locations().chunks(size).collect(), &context, &mut parted);
+            check_locations(locations.chunks(size).collect(), &context, &mut parted);
             assert!(*parted == *whole, "parts of {size} locations differ");
         }
     }
