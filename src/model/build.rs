@@ -109,8 +109,7 @@ impl<'a> Builder<'a> {
             runs: Vec::new(),
             // Room for the locations of a part this size (a location is usually nine lines
             // of 600 bytes together; this leaves room for terser ones): growing the list
-            // would copy it, and the join adds the later parts' locations to the first's.
-            // Room never written to is never given memory.
+            // would copy it. Room never written to is never given memory.
             locations: Vec::with_capacity(range.len() / 256),
             ascending: 0,
             index: IdMap::default(),
@@ -169,7 +168,8 @@ impl<'a> Builder<'a> {
             }
     }
 
-    /// Keeps `later` as it is, a run of its own: nothing is moved (see [`Locations`]).
+    /// Keeps `later` as it is, a run of its own: nothing is moved (see
+    /// [`Locations`](crate::model::Locations)).
     fn append_run(&mut self, mut later: Vec<Location<'a>>) -> bool {
         if later.is_empty() {
             return true;

@@ -66,8 +66,6 @@ pub fn check(span: Span, text: &str, out: &mut Diagnostics) {
     );
 }
 
-/// The bidirectional embedding, override and isolate controls: invisible, they reorder the
-/// text around them on screen (the "Trojan Source" trick) while the robot says it in order.
 /// Whether `text` has a byte that a control character or a text-direction control can
 /// start with, in UTF-8: below U+0020 (but not a tab or a newline), U+007F, `0xC2` (U+0080
 /// to U+00BF) or `0xE2` (U+2000 to U+2FFF). If not, no value in it needs [`check`].
@@ -84,6 +82,8 @@ pub fn possible_in(text: &str) -> bool {
         .any(|chunk| chunk.iter().fold(0, |any, &byte| any | possible(byte)) != 0)
 }
 
+/// The bidirectional embedding, override and isolate controls: invisible, they reorder the
+/// text around them on screen (the "Trojan Source" trick) while the robot says it in order.
 fn is_bidi_control(ch: char) -> bool {
     matches!(ch, '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
 }
