@@ -1,33 +1,22 @@
-//! Finding where blanks start and end, eight bytes at a time.
+//! Finding where blanks start and end, eight bytes at a time ([`super::swar`]).
 //!
 //! Lexing is most of the work of a check, and a line is long runs: a key, the padding that
-//! aligns the values (a dozen blanks), words. A byte loop spends a compare and a branch on
-//! each byte; testing a word of eight bytes at once (SWAR) takes a few operations for all.
+//! aligns the values (a dozen blanks), words.
 
 use super::is_blank;
-
-const LOW_BITS: u64 = 0x7f7f_7f7f_7f7f_7f7f;
-const HIGH_BITS: u64 = 0x8080_8080_8080_8080;
-const SPACES: u64 = u64::from_ne_bytes([b' '; 8]);
-const TABS: u64 = u64::from_ne_bytes([b'\t'; 8]);
-
-/// The high bit of each byte of `x` that is zero (exactly: no carry crosses bytes).
-fn zero_bytes(x: u64) -> u64 {
-    !(((x & LOW_BITS) + LOW_BITS) | x) & HIGH_BITS
-}
-
-/// The high bit of each byte of `word` that is a blank.
-fn blank_bytes(word: u64) -> u64 {
-    zero_bytes(word ^ SPACES) | zero_bytes(word ^ TABS)
-}
+use super::swar::{blank_bytes, non_blank_bytes};
 
 /// The first index in `from..to` whose byte is (`blank`) or is not (`!blank`) a blank, or
 /// `to`.
+#[inline]
 fn find(bytes: &[u8], mut from: usize, to: usize, blank: bool) -> usize {
     while let Some(chunk) = bytes[from..to].first_chunk::<8>() {
-        // Little-endian, so that the first byte in the text is the lowest in the word.
-        let blanks = blank_bytes(u64::from_le_bytes(*chunk));
-        let wanted = if blank { blanks } else { !blanks & HIGH_BITS };
+        let word = u64::from_le_bytes(*chunk);
+        let wanted = if blank {
+            blank_bytes(word)
+        } else {
+            non_blank_bytes(word)
+        };
         if wanted != 0 {
             return from + (wanted.trailing_zeros() / 8) as usize;
         }

@@ -2,7 +2,7 @@ use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::{Language, Location, Phase};
 use crate::rules::declare_rule;
-use crate::syntax::{self, Span};
+use crate::syntax::{self, swar, Span};
 
 declare_rule! {
     /// ## What it does
@@ -35,7 +35,7 @@ pub fn check(location: &Location<'_>, out: &mut Diagnostics) {
         .description()
         .into_iter()
         .chain(english.into_iter().flatten());
-    for text in texts {
+    for text in texts.filter(|text| may_repeat(text.value)) {
         for (first, second, word) in repeats(text.value, text.span.start as usize) {
             out.push_with(&REPEATED_WORD, || {
                 Diagnostic::new(
@@ -55,25 +55,92 @@ pub fn check(location: &Location<'_>, out: &mut Diagnostics) {
 /// Pairs of adjacent equal words (ignoring case and the punctuation around them) that
 /// contain a letter, with no punctuation between them.
 fn repeats(text: &str, offset: usize) -> impl Iterator<Item = (Span, Span, &str)> {
-    let mut previous: Option<(Span, &str)> = None;
-    // Known once for the whole text: then no word needs to be looked at beyond its bytes.
-    let ascii = text.is_ascii();
+    let mut words = Words::new(text.is_ascii());
     syntax::tokens(text, offset).filter_map(move |(span, token)| {
-        let word = trim_to_word(token);
-        let repeat = previous
-            .filter(|&(_, previous_word)| {
-                same_word(word, previous_word, ascii) && word.chars().any(char::is_alphabetic)
-            })
-            .map(|(previous_span, _)| (previous_span, span, word));
-        // `that, that` is meant: a word followed by punctuation starts afresh.
-        previous = ends_in_word(token).then_some((span, word));
-        repeat
+        let (previous, word) = words.next(span, token)?;
+        Some((previous, span, word))
     })
 }
 
-// Every word of every description and English message passes through the three functions
-// below: each answers from the ASCII bytes at hand, which is nearly always enough, and is
-// inlined; the rare rest is out of line.
+/// Whether `text` holds a repeat, as [`repeats`] would find it; for a text of more than 64
+/// bytes, `true` (then it is left to [`repeats`]).
+///
+/// Splitting every description and English message into tokens was the most costly rule of
+/// a large file, and hardly any text holds a repeat. This finds the tokens of a text from
+/// one mask of its blanks, made eight bytes at a time, with no span for each.
+fn may_repeat(text: &str) -> bool {
+    let bytes = text.as_bytes();
+    let len = bytes.len();
+    if len > 64 {
+        return true;
+    }
+    // Bit `i` is set if byte `i` is a blank.
+    let mut blanks = 0;
+    let mut all = 0;
+    for at in (0..len).step_by(8) {
+        let word = swar::word_at(bytes, at);
+        blanks |= swar::byte_mask(swar::blank_bytes(word)) << at;
+        all |= word;
+    }
+    let mut words = Words::new(swar::non_ascii_bytes(all) == 0);
+    let mut tokens = !blanks & bits(0..len as u32);
+    while tokens != 0 {
+        let start = tokens.trailing_zeros();
+        let end = start + (!(tokens >> start)).trailing_zeros();
+        tokens &= !bits(start..end);
+        // Blanks are ASCII, so a token starts and ends on characters' boundaries.
+        if words
+            .next((), &text[start as usize..end as usize])
+            .is_some()
+        {
+            return true;
+        }
+    }
+    false
+}
+
+/// The bits `range` of a word, set.
+fn bits(range: std::ops::Range<u32>) -> u64 {
+    let below = |end: u32| u64::MAX.checked_shl(end).map_or(u64::MAX, |above| !above);
+    below(range.end) & !below(range.start)
+}
+
+/// The words of a text, each compared with the one before: fed the text's tokens in order.
+struct Words<'t, P> {
+    /// The word of the token before, and where it was, unless it ended in punctuation.
+    previous: Option<(P, &'t str)>,
+    /// Whether the whole text is ASCII: then no word needs to be looked at beyond its bytes.
+    ascii: bool,
+}
+
+impl<'t, P: Copy> Words<'t, P> {
+    fn new(ascii: bool) -> Self {
+        Words {
+            previous: None,
+            ascii,
+        }
+    }
+
+    /// Takes the next token, found at `place`; if its word repeats the word before, returns
+    /// where that one was, and the word.
+    #[inline]
+    fn next(&mut self, place: P, token: &'t str) -> Option<(P, &'t str)> {
+        let word = trim_to_word(token);
+        let repeat = self
+            .previous
+            .filter(|&(_, previous)| {
+                same_word(word, previous, self.ascii) && word.chars().any(char::is_alphabetic)
+            })
+            .map(|(previous_place, _)| (previous_place, word));
+        // `that, that` is meant: a word followed by punctuation starts afresh.
+        self.previous = ends_in_word(token).then_some((place, word));
+        repeat
+    }
+}
+
+// Every word of every text passes through the three functions below: each answers from
+// the ASCII bytes at hand, which is nearly always enough, and is inlined; the rare rest is
+// out of line.
 
 /// `token` without the punctuation around it.
 #[inline]
@@ -103,7 +170,8 @@ fn ends_in_word(token: &str) -> bool {
 }
 
 /// Whether `a` and `b` are the same word; `ascii` if both are known to be ASCII.
-#[inline]
+// Always inlined: left to the compiler, it was a call for every word (measured).
+#[inline(always)]
 fn same_word(a: &str, b: &str, ascii: bool) -> bool {
     a.eq_ignore_ascii_case(b) || (!ascii && !a.is_ascii() && same_lowercase(a, b))
 }
@@ -135,5 +203,77 @@ mod tests {
         assert!(repeats("the. The robot", 0).next().is_none());
         assert_eq!(repeats("Ùmuntu ùmuntu", 0).count(), 1);
         assert_eq!(repeats("a a a a a", 0).count(), 4);
+    }
+
+    /// What [`may_repeat`] must answer: exactly what [`repeats`] finds, up to 64 bytes.
+    fn assert_may_repeat_agrees(text: &str) {
+        let found = repeats(text, 0).next().is_some();
+        let expected = found || text.len() > 64;
+        assert_eq!(may_repeat(text), expected, "{text:?}");
+    }
+
+    #[test]
+    fn may_repeat_answers_as_repeats_does() {
+        for text in [
+            "",
+            " \t ",
+            "the",
+            "the the",
+            "\tthe\t\tThe ",
+            "the, the",
+            "(the the)",
+            "1 1",
+            "café CAFÉ",
+            "café that",
+            "«the» the",
+            "the «the»",
+            "\u{212A}elvin kelvin",
+            "k \u{212A}",
+            "İ i̇",
+            "a\u{0}a a",
+            // 64 bytes, the last a repeat; then 65.
+            "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa b b",
+            "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa b b",
+            "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa bc",
+        ] {
+            assert_may_repeat_agrees(text);
+        }
+    }
+
+    #[test]
+    fn bits_cover_their_range() {
+        assert_eq!(bits(0..0), 0);
+        assert_eq!(bits(0..64), u64::MAX);
+        assert_eq!(bits(3..5), 0b11000);
+        assert_eq!(bits(63..64), 1 << 63);
+        assert_eq!(bits(64..64), 0);
+    }
+
+    /// Words and punctuation that are the same or not in tricky ways: case, accents, the
+    /// Kelvin sign (a `K` that lowercases to ASCII), a letter that lowercases to two.
+    const TOKENS: &[&str] = &[
+        "the", "The", "THE", "the,", "(the", "the)", "«the»", "a", "A", "1", "café", "CAFÉ",
+        "Café,", "\u{212A}", "k", "K", "İ", "i̇", "—", "don't", "x\u{0}y",
+    ];
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(2000))]
+        /// Texts around 64 bytes long, of words that repeat or nearly do, blanks of every
+        /// kind between them.
+        #[test]
+        fn may_repeat_agrees_with_repeats(
+            words in proptest::collection::vec(
+                (0..TOKENS.len(), proptest::sample::select(vec![" ", "\t", "  ", " \t"])),
+                0..20),
+            lead in proptest::sample::select(vec!["", " ", "\t"]),
+        ) {
+            let mut text = String::from(lead);
+            for (token, blank) in words {
+                text.push_str(TOKENS[token]);
+                text.push_str(blank);
+            }
+            assert_may_repeat_agrees(&text);
+            assert_may_repeat_agrees(text.trim_end());
+        }
     }
 }
