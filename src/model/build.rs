@@ -46,11 +46,13 @@ fn build_in_parts<'a>(
     parts: usize,
     out: &mut Diagnostics,
 ) -> KnowledgeBase<'a> {
-    let ranges = parallel::line_ranges(text.as_bytes(), parts);
+    let bytes = text.as_bytes();
+    let ranges = parallel::line_ranges(bytes, parts);
     if ranges.len() > 1 {
-        let mut read = parallel::map(ranges, |range| {
+        let cut = |rest: Range<usize>| cut_lines(bytes, rest);
+        let mut read = parallel::map_shared(ranges, cut, |share| {
             let mut found = Diagnostics::default();
-            let builder = Builder::read(text, options, range, &mut found);
+            let builder = Builder::read_shared(text, options, share, &mut found);
             (builder, found)
         })
         .into_iter();
@@ -64,6 +66,18 @@ fn build_in_parts<'a>(
         }
     }
     Builder::read(text, options, 0..text.len(), out).finish(out)
+}
+
+/// Where to cut `rest`, lines of `bytes` a thread has yet to read, to share them with a
+/// thread that has none: after the line in the middle, if each half would be worth a
+/// thread of its own.
+fn cut_lines(bytes: &[u8], rest: Range<usize>) -> Option<usize> {
+    if rest.len() < 2 * parallel::MIN_BYTES_PER_PART {
+        return None;
+    }
+    let middle = rest.start + rest.len() / 2;
+    let newline = memchr::memchr(b'\n', &bytes[middle..rest.end])?;
+    Some(middle + newline + 1).filter(|&cut| cut < rest.end)
 }
 
 /// How many locations [`Builder::join`] moves between giving memory back.
@@ -103,6 +117,18 @@ impl<'a> Builder<'a> {
         range: Range<usize>,
         out: &mut Diagnostics,
     ) -> Builder<'a> {
+        Builder::read_shared(text, options, &mut parallel::Share::whole(range), out)
+    }
+
+    /// Reads the lines of `text` in `share` (whole lines), until it ends: it may be cut
+    /// short when another thread takes the far part.
+    fn read_shared(
+        text: &'a str,
+        options: &Options,
+        share: &mut parallel::Share<'_>,
+        out: &mut Diagnostics,
+    ) -> Builder<'a> {
+        let range = share.start()..share.end(share.start());
         let mut builder = Builder {
             text,
             options: *options,
@@ -122,6 +148,10 @@ impl<'a> Builder<'a> {
         };
         crate::huge_pages::advise(&builder.locations);
         for line in syntax::lines_from(&text[..range.end], range.start) {
+            let start = line.span.start as usize;
+            if start >= share.end(start) {
+                break;
+            }
             builder.line(&line, out);
         }
         builder
@@ -766,6 +796,19 @@ mod tests {
                 assert_parts_agree(&crate::generate::generate(&spec));
             }
         }
+    }
+
+    #[test]
+    fn a_shared_part_is_cut_after_the_line_in_its_middle() {
+        let line = "robotLocation 1 2.0 3.0 4\n";
+        let text = line.repeat(3 * parallel::MIN_BYTES_PER_PART / line.len());
+        let bytes = text.as_bytes();
+        let rest = line.len() * 10..text.len();
+        let cut = cut_lines(bytes, rest.clone()).expect("long enough to share");
+        assert_eq!(bytes[cut - 1], b'\n');
+        assert!(cut.abs_diff(rest.start + rest.len() / 2) < line.len());
+        let short = rest.end - 2 * parallel::MIN_BYTES_PER_PART + 1..rest.end;
+        assert_eq!(cut_lines(bytes, short), None);
     }
 
     proptest::proptest! {

@@ -5,6 +5,8 @@
 //! the text of a line run while the model is built ([`crate::model::build`]); rules that need
 //! whole locations or the tour run afterwards, over the model ([`check_model`]).
 
+use std::ops::Range;
+
 use crate::check::Diagnostics;
 use crate::diagnostic::Severity;
 use crate::model::{Dialect, IdSet, Key, KnowledgeBase, Location};
@@ -151,24 +153,28 @@ pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, out: &mut Diagnostics) 
     }
     tour::tour_unknown_location::check(kb, out);
     let context = LocationContext::new(kb, source);
-    // Each location is checked on its own, so a large file's are checked a part per core.
-    let parts = match kb.locations().runs() {
-        [run] => crate::parallel::item_parts(run).collect(),
-        // Runs come from a large file's parts, a part per core.
-        runs => runs.iter().map(Vec::as_slice).collect(),
-    };
-    check_locations(parts, &context, out);
+    // Each location is checked on its own, so a large file's are checked in parts, on
+    // every core.
+    let ranges = crate::parallel::item_ranges(kb.locations().len());
+    check_locations(kb.locations().runs(), ranges, &context, out);
 }
 
-/// Runs the rules about one location on every location of `parts`, a part per thread.
+/// Runs the rules about one location on every location of `runs` (counted through them
+/// all), in `ranges`, a range per thread.
 fn check_locations(
-    parts: Vec<&[Location<'_>]>,
+    runs: &[Vec<Location<'_>>],
+    ranges: Vec<Range<usize>>,
     context: &LocationContext<'_>,
     out: &mut Diagnostics,
 ) {
-    for part in crate::parallel::map(parts, |locations| {
+    let all = || runs.iter().flatten();
+    for part in crate::parallel::map_shared(ranges, crate::parallel::cut_items, |share| {
         let mut found = Diagnostics::default();
-        for location in locations {
+        let start = share.start();
+        for (at, location) in (start..).zip(all().skip(start)) {
+            if at >= share.end(at) {
+                break;
+            }
             check_location(location, context, &mut found);
         }
         found
@@ -253,8 +259,9 @@ mod tests {
         let kb = crate::model::build::build(&text, &Default::default(), &mut found);
         let context = LocationContext::new(&kb, &text);
         let mut whole = Diagnostics::default();
-        let locations = kb.locations().runs()[0].as_slice();
-        check_locations(vec![locations], &context, &mut whole);
+        let runs = kb.locations().runs();
+        let all = 0..kb.locations().len();
+        check_locations(runs, vec![all.clone()], &context, &mut whole);
         let mut rules: Vec<&str> = whole.iter().map(|d| d.rule.name).collect();
         rules.sort_unstable();
         rules.dedup();
@@ -268,8 +275,22 @@ mod tests {
             ]
         );
         for size in [1, 999, 1_500, 2_999] {
+            // Ranges of `size` locations, and runs of `size + 1`, so that ranges cross runs.
+            let ranges: Vec<_> = all
+                .clone()
+                .step_by(size)
+                .map(|start| start..(start + size).min(all.end))
+                .collect();
+            let split: Vec<Vec<Location>> = runs
+                .iter()
+                .flatten()
+                .cloned()
+                .collect::<Vec<_>>()
+                .chunks(size + 1)
+                .map(<[_]>::to_vec)
+                .collect();
             let mut parted = Diagnostics::default();
-            check_locations(locations.chunks(size).collect(), &context, &mut parted);
+            check_locations(&split, ranges, &context, &mut parted);
             assert!(*parted == *whole, "parts of {size} locations differ");
         }
     }

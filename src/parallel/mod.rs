@@ -2,14 +2,19 @@
 //!
 //! A check is one pass over the file and one over its locations; on a large file each pass
 //! is cut into contiguous parts, one per core, whose results are joined in order, so that
-//! the output is the same as a single thread's (the tests compare the two).
+//! the output is the same as a single thread's (the tests compare the two). A core that
+//! finishes its part early takes over part of another's ([`map_shared`]).
+
+mod share;
 
 use std::ops::Range;
 use std::sync::Mutex;
 
+pub use share::{map_shared, Share};
+
 /// Below this many bytes (or items) a part is not worth a thread: starting one costs about
 /// as much as reading 100 kB, and a real knowledge base is a few kilobytes.
-const MIN_BYTES_PER_PART: usize = 1 << 20;
+pub const MIN_BYTES_PER_PART: usize = 1 << 20;
 const MIN_ITEMS_PER_PART: usize = 2_000;
 
 /// The most parts one pass is cut into.
@@ -22,8 +27,12 @@ fn parts_for(size: usize, min_per_part: usize) -> usize {
         // Not worth asking how many cores there are (Linux reads the cgroup's CPU quota).
         return 1;
     }
-    let cores = std::thread::available_parallelism().map_or(1, usize::from);
-    most.min(cores).min(MAX_PARTS)
+    most.min(cores()).min(MAX_PARTS)
+}
+
+/// How many threads can run at once.
+fn cores() -> usize {
+    std::thread::available_parallelism().map_or(1, usize::from)
 }
 
 /// `bytes` cut into about `parts` ranges of whole lines (fewer if it has too few lines).
@@ -51,10 +60,20 @@ pub fn parts_for_text(len: usize) -> usize {
     parts_for(len, MIN_BYTES_PER_PART)
 }
 
-/// `items` cut into contiguous parts, one per core if there are enough items.
-pub fn item_parts<T>(items: &[T]) -> std::slice::Chunks<'_, T> {
-    let parts = parts_for(items.len(), MIN_ITEMS_PER_PART);
-    items.chunks(items.len().div_ceil(parts).max(1))
+/// `0..len`, a list of items, cut into contiguous ranges, one per core if there are
+/// enough items.
+pub fn item_ranges(len: usize) -> Vec<Range<usize>> {
+    let size = len.div_ceil(parts_for(len, MIN_ITEMS_PER_PART)).max(1);
+    (0..len)
+        .step_by(size)
+        .map(|start| start..(start + size).min(len))
+        .collect()
+}
+
+/// Where to cut `rest`, items a thread has yet to work on, to share them with a thread
+/// that has none: in the middle, if each half would be worth a thread of its own.
+pub fn cut_items(rest: Range<usize>) -> Option<usize> {
+    (rest.len() >= 2 * MIN_ITEMS_PER_PART).then_some(rest.start + rest.len() / 2)
 }
 
 /// `work` applied to every input, each on its own thread (the first on this one); the
