@@ -63,7 +63,12 @@ pub fn parts_for_text(len: usize) -> usize {
 /// `0..len`, a list of items, cut into contiguous ranges, one per core if there are
 /// enough items.
 pub fn item_ranges(len: usize) -> Vec<Range<usize>> {
-    let size = len.div_ceil(parts_for(len, MIN_ITEMS_PER_PART)).max(1);
+    item_ranges_of(len, MIN_ITEMS_PER_PART)
+}
+
+/// [`item_ranges`], with at least `min_per_part` items a range.
+pub fn item_ranges_of(len: usize, min_per_part: usize) -> Vec<Range<usize>> {
+    let size = len.div_ceil(parts_for(len, min_per_part)).max(1);
     (0..len)
         .step_by(size)
         .map(|start| start..(start + size).min(len))
@@ -73,7 +78,12 @@ pub fn item_ranges(len: usize) -> Vec<Range<usize>> {
 /// Where to cut `rest`, items a thread has yet to work on, to share them with a thread
 /// that has none: in the middle, if each half would be worth a thread of its own.
 pub fn cut_items(rest: Range<usize>) -> Option<usize> {
-    (rest.len() >= 2 * MIN_ITEMS_PER_PART).then_some(rest.start + rest.len() / 2)
+    cut_in_middle(rest, MIN_ITEMS_PER_PART)
+}
+
+/// [`cut_items`], if each half would have at least `min_per_part` items.
+pub fn cut_in_middle(rest: Range<usize>, min_per_part: usize) -> Option<usize> {
+    (rest.len() >= 2 * min_per_part).then_some(rest.start + rest.len() / 2)
 }
 
 /// `work` applied to every input, each on its own thread (the first on this one); the

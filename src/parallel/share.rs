@@ -53,6 +53,17 @@ impl<'s> Share<'s> {
         self.end
     }
 
+    /// `items`, the items of a list from this range's start on, as far as the range goes
+    /// as they are taken.
+    pub fn take<I: Iterator>(
+        &mut self,
+        items: I,
+    ) -> impl Iterator<Item = I::Item> + use<'_, 's, I> {
+        (self.start..)
+            .zip(items)
+            .map_while(move |(at, item)| (at < self.end(at)).then_some(item))
+    }
+
     #[cold]
     fn give(&mut self, slot: &Slot, at: usize) {
         let mut state = lock(&slot.state);
@@ -215,16 +226,13 @@ mod tests {
     fn worked(ranges: Vec<Range<usize>>, slow: usize) -> Vec<Vec<usize>> {
         let cut = |rest: Range<usize>| (rest.len() >= 4).then_some(rest.start + rest.len() / 2);
         map_shared(ranges, cut, |share| {
-            let mut items = Vec::new();
-            let mut at = share.start();
-            while at < share.end(at) {
-                if at < slow {
+            let start = share.start();
+            let slowly = |&item: &usize| {
+                if item < slow {
                     std::thread::sleep(Duration::from_micros(200));
                 }
-                items.push(at);
-                at += 1;
-            }
-            items
+            };
+            share.take(start..).inspect(slowly).collect()
         })
     }
 

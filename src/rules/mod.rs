@@ -171,10 +171,7 @@ fn check_locations(
     for part in crate::parallel::map_shared(ranges, crate::parallel::cut_items, |share| {
         let mut found = Diagnostics::default();
         let start = share.start();
-        for (at, location) in (start..).zip(all().skip(start)) {
-            if at >= share.end(at) {
-                break;
-            }
+        for location in share.take(all().skip(start)) {
             check_location(location, context, &mut found);
         }
         found
