@@ -173,7 +173,7 @@ impl Clone for Text {
 fn is_utf8(bytes: &[u8]) -> bool {
     let parts = crate::parallel::parts_for_text(bytes.len());
     let ranges = crate::parallel::line_ranges(bytes, parts);
-    crate::parallel::map(ranges, |range| std::str::from_utf8(&bytes[range]).is_ok())
+    crate::parallel::map_ranges(ranges, |range| std::str::from_utf8(&bytes[range]).is_ok())
         .into_iter()
         .all(|valid| valid)
 }

@@ -8,7 +8,6 @@
 mod share;
 
 use std::ops::Range;
-use std::sync::Mutex;
 
 pub use share::{map_shared, Share};
 
@@ -30,9 +29,10 @@ fn parts_for(size: usize, min_per_part: usize) -> usize {
     most.min(cores()).min(MAX_PARTS)
 }
 
-/// How many threads can run at once.
+/// How many threads can run at once (asked once: Linux reads the cgroup's CPU quota).
 fn cores() -> usize {
-    std::thread::available_parallelism().map_or(1, usize::from)
+    static CORES: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+    *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, usize::from))
 }
 
 /// `bytes` cut into about `parts` ranges of whole lines (fewer if it has too few lines).
@@ -86,45 +86,17 @@ pub fn cut_in_middle(rest: Range<usize>, min_per_part: usize) -> Option<usize> {
     (rest.len() >= 2 * min_per_part).then_some(rest.start + rest.len() / 2)
 }
 
-/// `work` applied to every input, each on its own thread (the first on this one); the
-/// results in the order of the inputs. An input whose thread cannot be started (the system
-/// is out of threads or memory) is worked on here instead.
-pub fn map<I: Send, R: Send>(inputs: Vec<I>, work: impl Fn(I) -> R + Sync) -> Vec<R> {
-    // Each input is taken once: by its thread, or here if that thread never ran.
-    let slots: Vec<Mutex<Option<I>>> = inputs.into_iter().map(|i| Mutex::new(Some(i))).collect();
-    let run = |slot: &Mutex<Option<I>>| {
-        let input = slot.lock().ok()?.take()?;
-        Some(work(input))
-    };
-    let Some((first, others)) = slots.split_first() else {
-        return Vec::new();
-    };
-    std::thread::scope(|scope| {
-        let run = &run;
-        let threads: Vec<_> = others
-            .iter()
-            .map(|slot| {
-                std::thread::Builder::new()
-                    .spawn_scoped(scope, move || run(slot))
-                    .ok()
-            })
-            .collect();
-        let mut results = Vec::with_capacity(slots.len());
-        results.push(run(first));
-        for (slot, thread) in others.iter().zip(threads) {
-            let result = match thread.map(|thread| thread.join()) {
-                Some(Ok(result)) => result,
-                // A panic on another thread is a bug: let it surface as one.
-                Some(Err(panic)) => std::panic::resume_unwind(panic),
-                None => None,
-            };
-            results.push(result.or_else(|| run(slot)));
-        }
-        results
-            .into_iter()
-            .map(|result| result.expect("every input is worked on once"))
-            .collect()
-    })
+/// `work` applied to each of `ranges` on every core, the results in the order of the
+/// ranges: for work done in one piece, which no other core can take a part of.
+pub fn map_ranges<R: Send>(
+    ranges: Vec<Range<usize>>,
+    work: impl Fn(Range<usize>) -> R + Sync,
+) -> Vec<R> {
+    map_shared(
+        ranges,
+        |_| None,
+        |share| work(share.start()..share.end(share.start())),
+    )
 }
 
 #[cfg(test)]
@@ -157,9 +129,9 @@ mod tests {
     }
 
     #[test]
-    fn results_come_in_input_order() {
-        let squares = map((0..5).collect(), |n: u64| n * n);
-        assert_eq!(squares, [0, 1, 4, 9, 16]);
-        assert!(map(Vec::<u8>::new(), |n| n).is_empty());
+    fn results_come_in_the_order_of_the_ranges() {
+        let lengths = map_ranges(vec![0..2, 2..5, 5..9, 9..9], |range| range.len());
+        assert_eq!(lengths, [2, 3, 4, 0]);
+        assert!(map_ranges(Vec::new(), |range| range.len()).is_empty());
     }
 }

@@ -155,8 +155,9 @@ impl Drop for Finished<'_> {
 }
 
 /// `work` applied to `ranges` (contiguous, in order), on as many threads as there are
-/// cores (this one among them): each thread takes the next range not yet taken, and when
-/// none is left, asks the other threads in turn for the far part of theirs. `cut(rest)`
+/// cores (this one among them; fewer if the system cannot start one): each thread takes
+/// the next range not yet taken, and when none is left, asks the other threads in turn for
+/// the far part of theirs. `cut(rest)`
 /// says where `rest` may be cut (`None` if it is too short to be worth sharing); `work`
 /// asks its [`Share`] where to stop as it goes. The results, one for each range worked
 /// on, in the order of the ranges.
