@@ -11,10 +11,9 @@ use std::ops::Range;
 
 pub use share::{map_shared, Share};
 
-/// Below this many bytes (or items) a part is not worth a thread: starting one costs about
+/// Below this many bytes a part of a text is not worth a thread: starting one costs about
 /// as much as reading 100 kB, and a real knowledge base is a few kilobytes.
 pub const MIN_BYTES_PER_PART: usize = 1 << 20;
-const MIN_ITEMS_PER_PART: usize = 2_000;
 
 /// The most parts one pass is cut into.
 const MAX_PARTS: usize = 16;
@@ -60,14 +59,9 @@ pub fn parts_for_text(len: usize) -> usize {
     parts_for(len, MIN_BYTES_PER_PART)
 }
 
-/// `0..len`, a list of items, cut into contiguous ranges, one per core if there are
-/// enough items.
-pub fn item_ranges(len: usize) -> Vec<Range<usize>> {
-    item_ranges_of(len, MIN_ITEMS_PER_PART)
-}
-
-/// [`item_ranges`], with at least `min_per_part` items a range.
-pub fn item_ranges_of(len: usize, min_per_part: usize) -> Vec<Range<usize>> {
+/// `0..len`, a list of items, cut into contiguous ranges of at least `min_per_part` items,
+/// one per core if there are enough items.
+pub fn item_ranges(len: usize, min_per_part: usize) -> Vec<Range<usize>> {
     let size = len.div_ceil(parts_for(len, min_per_part)).max(1);
     (0..len)
         .step_by(size)
@@ -76,12 +70,7 @@ pub fn item_ranges_of(len: usize, min_per_part: usize) -> Vec<Range<usize>> {
 }
 
 /// Where to cut `rest`, items a thread has yet to work on, to share them with a thread
-/// that has none: in the middle, if each half would be worth a thread of its own.
-pub fn cut_items(rest: Range<usize>) -> Option<usize> {
-    cut_in_middle(rest, MIN_ITEMS_PER_PART)
-}
-
-/// [`cut_items`], if each half would have at least `min_per_part` items.
+/// that has none: in the middle, if each half would have at least `min_per_part` items.
 pub fn cut_in_middle(rest: Range<usize>, min_per_part: usize) -> Option<usize> {
     (rest.len() >= 2 * min_per_part).then_some(rest.start + rest.len() / 2)
 }

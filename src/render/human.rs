@@ -59,7 +59,7 @@ pub fn render(
         // then drawn on every core: drawing is most of the cost, and each is drawn alone.
         for batch in report.diagnostics.chunks(FINDINGS_PER_BATCH) {
             let findings: Vec<Finding> = batch.iter().map(|d| source.finding(d)).collect();
-            let ranges = parallel::item_ranges_of(findings.len(), MIN_FINDINGS_PER_PART);
+            let ranges = parallel::item_ranges(findings.len(), MIN_FINDINGS_PER_PART);
             let cut = |rest: Range<usize>| parallel::cut_in_middle(rest, MIN_FINDINGS_PER_PART);
             for drawn in parallel::map_shared(ranges, cut, |share| handlers.draw(&findings, share))
             {

@@ -155,9 +155,13 @@ pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, out: &mut Diagnostics) 
     let context = LocationContext::new(kb, source);
     // Each location is checked on its own, so a large file's are checked in parts, on
     // every core.
-    let ranges = crate::parallel::item_ranges(kb.locations().len());
+    let ranges = crate::parallel::item_ranges(kb.locations().len(), MIN_LOCATIONS_PER_PART);
     check_locations(kb.locations().runs(), ranges, &context, out);
 }
+
+/// Below this many locations a part is not worth a thread (starting one costs about as much
+/// as checking a hundred locations).
+const MIN_LOCATIONS_PER_PART: usize = 2_000;
 
 /// Runs the rules about one location on every location of `runs` (counted through them
 /// all), in `ranges`, a range per thread.
@@ -168,7 +172,8 @@ fn check_locations(
     out: &mut Diagnostics,
 ) {
     let all = || runs.iter().flatten();
-    for part in crate::parallel::map_shared(ranges, crate::parallel::cut_items, |share| {
+    let cut = |rest: Range<usize>| crate::parallel::cut_in_middle(rest, MIN_LOCATIONS_PER_PART);
+    for part in crate::parallel::map_shared(ranges, cut, |share| {
         let mut found = Diagnostics::default();
         let start = share.start();
         for location in share.take(all().skip(start)) {

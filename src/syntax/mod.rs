@@ -9,7 +9,7 @@
 mod blanks;
 mod line;
 mod span;
-pub mod swar;
+pub(crate) mod swar;
 
 pub use line::{lines, lines_from, Body, Line, LineEnding, Lines, BOM};
 pub use span::Span;
