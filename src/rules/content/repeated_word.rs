@@ -82,8 +82,11 @@ fn may_repeat(text: &str) -> bool {
         blanks |= swar::byte_mask(swar::blank_bytes(word)) << at;
         all |= word;
     }
-    let mut words = Words::new(swar::non_ascii_bytes(all) == 0);
     let mut tokens = !blanks & bits(0..len as u32);
+    if !may_hold_alike(bytes, tokens) {
+        return false;
+    }
+    let mut words = Words::new(swar::non_ascii_bytes(all) == 0);
     while tokens != 0 {
         let start = tokens.trailing_zeros();
         let end = start + (!(tokens >> start)).trailing_zeros();
@@ -95,6 +98,31 @@ fn may_repeat(text: &str) -> bool {
         {
             return true;
         }
+    }
+    false
+}
+
+/// Whether two tokens in a row (the runs of bits set in `tokens`, bit `i` for byte `i` of
+/// `bytes`) may hold the same word. Most texts have no such pair, and this tells so from
+/// one byte of each token.
+///
+/// A token that starts with an ASCII letter or digit holds a word that starts there, and
+/// two such words are the same only if they start with the same character, ignoring case
+/// (its lowercase is ASCII too). Any other token may hold any word.
+fn may_hold_alike(bytes: &[u8], tokens: u64) -> bool {
+    let mut starts = tokens & !(tokens << 1);
+    let mut previous = None;
+    while starts != 0 {
+        let first = bytes[starts.trailing_zeros() as usize];
+        if !first.is_ascii_alphanumeric() {
+            return true;
+        }
+        let first = first.to_ascii_lowercase();
+        if previous == Some(first) {
+            return true;
+        }
+        previous = Some(first);
+        starts &= starts - 1;
     }
     false
 }
@@ -228,6 +256,14 @@ mod tests {
             "«the» the",
             "the «the»",
             "\u{212A}elvin kelvin",
+            "kelvin \u{212A}elvin",
+            "the then",
+            "then the",
+            "Tea tea",
+            "tea, Tea",
+            "9 9a 9A",
+            "a b a",
+            "ab\u{e9} AB\u{c9}",
             "k \u{212A}",
             "İ i̇",
             "a\u{0}a a",
