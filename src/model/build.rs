@@ -887,6 +887,33 @@ mod tests {
         }
     }
 
+    proptest::proptest! {
+        /// Any token of number-like bytes reads as `str::parse` reads it, or not at all.
+        #[test]
+        fn number_like_tokens_read_as_str_parse_reads_them(token in "[-+.0-9eE]{0,20}") {
+            let expected = token.parse::<f64>().ok().filter(|n| n.is_finite());
+            proptest::prop_assert_eq!(
+                parse_number(&token).map(f64::to_bits),
+                expected.map(f64::to_bits),
+                "{}",
+                token
+            );
+        }
+    }
+
+    #[test]
+    fn the_fast_path_reads_plain_decimals_only() {
+        let read = |token: &str| parse_plain_decimal(token.as_bytes());
+        assert_eq!(read("26.63"), Some(26.63));
+        assert_eq!(read("-117"), Some(-117.0));
+        assert_eq!(read("+.5"), Some(0.5));
+        assert_eq!(read("7."), Some(7.0));
+        let sixteen_digits = "1234567890123456";
+        for token in ["", "-", ".", "1.2.3", "1e5", "--1", "1-", sixteen_digits] {
+            assert_eq!(read(token), None, "{token}");
+        }
+    }
+
     #[test]
     fn tour_items_split_on_commas_too() {
         let items: Vec<&str> = tour_items("5 1, 4,3 ,2 5", 0).map(|(_, t)| t).collect();
