@@ -262,6 +262,15 @@ impl<'a> Builder<'a> {
         true
     }
 
+    /// The text of a span the lexer cut from this builder's text, with no check.
+    fn lexed(&self, span: Span) -> &'a str {
+        let range = span.range();
+        debug_assert!(self.text.get(range.clone()).is_some());
+        // SAFETY: the lexer cuts lines and tokens at ASCII bytes (blanks, newlines) or at
+        // the ends of the text, so `range` is in the text and on characters' boundaries.
+        unsafe { self.text.get_unchecked(range) }
+    }
+
     fn line(&mut self, line: &Line, out: &mut Diagnostics) {
         compat::compat_line_too_long::check(line, self.text, out);
         let crlf_ending = compat::compat_crlf::ending(line, self.text);
@@ -276,7 +285,7 @@ impl<'a> Builder<'a> {
     }
 
     fn entry(&mut self, key_span: Span, args: Span, out: &mut Diagnostics) {
-        let key_text = key_span.text(self.text);
+        let key_text = self.lexed(key_span);
         let Some(key) = Key::from_name(key_text) else {
             let id = leading_id(args.text(self.text));
             match Key::from_name_ignoring_case(key_text) {
@@ -302,7 +311,7 @@ impl<'a> Builder<'a> {
             self.tour(args, out);
             return;
         }
-        let args_text = args.text(self.text);
+        let args_text = self.lexed(args);
         let mut tokens = syntax::tokens(args_text, args.start as usize);
         let id = match tokens.next() {
             Some((span, token)) if looks_numeric(token) => match parse_id(token) {
@@ -325,7 +334,7 @@ impl<'a> Builder<'a> {
     }
 
     fn value(&mut self, key: Key, key_span: Span, id: u32, span: Span, out: &mut Diagnostics) {
-        let text = span.text(self.text);
+        let text = self.lexed(span);
         let line_span = key_span.cover(span);
         let (index, earlier) = self.location(id, line_span, key);
         if let Some(earlier) = earlier {
