@@ -169,13 +169,17 @@ impl Clone for Text {
     }
 }
 
-/// Whether `bytes` are UTF-8, checked a part per core on a large file.
+/// Whether `bytes` are UTF-8, checked a part per core on a large file, with the processor's
+/// vector instructions (simdutf8 chooses them at run time): this pass stands between
+/// reading the file and everything else.
 fn is_utf8(bytes: &[u8]) -> bool {
     let parts = crate::parallel::parts_for_text(bytes.len());
     let ranges = crate::parallel::line_ranges(bytes, parts);
-    crate::parallel::map_ranges(ranges, |range| std::str::from_utf8(&bytes[range]).is_ok())
-        .into_iter()
-        .all(|valid| valid)
+    crate::parallel::map_ranges(ranges, |range| {
+        simdutf8::basic::from_utf8(&bytes[range]).is_ok()
+    })
+    .into_iter()
+    .all(|valid| valid)
 }
 
 /// Maps `file` read-only, its pages loaded up front (one system call instead of a page
