@@ -149,7 +149,11 @@ fn lex_line(
     } else {
         start
     };
-    let body_start = next_non_blank(bytes, after_bom, content_end);
+    // Nearly every line starts with its key: no search then.
+    let body_start = match bytes.get(after_bom) {
+        Some(&first) if after_bom < content_end && !is_blank(first) => after_bom,
+        _ => next_non_blank(bytes, after_bom, content_end),
+    };
     let mut body_end = content_end;
     while body_end > body_start && is_blank(bytes[body_end - 1]) {
         body_end -= 1;
@@ -201,6 +205,9 @@ mod tests {
             "key 1 value  \r\nnext\t2\tv\n# comment \nlast",
             "tourSpecification 5 1 4 3 2 5",
             "   # indented comment\n\n\nkey",
+            "\u{FEFF}key 1 v\n\u{FEFF}not a mark\n",
+            "\u{FEFF} \tkey\n",
+            "\u{FEFF}\n",
         ] {
             assert_eq!(rebuild(text), text);
         }
@@ -218,6 +225,25 @@ mod tests {
         assert_eq!(line.trailing.text(text), "  ");
         assert_eq!(line.indent.text(text), "  ");
         assert_eq!(line.ending, LineEnding::CrLf);
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_indentation_on_the_first_line_only() {
+        for (text, indent) in [
+            ("\u{FEFF}key 1 v", "\u{FEFF}"),
+            ("\u{FEFF}\t key 1 v", "\u{FEFF}\t "),
+        ] {
+            let line = lines(text).next().unwrap();
+            assert_eq!(line.indent.text(text), indent);
+            let Body::Entry { key, .. } = line.body else {
+                panic!("not an entry: {line:?}")
+            };
+            assert_eq!(key.text(text), "key");
+        }
+        let text = "a\n\u{FEFF}b 1";
+        let second = lines(text).nth(1).unwrap();
+        assert!(second.indent.is_empty());
+        assert!(matches!(second.body, Body::Entry { key, .. } if key.text(text) == "\u{FEFF}b"));
     }
 
     #[test]
