@@ -1,4 +1,4 @@
-use super::{is_blank, next_blank, next_non_blank, Span};
+use super::{is_blank, newline, next_blank, next_non_blank, Span};
 
 /// The UTF-8 byte-order mark.
 pub const BOM: &str = "\u{FEFF}";
@@ -116,7 +116,7 @@ impl Iterator for Lines<'_> {
             return None;
         }
         self.number += 1;
-        let (content_end, ending, end) = match memchr::memchr(b'\n', &bytes[start..]) {
+        let (content_end, ending, end) = match newline::find(&bytes[start..]) {
             Some(i) if i > 0 && bytes[start + i - 1] == b'\r' => {
                 (start + i - 1, LineEnding::CrLf, start + i + 1)
             }

@@ -8,6 +8,7 @@
 
 mod blanks;
 mod line;
+mod newline;
 mod span;
 pub(crate) mod swar;
 
