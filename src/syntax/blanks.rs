@@ -28,6 +28,42 @@ fn find(bytes: &[u8], mut from: usize, to: usize, blank: bool) -> usize {
     from
 }
 
+/// Where the first run of blanks in `bytes[from..to]` starts and ends (both `to` if it has
+/// none): for a line's body, where its key ends and its arguments start.
+#[inline(always)]
+pub fn first_gap(bytes: &[u8], from: usize, to: usize) -> (usize, usize) {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(chunk) = bytes[from..].first_chunk::<32>() {
+        // Bit `i` for byte `from + i`; the gap is bits `start..end`.
+        let blanks = blank_mask32(chunk);
+        let start = blanks.trailing_zeros();
+        let end = start + (!blanks.checked_shr(start).unwrap_or(0)).trailing_zeros();
+        // Unless the gap goes past `to`, or may go on past the 32 bytes (or there is none).
+        if end < 32 && from + end as usize <= to {
+            return (from + start as usize, from + end as usize);
+        }
+    }
+    let start = next_blank(bytes, from, to);
+    (start, next_non_blank(bytes, start, to))
+}
+
+/// One bit per byte of `chunk`, set for a blank.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn blank_mask32(chunk: &[u8; 32]) -> u32 {
+    use std::arch::x86_64::*;
+    // SAFETY: SSE2 is part of x86_64, and the loads read the 32 bytes of `chunk`.
+    unsafe {
+        let halves = [chunk.as_ptr(), chunk.as_ptr().add(16)].map(|half| {
+            let half = _mm_loadu_si128(half.cast());
+            let spaces = _mm_cmpeq_epi8(half, _mm_set1_epi8(b' ' as i8));
+            let tabs = _mm_cmpeq_epi8(half, _mm_set1_epi8(b'\t' as i8));
+            _mm_movemask_epi8(_mm_or_si128(spaces, tabs)) as u32
+        });
+        halves[0] | halves[1] << 16
+    }
+}
+
 /// The index of the first blank in `bytes[from..to]`, or `to`.
 pub fn next_blank(bytes: &[u8], from: usize, to: usize) -> usize {
     find(bytes, from, to, true)
@@ -41,6 +77,35 @@ pub fn next_non_blank(bytes: &[u8], from: usize, to: usize) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_first_gap_is_where_the_two_searches_find_it() {
+        let texts = [
+            "robotLocationDescription      1 a b\n".to_string(),
+            "gestureTarget\t\t 1 0 0 0\ngestureArm 1 left\n".to_string(),
+            format!("{}  x", "k".repeat(31)),
+            format!("{}  x", "k".repeat(29)),
+            format!("k{}x", " ".repeat(30)),
+            format!("k{}x", " ".repeat(31)),
+            "é \té\u{0} \u{a0} x".repeat(4),
+            " ".repeat(40),
+            "key".to_string(),
+        ];
+        for text in &texts {
+            let bytes = text.as_bytes();
+            for from in 0..=bytes.len() {
+                for to in from..=bytes.len() {
+                    let key_end = next_blank(bytes, from, to);
+                    let expected = (key_end, next_non_blank(bytes, key_end, to));
+                    assert_eq!(
+                        first_gap(bytes, from, to),
+                        expected,
+                        "{from}..{to} of {text:?}"
+                    );
+                }
+            }
+        }
+    }
 
     #[test]
     fn agrees_with_a_byte_loop_everywhere() {

@@ -1,4 +1,4 @@
-use super::{is_blank, newline, next_blank, next_non_blank, Span};
+use super::{first_gap, is_blank, newline, next_non_blank, Span};
 
 /// The UTF-8 byte-order mark.
 pub const BOM: &str = "\u{FEFF}";
@@ -163,8 +163,7 @@ fn lex_line(
     } else if bytes[body_start] == b'#' {
         Body::Comment(Span::new(body_start, body_end))
     } else {
-        let key_end = next_blank(bytes, body_start, body_end);
-        let args_start = next_non_blank(bytes, key_end, body_end);
+        let (key_end, args_start) = first_gap(bytes, body_start, body_end);
         Body::Entry {
             key: Span::new(body_start, key_end),
             args: Span::new(args_start, body_end),

@@ -15,7 +15,7 @@ pub(crate) mod swar;
 pub use line::{lines, lines_from, Body, Line, LineEnding, Lines, BOM};
 pub use span::Span;
 
-use blanks::{next_blank, next_non_blank};
+use blanks::{first_gap, next_blank, next_non_blank};
 
 /// Space and tab separate the fields of a line; nothing else does.
 pub fn is_blank(byte: u8) -> bool {
