@@ -311,24 +311,15 @@ impl<'a> Builder<'a> {
             self.tour(args, out);
             return;
         }
-        let args_text = self.lexed(args);
-        let mut tokens = syntax::tokens(args_text, args.start as usize);
-        let id = match tokens.next() {
-            Some((span, token)) if looks_numeric(token) => match parse_id(token) {
-                Some(id) => id,
-                None => {
-                    out.push(structure::invalid_id::diagnostic(span, token, key));
-                    return;
-                }
-            },
-            _ => {
-                out.push(structure::missing_id::diagnostic(key_span, key));
-                return;
-            }
-        };
-        let value_span = match tokens.next() {
-            Some((first, _)) => Span::new(first.start as usize, args.end as usize),
-            None => Span::empty_at(args.end as usize),
+        let (id_span, value_span) = syntax::first_token(self.text, args);
+        let token = self.lexed(id_span);
+        if !looks_numeric(token) {
+            out.push(structure::missing_id::diagnostic(key_span, key));
+            return;
+        }
+        let Some(id) = parse_id(token) else {
+            out.push(structure::invalid_id::diagnostic(id_span, token, key));
+            return;
         };
         self.value(key, key_span, id, value_span, out);
     }

@@ -22,6 +22,16 @@ pub fn is_blank(byte: u8) -> bool {
     byte == b' ' || byte == b'\t'
 }
 
+/// Splits `span` of `text`, which starts with a token (as a line's arguments do), into that
+/// token and the rest after the blanks that follow it (each empty if there is none): an id
+/// and its value, from one search.
+pub fn first_token(text: &str, span: Span) -> (Span, Span) {
+    let (start, end) = (span.start as usize, span.end as usize);
+    debug_assert!(start == end || !is_blank(text.as_bytes()[start]));
+    let (token_end, rest_start) = first_gap(text.as_bytes(), start, end);
+    (Span::new(start, token_end), Span::new(rest_start, end))
+}
+
 /// Splits `text` (a slice of the file starting at `offset`) into blank-separated tokens.
 pub fn tokens(text: &str, offset: usize) -> Tokens<'_> {
     Tokens {
@@ -59,5 +69,26 @@ impl<'a> Iterator for Tokens<'a> {
         // it and on characters' boundaries.
         let token = unsafe { self.text.get_unchecked(start..self.pos) };
         Some((span, token))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_first_token_and_the_rest() {
+        let text = "key 12 \t value  here\nkey 7\nkey ";
+        let split = |start: usize, end: usize| {
+            let (token, rest) = first_token(text, Span::new(start, end));
+            (token.text(text), rest.text(text), rest.start as usize)
+        };
+        assert_eq!(split(4, 20), ("12", "value  here", 9));
+        assert_eq!(split(25, 26), ("7", "", 26));
+        assert_eq!(split(31, 31), ("", "", 31));
+        // As the tokens are.
+        let mut tokens = tokens(&text[4..20], 4);
+        assert_eq!(tokens.next(), Some((Span::new(4, 6), "12")));
+        assert_eq!(tokens.next().map(|(span, _)| span.start), Some(9));
     }
 }
