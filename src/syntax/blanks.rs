@@ -3,8 +3,8 @@
 //! Lexing is most of the work of a check, and a line is long runs: a key, the padding that
 //! aligns the values (a dozen blanks), words.
 
-use super::is_blank;
 use super::swar::{blank_bytes, non_blank_bytes};
+use super::{is_blank, masks};
 
 /// The first index in `from..to` whose byte is (`blank`) or is not (`!blank`) a blank, or
 /// `to`.
@@ -29,13 +29,15 @@ fn find(bytes: &[u8], mut from: usize, to: usize, blank: bool) -> usize {
 }
 
 /// Where the first run of blanks in `bytes[from..to]` starts and ends (both `to` if it has
-/// none): for a line's body, where its key ends and its arguments start.
+/// none): for a line's body, where its key ends and its arguments start. Nearly always
+/// from one mask of the 32 bytes from `from` ([`masks`]), read past `to`.
 #[inline(always)]
 pub fn first_gap(bytes: &[u8], from: usize, to: usize) -> (usize, usize) {
-    #[cfg(target_arch = "x86_64")]
     if let Some(chunk) = bytes[from..].first_chunk::<32>() {
+        let (low, high) = chunk.split_at(16);
+        let half = |half: &[u8]| masks::blanks(half.try_into().expect("sixteen bytes"));
         // Bit `i` for byte `from + i`; the gap is bits `start..end`.
-        let blanks = blank_mask32(chunk);
+        let blanks = half(low) | half(high) << 16;
         let start = blanks.trailing_zeros();
         let end = start + (!blanks.checked_shr(start).unwrap_or(0)).trailing_zeros();
         // Unless the gap goes past `to`, or may go on past the 32 bytes (or there is none).
@@ -45,23 +47,6 @@ pub fn first_gap(bytes: &[u8], from: usize, to: usize) -> (usize, usize) {
     }
     let start = next_blank(bytes, from, to);
     (start, next_non_blank(bytes, start, to))
-}
-
-/// One bit per byte of `chunk`, set for a blank.
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-fn blank_mask32(chunk: &[u8; 32]) -> u32 {
-    use std::arch::x86_64::*;
-    // SAFETY: SSE2 is part of x86_64, and the loads read the 32 bytes of `chunk`.
-    unsafe {
-        let halves = [chunk.as_ptr(), chunk.as_ptr().add(16)].map(|half| {
-            let half = _mm_loadu_si128(half.cast());
-            let spaces = _mm_cmpeq_epi8(half, _mm_set1_epi8(b' ' as i8));
-            let tabs = _mm_cmpeq_epi8(half, _mm_set1_epi8(b'\t' as i8));
-            _mm_movemask_epi8(_mm_or_si128(spaces, tabs)) as u32
-        });
-        halves[0] | halves[1] << 16
-    }
 }
 
 /// The index of the first blank in `bytes[from..to]`, or `to`.

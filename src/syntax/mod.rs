@@ -8,9 +8,10 @@
 
 mod blanks;
 mod line;
+pub(crate) mod masks;
 mod newline;
 mod span;
-pub(crate) mod swar;
+mod swar;
 
 pub use line::{lines, lines_from, Body, Line, LineEnding, Lines, BOM};
 pub use span::Span;

@@ -39,10 +39,16 @@ fn zero_bytes(x: u64) -> u64 {
     !(((x & LOW_BITS) + LOW_BITS) | x) & HIGH_BITS
 }
 
+/// The high bit of each byte of `word` that is `byte`.
+#[inline]
+pub fn bytes_equal(word: u64, byte: u8) -> u64 {
+    zero_bytes(word ^ splat(byte))
+}
+
 /// The high bit of each byte of `word` that is a blank (space or tab).
 #[inline]
 pub fn blank_bytes(word: u64) -> u64 {
-    zero_bytes(word ^ splat(b' ')) | zero_bytes(word ^ splat(b'\t'))
+    bytes_equal(word, b' ') | bytes_equal(word, b'\t')
 }
 
 /// The high bit of each byte of `word` that is not a blank.

@@ -2,7 +2,7 @@ use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::{Language, Location, Phase};
 use crate::rules::declare_rule;
-use crate::syntax::{self, swar, Span};
+use crate::syntax::{self, Span};
 
 declare_rule! {
     /// ## What it does
@@ -67,7 +67,7 @@ fn repeats(text: &str, offset: usize) -> impl Iterator<Item = (Span, Span, &str)
 ///
 /// Splitting every description and English message into tokens was the most costly rule of
 /// a large file, and hardly any text holds a repeat. This finds the tokens of a text from
-/// one mask of its blanks, made eight bytes at a time, with no span for each.
+/// one mask of its blanks, made sixteen bytes at a time, with no span for each.
 fn may_repeat(text: &str) -> bool {
     let bytes = text.as_bytes();
     let len = bytes.len();
@@ -75,18 +75,12 @@ fn may_repeat(text: &str) -> bool {
         return true;
     }
     // Bit `i` is set if byte `i` is a blank.
-    let mut blanks = 0;
-    let mut all = 0;
-    for at in (0..len).step_by(8) {
-        let word = swar::word_at(bytes, at);
-        blanks |= swar::byte_mask(swar::blank_bytes(word)) << at;
-        all |= word;
-    }
+    let (blanks, ascii) = syntax::masks::blanks_and_ascii(bytes);
     let mut tokens = !blanks & bits(0..len as u32);
     if !may_hold_alike(bytes, tokens) {
         return false;
     }
-    let mut words = Words::new(swar::non_ascii_bytes(all) == 0);
+    let mut words = Words::new(ascii);
     while tokens != 0 {
         let start = tokens.trailing_zeros();
         let end = start + (!(tokens >> start)).trailing_zeros();
