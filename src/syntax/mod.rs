@@ -26,6 +26,7 @@ pub fn is_blank(byte: u8) -> bool {
 /// Splits `span` of `text`, which starts with a token (as a line's arguments do), into that
 /// token and the rest after the blanks that follow it (each empty if there is none): an id
 /// and its value, from one search.
+#[inline]
 pub fn first_token(text: &str, span: Span) -> (Span, Span) {
     let (start, end) = (span.start as usize, span.end as usize);
     debug_assert!(start == end || !is_blank(text.as_bytes()[start]));

@@ -10,15 +10,16 @@ use super::masks;
 /// (measured with cachegrind).
 #[inline(always)]
 pub fn find(bytes: &[u8]) -> Option<usize> {
+    let mut chunks = bytes.chunks_exact(16);
     let mut at = 0;
-    while let Some(chunk) = bytes[at..].first_chunk::<16>() {
-        let newlines = masks::equal(chunk, b'\n');
+    for chunk in chunks.by_ref() {
+        let newlines = masks::equal(chunk.try_into().expect("sixteen bytes"), b'\n');
         if newlines != 0 {
             return Some(at + newlines.trailing_zeros() as usize);
         }
         at += 16;
     }
-    memchr::memchr(b'\n', &bytes[at..]).map(|found| at + found)
+    memchr::memchr(b'\n', chunks.remainder()).map(|found| at + found)
 }
 
 #[cfg(test)]
