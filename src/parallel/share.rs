@@ -166,7 +166,12 @@ pub fn map_shared<R: Send>(
     cut: impl Fn(Range<usize>) -> Option<usize> + Sync,
     work: impl Fn(&mut Share<'_>) -> R + Sync,
 ) -> Vec<R> {
-    let threads = super::cores().min(ranges.len()).max(1);
+    // One range is one thread: not worth asking how many cores there are (Linux reads the
+    // cgroup's CPU quota from files), which a small file would otherwise pay for.
+    let threads = match ranges.len() {
+        0 | 1 => 1,
+        many => super::cores().min(many),
+    };
     let slots: Vec<Slot> = (0..threads).map(|_| Slot::default()).collect();
     let next = AtomicUsize::new(0);
     let results = Mutex::new(Vec::with_capacity(ranges.len()));
