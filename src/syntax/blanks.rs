@@ -1,4 +1,5 @@
-//! Finding where blanks start and end, eight bytes at a time ([`super::swar`]).
+//! Finding where blanks start and end: eight bytes at a time ([`super::swar`]), or the
+//! first gap of a line's body from one mask of 32 bytes ([`super::masks`]).
 //!
 //! Lexing is most of the work of a check, and a line is long runs: a key, the padding that
 //! aligns the values (a dozen blanks), words.
