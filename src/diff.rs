@@ -204,7 +204,7 @@ fn tour_change(old: Option<TourSide>, new: Option<TourSide>) -> Option<TourChang
     })
 }
 
-/// The stops of `a` that `b` lacks, counting repeats: [1, 2, 2] without [2] is [2].
+/// The stops of `a` that `b` lacks, counting repeats: `[1, 2, 2]` without `[2]` is `[2]`.
 fn without(a: &[u32], b: &[u32]) -> Vec<u32> {
     let mut available: HashMap<u32, usize> = HashMap::new();
     for &id in b {

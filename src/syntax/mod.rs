@@ -25,7 +25,7 @@ pub fn is_blank(byte: u8) -> bool {
 
 /// Splits `span` of `text`, which starts with a token (as a line's arguments do), into that
 /// token and the rest after the blanks that follow it (each empty if there is none): an id
-/// and its value, from one search.
+/// and its value, nearly always from one mask (`blanks::first_gap`).
 #[inline]
 pub fn first_token(text: &str, span: Span) -> (Span, Span) {
     let (start, end) = (span.start as usize, span.end as usize);
