@@ -3,7 +3,8 @@
 //! The layers, from the bytes up:
 //! - [`source`]: a file read from disk (always valid UTF-8 text, invalid bytes recorded);
 //! - [`syntax`]: the lossless line syntax, every byte in a span;
-//! - [`model`]: the typed knowledge base, as the robot's reader would load it;
+//! - [`model`]: the typed knowledge base, as written;
+//! - [`reader`]: what each version of the robot's reader loads from a file;
 //! - [`rules`]: the rule catalogue, one module per rule;
 //! - [`render`]: output formats for findings;
 //! - [`present`]: how `locations`, `show`, `tour` and `diff` show a knowledge base;
@@ -26,6 +27,7 @@ mod huge_pages;
 pub mod model;
 mod parallel;
 pub mod present;
+pub mod reader;
 pub mod render;
 pub mod rewrite;
 pub mod rules;

@@ -1,0 +1,152 @@
+//! `ekb export --as-loaded`: what a version of the reader loads, in the JSON shape of SPEC
+//! §5. Each field holds what the robot holds: a field no line set is the robot's empty text
+//! or 0; `gestureArm` is `null` where the version does not read it; a value the reader took
+//! from past the end of its line (undefined), or a number JSON cannot hold, is `null`.
+
+use serde::Serialize;
+
+use super::line::LoadedValue;
+use super::load::{Loaded, LoadedLocation};
+use crate::model::{Dialect, Key, Language, Phase};
+
+/// The whole of what the robot holds.
+#[derive(Debug, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct LoadedExport {
+    /// The version of the reader.
+    pub reader: &'static str,
+    pub dialect: Dialect,
+    /// In ascending id order.
+    pub locations: Vec<LoadedLocationExport>,
+    /// `null` when no line set the tour; a `null` stop holds whatever was in memory.
+    pub tour: Option<Vec<Option<i32>>>,
+}
+
+#[derive(Debug, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct LoadedLocationExport {
+    pub id: i32,
+    pub description: Option<String>,
+    pub pose: Option<LoadedPose>,
+    pub gesture_target: Option<LoadedPoint>,
+    pub gesture_arm: Option<String>,
+    pub pre_gesture_message: LoadedMessages,
+    pub post_gesture_message: LoadedMessages,
+    pub cultural_knowledge: Option<Vec<String>>,
+}
+
+#[derive(Debug, Serialize)]
+pub struct LoadedPose {
+    pub x: Option<f64>,
+    pub y: Option<f64>,
+    pub theta: Option<f64>,
+}
+
+#[derive(Debug, Serialize)]
+pub struct LoadedPoint {
+    pub x: Option<f64>,
+    pub y: Option<f64>,
+    pub z: Option<f64>,
+}
+
+#[derive(Debug, Serialize)]
+pub struct LoadedMessages {
+    pub english: Option<String>,
+    #[serde(rename = "isiZulu")]
+    pub isi_zulu: Option<String>,
+    pub kinyarwanda: Option<String>,
+}
+
+impl LoadedExport {
+    /// `loaded`, whose text values are spans of `text`.
+    pub fn new(loaded: &Loaded, text: &[u8]) -> LoadedExport {
+        LoadedExport {
+            reader: loaded.reader.name(),
+            dialect: match loaded.reader.pose_key() {
+                Key::RobotLocation => Dialect::Seed,
+                _ => Dialect::Current,
+            },
+            locations: loaded
+                .locations
+                .values()
+                .map(|location| LoadedLocationExport::new(location, loaded, text))
+                .collect(),
+            tour: loaded.tour.as_ref().map(|tour| tour.stops.clone()),
+        }
+    }
+}
+
+impl LoadedLocationExport {
+    fn new(location: &LoadedLocation, loaded: &Loaded, text: &[u8]) -> LoadedLocationExport {
+        let value = |key: Key| location.field(key).map(|field| &field.value);
+        let text_of = |key: Key| match value(key) {
+            None => Some(String::new()),
+            Some(value) => loaded_text(value, text),
+        };
+        let numbers = |key: Key| match value(key) {
+            None => Some([Some(0.0); 3]),
+            Some(LoadedValue::Numbers(numbers)) => Some(numbers.map(json_number)),
+            Some(_) => None,
+        };
+        let messages = |phase: Phase| {
+            let message = |language| text_of(Key::for_message(phase, language));
+            LoadedMessages {
+                english: message(Language::English),
+                isi_zulu: message(Language::IsiZulu),
+                kinyarwanda: message(Language::Kinyarwanda),
+            }
+        };
+        let reader = loaded.reader;
+        LoadedLocationExport {
+            id: location.id,
+            description: text_of(Key::RobotLocationDescription),
+            pose: numbers(reader.pose_key()).map(|[x, y, theta]| LoadedPose { x, y, theta }),
+            gesture_target: numbers(Key::GestureTarget).map(|[x, y, z]| LoadedPoint { x, y, z }),
+            gesture_arm: if reader.reads(Key::GestureArm) {
+                text_of(Key::GestureArm)
+            } else {
+                None
+            },
+            pre_gesture_message: messages(Phase::Pre),
+            post_gesture_message: messages(Phase::Post),
+            cultural_knowledge: match value(Key::CulturalKnowledge) {
+                None => Some(Vec::new()),
+                Some(LoadedValue::Words(words)) => Some(
+                    words
+                        .iter()
+                        .map(|span| String::from_utf8_lossy(&text[span.range()]).into_owned())
+                        .collect(),
+                ),
+                Some(_) => None,
+            },
+        }
+    }
+}
+
+/// A loaded text (lossy where a cut split a character), or `None` when undefined.
+fn loaded_text(value: &LoadedValue, text: &[u8]) -> Option<String> {
+    match value {
+        LoadedValue::Text(span) => Some(String::from_utf8_lossy(&text[span.range()]).into_owned()),
+        _ => None,
+    }
+}
+
+/// A C `float` as JSON: the shortest decimal that reads back as the same `float` (so
+/// `2.6`, not `2.5999999`), or `None` for an infinity or NaN.
+fn json_number(value: f32) -> Option<f64> {
+    value
+        .is_finite()
+        .then(|| value.to_string().parse().expect("a float prints as a number"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn floats_print_as_their_shortest_decimal() {
+        assert_eq!(json_number(2.6), Some(2.6));
+        assert_eq!(json_number(-90.0), Some(-90.0));
+        assert_eq!(json_number(f32::INFINITY), None);
+    }
+}

@@ -1,0 +1,289 @@
+//! How the robot's reader reads one line: one `fgets` call's worth of bytes.
+//!
+//! It reads a key and an integer with `sscanf("%s %d")`; a line without both is skipped. A
+//! key it knows then finds its value by counting from the *start of the line*: `strlen(key)`,
+//! then past everything that is not a letter or digit, past the id's letters and digits,
+//! and past everything that is not a letter or digit again. Numbers are read from there with
+//! `%f`; a text is the rest of the line less its last byte (taken to be the newline).
+
+use super::scan::{self, is_alnum};
+use super::Reader;
+use crate::model::{Key, ValueKind};
+use crate::syntax::Span;
+
+/// What one line does to what the robot holds.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LineRead {
+    /// No key followed by an integer (a blank line, a comment, the rest of a split line
+    /// that does not look like an entry): nothing happens.
+    Skipped,
+    /// A key that this version does not read, spelled as written.
+    Ignored { key: Span },
+    /// `key` of location `id` loads `value`.
+    Value {
+        key: Key,
+        key_span: Span,
+        id: i32,
+        value: LoadedValue,
+    },
+    /// A value the reader could not read (`unsuccessful attempt to assign …`): the line
+    /// changes nothing.
+    Failed { key: Key, id: i32 },
+    /// The tour: its declared count, and the ids read into its first slots, in order;
+    /// `None` where a slot keeps whatever it held before.
+    Tour { count: i32, stops: Vec<Option<i32>> },
+    /// A tour whose count could not be read: nothing changes.
+    TourFailed,
+}
+
+/// A value as the reader loads it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LoadedValue {
+    /// The bytes of the file it copies (less the last byte of the line).
+    Text(Span),
+    /// The three numbers of a pose or a gesture target, as C `float`s.
+    Numbers([f32; 3]),
+    /// The culturalKnowledge words, each as `%s` reads it.
+    Words(Vec<Span>),
+    /// Its scan ran off the end of the line into whatever the buffer held before.
+    Undefined,
+}
+
+/// Reads `line` (one `fgets` call's bytes: at most a buffer less one, newline included if
+/// it fitted), which starts at `offset` in the file.
+pub fn read(line: &[u8], offset: usize, reader: Reader) -> LineRead {
+    // A C string ends at its first NUL.
+    let line = &line[..memchr::memchr(0, line).unwrap_or(line.len())];
+    let at = |range: std::ops::Range<usize>| Span::new(offset + range.start, offset + range.end);
+    let Some(key_range) = scan::word(line, 0) else {
+        return LineRead::Skipped;
+    };
+    let Some((id, _)) = scan::int(line, key_range.end) else {
+        return LineRead::Skipped;
+    };
+    let key_span = at(key_range.clone());
+    let known = std::str::from_utf8(&line[key_range.clone()])
+        .ok()
+        .and_then(Key::from_name);
+    let Some(key) = known.filter(|&key| reader.reads(key)) else {
+        return LineRead::Ignored { key: key_span };
+    };
+    // The reader counts the key's length from the start of the line, not from the key.
+    let key_length = key_range.len();
+    if key == Key::TourSpecification {
+        return tour(line, key_length);
+    }
+    let Some(start) = value_start(line, key_length) else {
+        return LineRead::Value {
+            key,
+            key_span,
+            id,
+            value: LoadedValue::Undefined,
+        };
+    };
+    let value = match key.value_kind() {
+        ValueKind::Pose | ValueKind::Point => match three_floats(line, start) {
+            Some(numbers) => LoadedValue::Numbers(numbers),
+            None => return LineRead::Failed { key, id },
+        },
+        ValueKind::Words => LoadedValue::Words(words(line, start).into_iter().map(at).collect()),
+        // A text (and on 2026-03 the arm) is the rest of the line less its last byte.
+        ValueKind::Text | ValueKind::Arm => LoadedValue::Text(at(start..line.len() - 1)),
+        ValueKind::Tour => unreachable!("read above"),
+    };
+    LineRead::Value {
+        key,
+        key_span,
+        id,
+        value,
+    }
+}
+
+/// Where a location key's value starts: past `strlen(key)` bytes, then past non-alphanumerics,
+/// alphanumerics (the id) and non-alphanumerics again.
+fn value_start(line: &[u8], key_length: usize) -> Option<usize> {
+    let after_key = scan::skip_while(line, key_length, |b| !is_alnum(b))?;
+    let after_id = scan::skip_while(line, after_key, is_alnum)?;
+    scan::skip_while(line, after_id, |b| !is_alnum(b))
+}
+
+/// `sscanf("%f %f %f") == 3`, or nothing.
+fn three_floats(line: &[u8], start: usize) -> Option<[f32; 3]> {
+    let (x, at) = scan::float(line, start)?;
+    let (y, at) = scan::float(line, at)?;
+    let (z, _) = scan::float(line, at)?;
+    Some([x, y, z])
+}
+
+/// The culturalKnowledge words: a `%s` word at each run of letters and digits, so that a
+/// word with any other character in it counts twice or more (`Bow's`, then `s`).
+fn words(line: &[u8], mut at: usize) -> Vec<std::ops::Range<usize>> {
+    let mut words = Vec::new();
+    while at < line.len() {
+        let Some(word) = scan::word(line, at) else {
+            break;
+        };
+        words.push(word);
+        let Some(after_word) = scan::skip_while(line, at, is_alnum) else {
+            break;
+        };
+        match scan::skip_while(line, after_word, |b| !is_alnum(b)) {
+            Some(next) => at = next,
+            None => break,
+        }
+    }
+    words
+}
+
+/// The tour's line: the count after the key, then one id after each run of letters and
+/// digits; an id that cannot be read leaves its slot, and every later one, as it was.
+fn tour(line: &[u8], key_length: usize) -> LineRead {
+    let Some(at) = scan::skip_while(line, key_length, |b| !is_alnum(b)) else {
+        return LineRead::TourFailed;
+    };
+    let Some((count, _)) = scan::int(line, at) else {
+        return LineRead::TourFailed;
+    };
+    let mut stops = Vec::new();
+    let mut at = scan::skip_while(line, at, is_alnum)
+        .and_then(|after_count| scan::skip_while(line, after_count, |b| !is_alnum(b)));
+    for _ in 0..count.max(0) {
+        let Some((id, _)) = at.and_then(|start| scan::int(line, start)) else {
+            break;
+        };
+        stops.push(Some(id));
+        at = at
+            .and_then(|start| scan::skip_while(line, start, is_alnum))
+            .and_then(|after_id| scan::skip_while(line, after_id, |b| !is_alnum(b)));
+    }
+    LineRead::Tour { count, stops }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn read_str(line: &str, reader: Reader) -> LineRead {
+        read(line.as_bytes(), 0, reader)
+    }
+
+    fn text(line: &str, reader: Reader) -> String {
+        match read_str(line, reader) {
+            LineRead::Value {
+                value: LoadedValue::Text(span),
+                ..
+            } => line[span.range()].to_string(),
+            other => panic!("{line:?}: {other:?}"),
+        }
+    }
+
+    fn numbers(line: &str, reader: Reader) -> [f32; 3] {
+        match read_str(line, reader) {
+            LineRead::Value {
+                value: LoadedValue::Numbers(numbers),
+                ..
+            } => numbers,
+            other => panic!("{line:?}: {other:?}"),
+        }
+    }
+
+    const NOW: Reader = Reader::V2025_06;
+
+    #[test]
+    fn leading_symbols_of_the_first_value_are_lost() {
+        assert_eq!(numbers("robotLocationPose 1 -2.5 1.0 90\n", NOW), [2.5, 1.0, 90.0]);
+        assert_eq!(numbers("robotLocationPose 1 2.5 -1.0 90\n", NOW), [2.5, -1.0, 90.0]);
+        assert_eq!(numbers("robotLocationPose 1 +1.5 1 2\n", NOW), [1.5, 1.0, 2.0]);
+        assert_eq!(text("preGestureMessageEnglish 1 \"Hello\"\n", NOW), "Hello\"");
+        assert_eq!(text("robotLocationDescription 1 Ùmuntu\n", NOW), "muntu");
+    }
+
+    #[test]
+    fn a_text_loses_its_last_byte_and_keeps_blanks_and_carriage_returns() {
+        assert_eq!(text("postGestureMessageIsiZulu 5 Sawubona", NOW), "Sawubon");
+        assert_eq!(text("postGestureMessageIsiZulu 5 Sawubona\r\n", NOW), "Sawubona\r");
+        assert_eq!(text("robotLocationDescription 1 Roomba  \n", NOW), "Roomba  ");
+    }
+
+    #[test]
+    fn an_indented_line_is_read_from_the_wrong_place() {
+        assert_eq!(numbers(" robotLocationPose 1 2.0 3.0 90\n", NOW), [1.0, 2.0, 3.0]);
+        assert_eq!(text(" preGestureMessageEnglish 1 Hello\n", NOW), "1 Hello");
+        assert_eq!(
+            read_str(" tourSpecification 2 1 2\n", NOW),
+            LineRead::TourFailed
+        );
+    }
+
+    #[test]
+    fn keys_that_a_version_does_not_read_are_ignored() {
+        let line = "robotLocation 1 2.6 8.1 -90\n";
+        assert!(matches!(read_str(line, NOW), LineRead::Ignored { .. }));
+        assert_eq!(numbers(line, Reader::D542), [2.6, 8.1, -90.0]);
+        let arm = "gestureArm 1 right \n";
+        assert!(matches!(read_str(arm, NOW), LineRead::Ignored { .. }));
+        assert_eq!(text(arm, Reader::V2026_03), "right ");
+        assert!(matches!(
+            read_str("culturalKnowledge 1 Bow\n", Reader::D542),
+            LineRead::Ignored { .. }
+        ));
+        assert!(matches!(
+            read_str("postGestureMessageenglish 1 Hi\n", NOW),
+            LineRead::Ignored { .. }
+        ));
+    }
+
+    #[test]
+    fn lines_without_a_key_and_an_integer_are_skipped() {
+        for line in ["\n", "  \x0c \n", "# a comment\n", "robotLocationDescription x\n"] {
+            assert_eq!(read_str(line, NOW), LineRead::Skipped, "{line:?}");
+        }
+    }
+
+    #[test]
+    fn cultural_words_split_at_other_characters() {
+        let line = "culturalKnowledge 1 Deictic_Shape Bow's\n";
+        let LineRead::Value {
+            value: LoadedValue::Words(words),
+            ..
+        } = read_str(line, NOW)
+        else {
+            panic!()
+        };
+        let words: Vec<&str> = words.iter().map(|span| &line[span.range()]).collect();
+        assert_eq!(words, ["Deictic_Shape", "Shape", "Bow's", "s"]);
+    }
+
+    #[test]
+    fn the_tour_skips_commas_and_stops_at_what_it_cannot_read() {
+        let stops = |line: &str| match read_str(line, NOW) {
+            LineRead::Tour { count, stops } => (count, stops),
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(
+            stops("tourSpecification 3 1, 4, 2\n"),
+            (3, vec![Some(1), Some(4), Some(2)])
+        );
+        assert_eq!(stops("tourSpecification 3 1 4\n"), (3, vec![Some(1), Some(4)]));
+        assert_eq!(stops("tourSpecification 2 1 4 5\n"), (2, vec![Some(1), Some(4)]));
+        assert_eq!(stops("tourSpecification 2 -1 4\n"), (2, vec![Some(1), Some(4)]));
+    }
+
+    #[test]
+    fn a_value_that_runs_off_the_line_is_undefined_and_bad_numbers_fail() {
+        assert!(matches!(
+            read_str("robotLocationDescription 4\n", NOW),
+            LineRead::Value {
+                value: LoadedValue::Undefined,
+                ..
+            }
+        ));
+        assert_eq!(
+            read_str("gestureTarget 4 8,1 2 3\n", NOW),
+            LineRead::Failed {
+                key: Key::GestureTarget,
+                id: 4
+            }
+        );
+    }
+}

@@ -1,0 +1,17 @@
+//! The robot's reader, version by version (SPEC §2): the one place that knows how each
+//! version loads a file — how it cuts lines, which keys it reads, where it finds each
+//! value, what it drops and keeps, and the tree its order of ids builds.
+//!
+//! [`load`] runs a version over a file and gives what the robot holds ([`Loaded`]), for
+//! `export --as-loaded` and the views; the compatibility rules ask the same questions of
+//! single lines ([`line::read`]) and of the written model.
+
+pub mod export;
+pub mod line;
+mod load;
+mod scan;
+pub mod tree;
+mod version;
+
+pub use load::{chunks, load, Field, Loaded, LoadedLocation, LoadedTour};
+pub use version::Reader;

@@ -1,0 +1,153 @@
+//! The versions of the robot's reader (SPEC §2.1) and what sets each apart.
+
+use crate::model::{Dialect, Key};
+
+/// One version of the robot's `EnvironmentKnowledgeBase` reader. The names are the contract
+/// of `--reader`, `EKB_READER` and `reader` in `ekb.toml`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, clap::ValueEnum)]
+pub enum Reader {
+    /// The document's class (D5.4.2, appendix A).
+    #[value(name = "d5.4.2")]
+    D542,
+    /// `main`, June 2025 (still `main` in April 2026).
+    #[value(name = "2025-06")]
+    V2025_06,
+    /// The `bc_service` branch, February 2026.
+    #[value(name = "2026-02")]
+    V2026_02,
+    /// The workspace branch, March 2026: reads `gestureArm`.
+    #[value(name = "2026-03")]
+    V2026_03,
+    /// "behaviorController v1.1", April 2026: the arm comes from the culture knowledge base.
+    #[value(name = "2026-04")]
+    V2026_04,
+}
+
+impl Reader {
+    pub const ALL: [Reader; 5] = [
+        Reader::D542,
+        Reader::V2025_06,
+        Reader::V2026_02,
+        Reader::V2026_03,
+        Reader::V2026_04,
+    ];
+
+    /// The name of SPEC §2.1.
+    pub fn name(self) -> &'static str {
+        match self {
+            Reader::D542 => "d5.4.2",
+            Reader::V2025_06 => "2025-06",
+            Reader::V2026_02 => "2026-02",
+            Reader::V2026_03 => "2026-03",
+            Reader::V2026_04 => "2026-04",
+        }
+    }
+
+    /// The version with this name.
+    pub fn from_name(name: &str) -> Option<Reader> {
+        Reader::ALL
+            .into_iter()
+            .find(|reader| reader.name() == name.trim())
+    }
+
+    /// Where the version comes from, for messages.
+    pub fn origin(self) -> &'static str {
+        match self {
+            Reader::D542 => "the document's class",
+            Reader::V2025_06 => "main, June 2025",
+            Reader::V2026_02 => "the bc_service branch, February 2026",
+            Reader::V2026_03 => "the workspace branch, March 2026",
+            Reader::V2026_04 => "behaviorController v1.1, April 2026",
+        }
+    }
+
+    /// The reader a file is checked against when none is chosen: the document's for a file
+    /// in its dialect, today's robot's for any other.
+    pub fn default_for(dialect: Option<Dialect>) -> Reader {
+        match dialect {
+            Some(Dialect::Seed) => Reader::D542,
+            _ => Reader::V2025_06,
+        }
+    }
+
+    /// The size of its line buffer: `fgets` reads at most one byte less per call, so a
+    /// line of this many bytes or more (newline included) is split.
+    pub fn line_buffer(self) -> usize {
+        match self {
+            Reader::D542 | Reader::V2025_06 => 200,
+            Reader::V2026_02 => 300,
+            Reader::V2026_03 | Reader::V2026_04 => 600,
+        }
+    }
+
+    /// The key it reads a location's pose from.
+    pub fn pose_key(self) -> Key {
+        match self {
+            Reader::D542 => Key::RobotLocation,
+            _ => Key::RobotLocationPose,
+        }
+    }
+
+    /// Whether it reads lines of `key` (exactly spelled) at all.
+    pub fn reads(self, key: Key) -> bool {
+        match key {
+            Key::RobotLocation | Key::RobotLocationPose => key == self.pose_key(),
+            Key::GestureArm => self == Reader::V2026_03,
+            Key::CulturalKnowledge => self != Reader::D542,
+            _ => true,
+        }
+    }
+
+    /// The depth of the tree of locations at which loading overflows its 8 MB stack, as
+    /// measured on files of ascending ids (SPEC §2.10). The document's class is taken to
+    /// behave as `2025-06`.
+    pub fn crash_depth(self) -> usize {
+        match self {
+            Reader::D542 | Reader::V2025_06 => 5_570,
+            Reader::V2026_02 => 3_750,
+            Reader::V2026_03 | Reader::V2026_04 => 1_950,
+        }
+    }
+
+    /// The depth from which `ekb` reports a crash: 90% of the measured one, since the exact
+    /// point depends on the build.
+    pub fn reported_crash_depth(self) -> usize {
+        self.crash_depth() * 9 / 10
+    }
+}
+
+impl std::fmt::Display for Reader {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip_and_match_clap() {
+        use clap::ValueEnum;
+        for reader in Reader::ALL {
+            assert_eq!(Reader::from_name(reader.name()), Some(reader));
+            let value = reader.to_possible_value().unwrap();
+            assert_eq!(value.get_name(), reader.name());
+        }
+        assert_eq!(Reader::from_name("2024-01"), None);
+    }
+
+    #[test]
+    fn what_each_version_reads() {
+        assert!(Reader::D542.reads(Key::RobotLocation));
+        assert!(!Reader::D542.reads(Key::CulturalKnowledge));
+        for reader in &Reader::ALL[1..] {
+            assert!(!reader.reads(Key::RobotLocation), "{reader}");
+            assert!(reader.reads(Key::RobotLocationPose), "{reader}");
+            assert_eq!(reader.reads(Key::GestureArm), *reader == Reader::V2026_03);
+        }
+        assert_eq!(Reader::default_for(Some(Dialect::Seed)), Reader::D542);
+        assert_eq!(Reader::default_for(None), Reader::V2025_06);
+        assert_eq!(Reader::V2026_03.reported_crash_depth(), 1_755);
+    }
+}
