@@ -191,23 +191,44 @@ mod tests {
 
     #[test]
     fn leading_symbols_of_the_first_value_are_lost() {
-        assert_eq!(numbers("robotLocationPose 1 -2.5 1.0 90\n", NOW), [2.5, 1.0, 90.0]);
-        assert_eq!(numbers("robotLocationPose 1 2.5 -1.0 90\n", NOW), [2.5, -1.0, 90.0]);
-        assert_eq!(numbers("robotLocationPose 1 +1.5 1 2\n", NOW), [1.5, 1.0, 2.0]);
-        assert_eq!(text("preGestureMessageEnglish 1 \"Hello\"\n", NOW), "Hello\"");
+        assert_eq!(
+            numbers("robotLocationPose 1 -2.5 1.0 90\n", NOW),
+            [2.5, 1.0, 90.0]
+        );
+        assert_eq!(
+            numbers("robotLocationPose 1 2.5 -1.0 90\n", NOW),
+            [2.5, -1.0, 90.0]
+        );
+        assert_eq!(
+            numbers("robotLocationPose 1 +1.5 1 2\n", NOW),
+            [1.5, 1.0, 2.0]
+        );
+        assert_eq!(
+            text("preGestureMessageEnglish 1 \"Hello\"\n", NOW),
+            "Hello\""
+        );
         assert_eq!(text("robotLocationDescription 1 Ùmuntu\n", NOW), "muntu");
     }
 
     #[test]
     fn a_text_loses_its_last_byte_and_keeps_blanks_and_carriage_returns() {
         assert_eq!(text("postGestureMessageIsiZulu 5 Sawubona", NOW), "Sawubon");
-        assert_eq!(text("postGestureMessageIsiZulu 5 Sawubona\r\n", NOW), "Sawubona\r");
-        assert_eq!(text("robotLocationDescription 1 Roomba  \n", NOW), "Roomba  ");
+        assert_eq!(
+            text("postGestureMessageIsiZulu 5 Sawubona\r\n", NOW),
+            "Sawubona\r"
+        );
+        assert_eq!(
+            text("robotLocationDescription 1 Roomba  \n", NOW),
+            "Roomba  "
+        );
     }
 
     #[test]
     fn an_indented_line_is_read_from_the_wrong_place() {
-        assert_eq!(numbers(" robotLocationPose 1 2.0 3.0 90\n", NOW), [1.0, 2.0, 3.0]);
+        assert_eq!(
+            numbers(" robotLocationPose 1 2.0 3.0 90\n", NOW),
+            [1.0, 2.0, 3.0]
+        );
         assert_eq!(text(" preGestureMessageEnglish 1 Hello\n", NOW), "1 Hello");
         assert_eq!(
             read_str(" tourSpecification 2 1 2\n", NOW),
@@ -235,7 +256,12 @@ mod tests {
 
     #[test]
     fn lines_without_a_key_and_an_integer_are_skipped() {
-        for line in ["\n", "  \x0c \n", "# a comment\n", "robotLocationDescription x\n"] {
+        for line in [
+            "\n",
+            "  \x0c \n",
+            "# a comment\n",
+            "robotLocationDescription x\n",
+        ] {
             assert_eq!(read_str(line, NOW), LineRead::Skipped, "{line:?}");
         }
     }
@@ -264,9 +290,18 @@ mod tests {
             stops("tourSpecification 3 1, 4, 2\n"),
             (3, vec![Some(1), Some(4), Some(2)])
         );
-        assert_eq!(stops("tourSpecification 3 1 4\n"), (3, vec![Some(1), Some(4)]));
-        assert_eq!(stops("tourSpecification 2 1 4 5\n"), (2, vec![Some(1), Some(4)]));
-        assert_eq!(stops("tourSpecification 2 -1 4\n"), (2, vec![Some(1), Some(4)]));
+        assert_eq!(
+            stops("tourSpecification 3 1 4\n"),
+            (3, vec![Some(1), Some(4)])
+        );
+        assert_eq!(
+            stops("tourSpecification 2 1 4 5\n"),
+            (2, vec![Some(1), Some(4)])
+        );
+        assert_eq!(
+            stops("tourSpecification 2 -1 4\n"),
+            (2, vec![Some(1), Some(4)])
+        );
     }
 
     #[test]

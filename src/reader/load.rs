@@ -102,7 +102,9 @@ pub fn load(text: &[u8], reader: Reader) -> Loaded {
         LoadedTour {
             line,
             count,
-            stops: (0..shown).map(|k| slots.get(k).copied().flatten()).collect(),
+            stops: (0..shown)
+                .map(|k| slots.get(k).copied().flatten())
+                .collect(),
         }
     });
     Loaded {
@@ -159,11 +161,16 @@ mod tests {
                     robotLocationDescription 2 Lab\nrobotLocation 2 9 9 9\n";
         let loaded = load(text.as_bytes(), Reader::V2025_06);
         let location = &loaded.locations[&2];
-        assert_eq!(text_of(text, location.field(Key::RobotLocationDescription)), "Lab");
+        assert_eq!(
+            text_of(text, location.field(Key::RobotLocationDescription)),
+            "Lab"
+        );
         let pose = location.field(Key::RobotLocationPose).map(|f| &f.value);
         assert_eq!(pose, Some(&LoadedValue::Numbers([1.0, 2.0, 3.0])));
         let seed = load(text.as_bytes(), Reader::D542);
-        let pose = seed.locations[&2].field(Key::RobotLocation).map(|f| &f.value);
+        let pose = seed.locations[&2]
+            .field(Key::RobotLocation)
+            .map(|f| &f.value);
         assert_eq!(pose, Some(&LoadedValue::Numbers([9.0, 9.0, 9.0])));
     }
 
@@ -172,10 +179,16 @@ mod tests {
         let message = "a".repeat(250);
         let text = format!("preGestureMessageEnglish 1 {message}\n");
         let cut = load(text.as_bytes(), Reader::V2025_06);
-        let loaded = text_of(&text, cut.locations[&1].field(Key::PreGestureMessageEnglish));
+        let loaded = text_of(
+            &text,
+            cut.locations[&1].field(Key::PreGestureMessageEnglish),
+        );
         assert_eq!(loaded.len(), 199 - 27 - 1);
         let whole = load(text.as_bytes(), Reader::V2026_02);
-        let loaded = text_of(&text, whole.locations[&1].field(Key::PreGestureMessageEnglish));
+        let loaded = text_of(
+            &text,
+            whole.locations[&1].field(Key::PreGestureMessageEnglish),
+        );
         assert_eq!(loaded, message);
     }
 
@@ -183,8 +196,13 @@ mod tests {
     fn the_last_tour_wins_and_keeps_the_slots_it_does_not_write() {
         let text = "tourSpecification 3 1 2 3\ntourSpecification 3 7\n";
         let tour = load(text.as_bytes(), Reader::V2025_06).tour.unwrap();
-        assert_eq!((tour.count, tour.stops), (3, vec![Some(7), Some(2), Some(3)]));
-        let fresh = load(b"tourSpecification 3 7\n", Reader::V2025_06).tour.unwrap();
+        assert_eq!(
+            (tour.count, tour.stops),
+            (3, vec![Some(7), Some(2), Some(3)])
+        );
+        let fresh = load(b"tourSpecification 3 7\n", Reader::V2025_06)
+            .tour
+            .unwrap();
         assert_eq!(fresh.stops, vec![Some(7), None, None]);
         assert_eq!(load(b"", Reader::V2025_06).tour, None);
     }

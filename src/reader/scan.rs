@@ -79,17 +79,17 @@ pub fn float(line: &[u8], at: usize) -> Option<(f32, usize)> {
 fn float_length(bytes: &[u8]) -> usize {
     let sign = usize::from(matches!(bytes.first(), Some(b'-' | b'+')));
     let rest = &bytes[sign..];
-    let starts_with = |word: &[u8]| {
-        rest.len() >= word.len() && rest[..word.len()].eq_ignore_ascii_case(word)
-    };
+    let starts_with =
+        |word: &[u8]| rest.len() >= word.len() && rest[..word.len()].eq_ignore_ascii_case(word);
     for word in [&b"infinity"[..], b"inf", b"nan"] {
         if starts_with(word) {
             return sign + word.len();
         }
     }
     let digits = |from: usize| {
-        rest.get(from..)
-            .map_or(0, |tail| tail.iter().take_while(|b| b.is_ascii_digit()).count())
+        rest.get(from..).map_or(0, |tail| {
+            tail.iter().take_while(|b| b.is_ascii_digit()).count()
+        })
     };
     let whole = digits(0);
     let mut end = whole;

@@ -62,7 +62,7 @@ fn insert(depths: &mut BTreeMap<i32, u32>, id: i32) -> u32 {
 /// first, then the medians of its halves, level by level.
 pub fn balanced_order(ids: &[i32]) -> Vec<i32> {
     let mut order = Vec::with_capacity(ids.len());
-    let mut level = vec![0..ids.len()];
+    let mut level: Vec<std::ops::Range<usize>> = Vec::from([0..ids.len()]);
     while !level.is_empty() {
         let mut next = Vec::with_capacity(level.len() * 2);
         for range in level {
@@ -116,7 +116,13 @@ mod tests {
     #[test]
     fn ascending_ids_build_a_chain_and_repeats_cost_visits_only() {
         let shape = shape_of([1, 1, 2, 2, 3, 3]);
-        assert_eq!(shape, TreeShape { height: 3, visits: 1 + 1 + 2 + 2 + 3 + 3 });
+        assert_eq!(
+            shape,
+            TreeShape {
+                height: 3,
+                visits: 1 + 1 + 2 + 2 + 3 + 3
+            }
+        );
         assert_eq!(shape_of([]), TreeShape::default());
     }
 
@@ -130,7 +136,11 @@ mod tests {
             &[2, 4, 6, 8, 1, 3, 5, 7],
         ];
         for ids in orders {
-            assert_eq!(shape_of(ids.iter().copied()).height, naive_height(ids), "{ids:?}");
+            assert_eq!(
+                shape_of(ids.iter().copied()).height,
+                naive_height(ids),
+                "{ids:?}"
+            );
         }
     }
 
