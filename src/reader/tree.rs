@@ -62,7 +62,7 @@ fn insert(depths: &mut BTreeMap<i32, u32>, id: i32) -> u32 {
 /// first, then the medians of its halves, level by level.
 pub fn balanced_order(ids: &[i32]) -> Vec<i32> {
     let mut order = Vec::with_capacity(ids.len());
-    let mut level: Vec<std::ops::Range<usize>> = Vec::from([0..ids.len()]);
+    let mut level: Vec<std::ops::Range<usize>> = std::iter::once(0..ids.len()).collect();
     while !level.is_empty() {
         let mut next = Vec::with_capacity(level.len() * 2);
         for range in level {
