@@ -12,6 +12,7 @@
 use crate::diagnostic::{Diagnostic, Summary};
 use crate::model::build::{build, Options};
 use crate::model::KnowledgeBase;
+use crate::reader::Reader;
 use crate::rules::{self, compat, structure, Rule};
 use crate::source::SourceFile;
 
@@ -39,6 +40,8 @@ pub fn kept_at_most(rule: &Rule) -> usize {
 pub struct Checked<'a> {
     pub source: &'a SourceFile,
     pub kb: KnowledgeBase<'a>,
+    /// The version of the robot's reader it was checked against.
+    pub reader: Reader,
     /// The findings (at most [`kept_at_most`] of each rule), sorted by position.
     pub diagnostics: Vec<Diagnostic>,
     /// For each rule with more than [`MAX_SHOWN_PER_RULE`] findings, a note
@@ -108,7 +111,10 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
     let unrecorded = source.invalid_utf8_lines() - source.invalid_utf8().len();
     out.count(&structure::invalid_utf8::INVALID_UTF8, unrecorded);
     let kb = build(source.text(), options, &mut out);
-    rules::check_model(&kb, source.text(), &mut out);
+    let reader = options
+        .reader
+        .unwrap_or_else(|| Reader::default_for(options.dialect.or(kb.dialect)));
+    rules::check_model(&kb, source.text(), reader, &mut out);
     let Diagnostics {
         kept: mut diagnostics,
         counts,
@@ -118,6 +124,7 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
     Checked {
         source,
         kb,
+        reader,
         diagnostics,
         omitted,
         counts,
@@ -167,6 +174,11 @@ impl Diagnostics {
         for (rule, count) in later.counts.0 {
             self.counts.add(rule, count);
         }
+    }
+
+    /// The findings kept, to be made graver where the robot's reader makes them so.
+    pub fn iter_mut(&mut self) -> std::slice::IterMut<'_, Diagnostic> {
+        self.kept.iter_mut()
     }
 
     /// Reports `n` findings of `rule` that are known not to be kept (never made).

@@ -27,6 +27,16 @@ pub struct Cli {
     #[arg(short, long, global = true)]
     pub verbose: bool,
 
+    /// The version of the robot's reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]
+    #[arg(
+        long,
+        global = true,
+        value_enum,
+        env = "EKB_READER",
+        value_name = "VERSION"
+    )]
+    pub reader: Option<crate::reader::Reader>,
+
     /// Print only findings and errors, no summary
     #[arg(short, long, global = true)]
     pub quiet: bool,

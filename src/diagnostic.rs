@@ -72,6 +72,8 @@ pub struct Label {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Diagnostic {
     pub rule: &'static Rule,
+    /// The rule's severity, unless this finding is graver (or milder) than most of its rule's.
+    severity: Severity,
     /// What is wrong and what the robot would do.
     pub message: String,
     pub span: Span,
@@ -86,6 +88,7 @@ impl Diagnostic {
     pub fn new(rule: &'static Rule, span: Span, message: impl Into<String>) -> Diagnostic {
         Diagnostic {
             rule,
+            severity: rule.severity,
             message: message.into(),
             span,
             location_id: None,
@@ -96,7 +99,12 @@ impl Diagnostic {
     }
 
     pub fn severity(&self) -> Severity {
-        self.rule.severity
+        self.severity
+    }
+
+    pub fn with_severity(mut self, severity: Severity) -> Diagnostic {
+        self.severity = severity;
+        self
     }
 
     pub fn at_location(mut self, id: Option<u32>) -> Diagnostic {

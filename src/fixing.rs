@@ -177,8 +177,8 @@ mod tests {
     #[test]
     fn a_second_pass_finishes_what_the_first_started() {
         let options = Options {
-            dialect: Some(crate::model::Dialect::Current),
-            verbose: false,
+            reader: Some(crate::reader::Reader::V2025_06),
+            ..Options::default()
         };
         let source = SourceFile::from_bytes("t", b"RobotLocation 1 1 2 3\n".to_vec());
         let result = fix(&source, &options);

@@ -31,6 +31,7 @@ pub mod reader;
 pub mod render;
 pub mod rewrite;
 pub mod rules;
+pub mod settings;
 pub mod source;
 pub mod syntax;
 pub mod write;

@@ -655,7 +655,7 @@ fn the_dialect_key_pins_a_dialect() {
     assert_eq!(run_pinned.code, 1);
     assert_eq!(run_pinned.stdout.matches("error[legacy-key]").count(), 5);
     assert!(run_pinned.stdout.contains(
-        "data/kb.dat:2:1: error[legacy-key] `robotLocation` belongs to the seed dialect"
+        "data/kb.dat:2:1: error[legacy-key] reader 2025-06 reads poses from `robotLocationPose`, not `robotLocation`"
     ));
     for dialect in ["seed", "auto"] {
         let robot = robot_folder(&format!("knowledgeBase = kb.dat\ndialect = {dialect}\n"));

@@ -35,8 +35,11 @@ use std::borrow::Cow;
 use std::ops::Range;
 
 use crate::model::Key;
-use crate::rules::compat::compat_line_too_long::LINE_BUFFER;
+use crate::reader::Reader;
 use crate::syntax::Span;
+
+/// Padding never makes a line as long as the smallest reader's line buffer.
+const LINE_BUFFER: usize = Reader::SMALLEST_LINE_BUFFER;
 
 /// The column (1-based) where a location line's id starts.
 pub const VALUE_COLUMN: usize = 31;

@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::diagnostic::Summary;
+use crate::model::build::Options;
 use crate::render::{self, Format, RenderOptions};
 use crate::source::SourceFile;
 
@@ -25,15 +26,19 @@ pub struct Args {
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
-    let options = context.read_options()?;
-    let sources = context
-        .inputs(&args.files)?
+    let paths = context.inputs(&args.files)?;
+    let options = paths
+        .iter()
+        .map(|path| context.read_options(path))
+        .collect::<Result<Vec<Options>, _>>()?;
+    let sources = paths
         .iter()
         .map(|path| context.read(path))
         .collect::<Result<Vec<SourceFile>, _>>()?;
     let checked: Vec<Checked> = sources
         .iter()
-        .map(|source| check(source, &options))
+        .zip(&options)
+        .map(|(source, options)| check(source, options))
         .collect();
     // Checked::summary also counts the findings past the cap of each rule (check.rs).
     let mut summary = Summary::default();

@@ -39,7 +39,6 @@ pub enum DiffFormat {
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
-    let options = context.read_options()?;
     if args.old.as_os_str() == "-" && args.new.as_os_str() == "-" {
         return Err(super::CommandError::Failed(
             "OLD and NEW cannot both be standard input".into(),
@@ -47,8 +46,8 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     }
     let old_source = context.read(&args.old)?;
     let new_source = context.read(&args.new)?;
-    let old = check(&old_source, &options);
-    let new = check(&new_source, &options);
+    let old = check(&old_source, &context.read_options(&args.old)?);
+    let new = check(&new_source, &context.read_options(&args.new)?);
     let difference = diff(&old, &new);
     let mut stdout = std::io::stdout().lock();
     match args.format {

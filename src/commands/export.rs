@@ -45,8 +45,9 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         write_output(args.output.as_deref(), &schema)?;
         return Ok(Exit::Clean);
     }
-    let options = context.read_options()?;
-    let source = context.read(&context.input(args.file.as_deref())?)?;
+    let path = context.input(args.file.as_deref())?;
+    let options = context.read_options(&path)?;
+    let source = context.read(&path)?;
     let checked = check(&source, &options);
     if checked.has_errors() && !args.allow_errors {
         let summary = checked.summary();

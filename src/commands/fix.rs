@@ -10,6 +10,7 @@ use crate::diagnostic::{Severity, Summary};
 use crate::fixing;
 use crate::model::build::Options;
 use crate::model::{Dialect, Key};
+use crate::reader::Reader;
 use crate::render::escape::escape;
 use crate::render::{concise, FileReport, RenderOptions};
 use crate::rewrite::{self, DiffStyle, Mode};
@@ -32,11 +33,14 @@ pub struct Args {
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
-    let mut options = context.read_options()?;
-    // Migrating is fixing `legacy-key` as if the configuration pinned the target dialect.
-    options.dialect = args.dialect.or(options.dialect);
     let paths = context.inputs(&args.files)?;
     Ok(rewrite::for_each_file(&paths, |path| {
+        let mut options = context.read_options(path)?;
+        if let Some(target) = args.dialect {
+            // Migrating is fixing `legacy-key` against the target dialect's reader.
+            options.dialect = Some(target);
+            options.reader = Some(Reader::default_for(Some(target)));
+        }
         fix_file(path, args, context, &options)
     }))
 }

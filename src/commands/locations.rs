@@ -36,8 +36,9 @@ pub enum LocationsFormat {
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
-    let options = context.read_options()?;
-    let source = context.read(&context.input(args.file.as_deref())?)?;
+    let path = context.input(args.file.as_deref())?;
+    let options = context.read_options(&path)?;
+    let source = context.read(&path)?;
     let checked = check(&source, &options);
     present::note_errors(&checked, context.quiet);
     let mut stdout = std::io::stdout().lock();

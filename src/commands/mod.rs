@@ -23,7 +23,9 @@ use std::process::ExitCode;
 use crate::cli::{Cli, ColorChoice};
 use crate::config::Config;
 use crate::model::build::Options;
+use crate::reader::Reader;
 use crate::render::escape::escape;
+use crate::settings::Settings;
 use crate::source::SourceFile;
 
 /// The exit codes of SPEC §5.
@@ -81,6 +83,8 @@ pub struct Context {
     pub color: ColorChoice,
     pub verbose: bool,
     pub quiet: bool,
+    /// `--reader` (or `EKB_READER`), which overrides `ekb.toml`.
+    pub reader: Option<Reader>,
     config: OnceCell<Config>,
 }
 
@@ -91,6 +95,7 @@ impl Context {
             color: cli.color,
             verbose: cli.verbose,
             quiet: cli.quiet,
+            reader: cli.reader,
             config: OnceCell::new(),
         }
     }
@@ -102,6 +107,7 @@ impl Context {
             color: ColorChoice::Never,
             verbose: false,
             quiet: false,
+            reader: None,
             config: OnceCell::from(config),
         }
     }
@@ -115,11 +121,21 @@ impl Context {
         Ok(self.config.get_or_init(|| config))
     }
 
-    /// How to read knowledge bases: the configuration's dialect and verbosity, or `-v`.
-    pub fn read_options(&self) -> Result<Options, CommandError> {
+    /// How to read the knowledge base at `path`: the configuration's dialect and verbosity
+    /// (or `-v`), and the reader of `--reader`, else of the file's `ekb.toml`.
+    pub fn read_options(&self, path: &Path) -> Result<Options, CommandError> {
         let config = self.config()?;
+        let reader = match self.reader {
+            Some(reader) => Some(reader),
+            None => {
+                Settings::discover(path)
+                    .map_err(CommandError::Failed)?
+                    .reader
+            }
+        };
         Ok(Options {
             dialect: config.dialect,
+            reader,
             verbose: self.verbose || config.verbose,
         })
     }
@@ -142,7 +158,7 @@ impl Context {
 
     /// Reads a knowledge base (`-` is standard input).
     pub fn read(&self, path: &Path) -> Result<SourceFile, CommandError> {
-        if self.read_options()?.verbose {
+        if self.verbose || self.config()?.verbose {
             eprintln!("ekb: reading {}", escape(&path.display().to_string()));
         }
         Ok(SourceFile::read(path)?)

@@ -29,8 +29,9 @@ fn location_id(text: &str) -> Result<u32, String> {
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
-    let options = context.read_options()?;
-    let source = context.read(&context.input(args.file.as_deref())?)?;
+    let path = context.input(args.file.as_deref())?;
+    let options = context.read_options(&path)?;
+    let source = context.read(&path)?;
     let checked = check(&source, &options);
     let Some(location) = checked.kb.location(args.id) else {
         eprintln!("ekb: {}", not_found(&checked, args.id));

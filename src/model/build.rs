@@ -8,9 +8,11 @@ use std::ops::Range;
 
 use crate::check::Diagnostics;
 use crate::model::{
-    words, Arm, Dialect, IdMap, Key, KnowledgeBase, Location, Point, Pose, Tour, Value, ValueKind,
+    words, Arm, Dialect, IdMap, Key, KnowledgeBase, LineFacts, Location, Point, Pose, Tour, Value,
+    ValueKind,
 };
 use crate::parallel;
+use crate::reader::Reader;
 use crate::render::escape::escape;
 use crate::rules::{compat, content, structure, tour};
 use crate::syntax::{self, Body, Line, Span};
@@ -18,8 +20,11 @@ use crate::syntax::{self, Body, Line, Span};
 /// How to read a file.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Options {
-    /// The dialect the configuration pins, if any (`legacy-key` applies then).
+    /// The dialect the configuration pins, if any (else it is detected per file).
     pub dialect: Option<Dialect>,
+    /// The version of the robot's reader to check against; `None`: by the file's dialect
+    /// ([`Reader::default_for`]).
+    pub reader: Option<Reader>,
     /// Print each entry to standard error as it is read.
     pub verbose: bool,
 }
@@ -101,6 +106,8 @@ struct Builder<'a> {
     /// The first `robotLocation` and `robotLocationPose` lines, and how many of each.
     first_pose_key: [Option<(Span, usize)>; 2],
     crlf_endings: Vec<Span>,
+    /// What the rules about the robot's reader need to know of the lines.
+    facts: LineFacts,
     /// Whether the builder's lines have a byte that may start a control character: nearly
     /// no file has one, and one pass over all the bytes costs less than a check per value.
     controls_possible: bool,
@@ -143,6 +150,7 @@ impl<'a> Builder<'a> {
             tour: None,
             first_pose_key: [None, None],
             crlf_endings: Vec::new(),
+            facts: LineFacts::default(),
             rejected: HashMap::new(),
             controls_possible: structure::control_character::possible_in(&text[range.clone()]),
         };
@@ -181,6 +189,7 @@ impl<'a> Builder<'a> {
             };
         }
         self.crlf_endings.extend(later.crlf_endings);
+        self.facts.append(later.facts);
         true
     }
 
@@ -272,11 +281,19 @@ impl<'a> Builder<'a> {
     }
 
     fn line(&mut self, line: &Line, out: &mut Diagnostics) {
-        compat::compat_line_too_long::check(line, self.text, out);
+        self.facts.note_length(line);
         let crlf_ending = compat::compat_crlf::ending(line, self.text);
         content::trailing_whitespace::check(line, crlf_ending, self.text, out);
         self.crlf_endings.extend(crlf_ending);
         if let Body::Entry { key, args } = line.body {
+            if syntax::is_c_space_only(&self.text.as_bytes()[key.start as usize..args.end as usize])
+            {
+                // Form feeds and the like between blanks: a blank line to the robot too.
+                return;
+            }
+            if key.start > line.span.start {
+                self.facts.indented_lines.push(line.span);
+            }
             if self.controls_possible {
                 structure::control_character::check(args, self.text, out);
             }
@@ -304,9 +321,7 @@ impl<'a> Builder<'a> {
             // File text, so escaped: it must not drive the terminal.
             eprintln!("ekb: read {key_text} {}", escape(args.text(self.text)));
         }
-        if let Some(pinned) = self.options.dialect {
-            structure::legacy_key::check(key, key_span, args.text(self.text), pinned, out);
-        }
+        self.facts.key_lines[key as usize] += 1;
         if key == Key::TourSpecification {
             self.tour(args, out);
             return;
@@ -504,11 +519,6 @@ impl<'a> Builder<'a> {
     }
 
     fn finish(self, out: &mut Diagnostics) -> KnowledgeBase<'a> {
-        // Only a last line without a newline can lack one: the line after the last newline.
-        let last_line_start = memchr::memrchr(b'\n', self.text.as_bytes()).map_or(0, |at| at + 1);
-        if let Some(line) = syntax::lines_from(self.text, last_line_start).next() {
-            compat::compat_no_final_newline::check(&line, self.text, out);
-        }
         compat::compat_crlf::check(&self.crlf_endings, out);
         let dialect = match self.first_pose_key {
             [Some(seed), Some(current)] => {
@@ -531,7 +541,9 @@ impl<'a> Builder<'a> {
         };
         let mut runs = self.runs;
         runs.push(self.locations);
-        KnowledgeBase::from_runs(dialect, runs, self.tour)
+        let mut kb = KnowledgeBase::from_runs(dialect, runs, self.tour);
+        kb.lines = self.facts;
+        kb
     }
 }
 
@@ -569,8 +581,10 @@ fn looks_numeric(token: &str) -> bool {
         .is_some_and(|b| b.is_ascii_digit() || b == b'-' || b == b'+')
 }
 
-/// A location id: a decimal integer in 1..=2147483647.
+/// A location id: a decimal integer in 1..=2147483647, perhaps after a `+` (which the
+/// robot's reader skips, SPEC §2.14).
 pub fn parse_id(token: &str) -> Option<u32> {
+    let token = token.strip_prefix('+').unwrap_or(token);
     let mut id: u64 = 0;
     for byte in token.bytes() {
         if !byte.is_ascii_digit() {
@@ -679,7 +693,8 @@ mod tests {
     fn ids() {
         assert_eq!(parse_id("4"), Some(4));
         assert_eq!(parse_id("2147483647"), Some(2147483647));
-        for bad in ["0", "-1", "4a", "2147483648", "99999999999", "", "+3"] {
+        assert_eq!(parse_id("+3"), Some(3));
+        for bad in ["0", "-1", "4a", "2147483648", "99999999999", "", "+", "++3"] {
             assert_eq!(parse_id(bad), None, "{bad}");
         }
         assert_eq!(parse_id(&"1".repeat(40)), None);

@@ -247,6 +247,43 @@ pub struct KnowledgeBase<'a> {
     pub dialect: Option<Dialect>,
     locations: Locations<'a>,
     pub tour: Option<Tour>,
+    /// What the rules about the robot's reader need to know of the lines.
+    pub lines: LineFacts,
+}
+
+/// Facts about a file's lines that are not part of its values, but decide what a version of
+/// the robot's reader loads from it (see [`crate::reader`]).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct LineFacts {
+    /// How many lines of each key (by `Key as usize`) the file has.
+    pub key_lines: [u32; Key::ALL.len()],
+    /// Lines as long as the smallest reader's line buffer or longer, in file order.
+    pub long_lines: Vec<Span>,
+    /// Lines of a key that start with a blank, in file order.
+    pub indented_lines: Vec<Span>,
+}
+
+impl LineFacts {
+    /// Notes `line`'s length.
+    pub fn note_length(&mut self, line: &crate::syntax::Line) {
+        if line.span.len() >= crate::reader::Reader::SMALLEST_LINE_BUFFER {
+            self.long_lines.push(line.span);
+        }
+    }
+
+    /// Whether the file has a line of `key`.
+    pub fn has(&self, key: Key) -> bool {
+        self.key_lines[key as usize] > 0
+    }
+
+    /// Adds the facts of the lines after these.
+    pub fn append(&mut self, later: LineFacts) {
+        for (count, more) in self.key_lines.iter_mut().zip(later.key_lines) {
+            *count += more;
+        }
+        self.long_lines.extend(later.long_lines);
+        self.indented_lines.extend(later.indented_lines);
+    }
 }
 
 impl<'a> KnowledgeBase<'a> {
@@ -269,6 +306,7 @@ impl<'a> KnowledgeBase<'a> {
             dialect,
             locations: Locations::new(runs),
             tour,
+            lines: LineFacts::default(),
         }
     }
 

@@ -135,6 +135,18 @@ fn words(line: &[u8], mut at: usize) -> Vec<std::ops::Range<usize>> {
     words
 }
 
+/// What the reader loads from one culturalKnowledge word as written (`Deictic_Shape`): a
+/// word at each run of letters and digits (`Deictic_Shape`, `Shape`).
+pub fn word_pieces(word: &str) -> Vec<&str> {
+    let Some(start) = word.bytes().position(is_alnum) else {
+        return Vec::new();
+    };
+    words(word.as_bytes(), start)
+        .into_iter()
+        .map(|range| &word[range])
+        .collect()
+}
+
 /// The tour's line: the count after the key, then one id after each run of letters and
 /// digits; an id that cannot be read leaves its slot, and every later one, as it was.
 fn tour(line: &[u8], key_length: usize) -> LineRead {
@@ -278,6 +290,9 @@ mod tests {
         };
         let words: Vec<&str> = words.iter().map(|span| &line[span.range()]).collect();
         assert_eq!(words, ["Deictic_Shape", "Shape", "Bow's", "s"]);
+        assert_eq!(word_pieces("Bow's"), ["Bow's", "s"]);
+        assert_eq!(word_pieces("_x"), ["x"]);
+        assert_eq!(word_pieces("Plain"), ["Plain"]);
     }
 
     #[test]

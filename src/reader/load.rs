@@ -75,7 +75,7 @@ pub fn load(text: &[u8], reader: Reader) -> Loaded {
         let line = Span::new(offset, offset + chunk.len());
         match line::read(chunk, offset, reader) {
             LineRead::Value { key, id, value, .. } => {
-                visited.push(id);
+                visited.push((id, 1));
                 let location = locations
                     .entry(id)
                     .or_insert_with(|| LoadedLocation::new(id));
@@ -125,8 +125,9 @@ pub fn chunks(text: &[u8], buffer: usize) -> impl Iterator<Item = (usize, &[u8])
             return None;
         }
         let rest = &text[at..];
-        let line_end = memchr::memchr(b'\n', rest).map_or(rest.len(), |newline| newline + 1);
-        let length = line_end.min(most);
+        // Only the bytes one call can take are searched: a line may be megabytes long.
+        let window = &rest[..rest.len().min(most)];
+        let length = memchr::memchr(b'\n', window).map_or(window.len(), |newline| newline + 1);
         let chunk = (at, &rest[..length]);
         at += length;
         Some(chunk)

@@ -8,10 +8,7 @@ pub fn is_alnum(byte: u8) -> bool {
     byte.is_ascii_alphanumeric()
 }
 
-/// `isspace` in the "C" locale: space, `\t`, `\n`, `\v`, `\f`, `\r`.
-pub fn is_space(byte: u8) -> bool {
-    matches!(byte, b' ' | b'\t' | b'\n' | 0x0b | 0x0c | b'\r')
-}
+pub use crate::syntax::is_c_space as is_space;
 
 /// The first position at or after `at` whose byte is not matched by `skip`, or `None` when
 /// the line ends first: the robot's loop would then run past the end of the line into

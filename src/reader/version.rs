@@ -70,6 +70,9 @@ impl Reader {
         }
     }
 
+    /// The line buffer of the document's reader and `2025-06`, the smallest of all.
+    pub const SMALLEST_LINE_BUFFER: usize = 200;
+
     /// The size of its line buffer: `fgets` reads at most one byte less per call, so a
     /// line of this many bytes or more (newline included) is split.
     pub fn line_buffer(self) -> usize {

@@ -10,6 +10,7 @@ use std::ops::Range;
 use crate::check::Diagnostics;
 use crate::diagnostic::Severity;
 use crate::model::{Dialect, IdSet, Key, KnowledgeBase, Location};
+use crate::reader::Reader;
 
 pub mod compat;
 mod consequence;
@@ -125,6 +126,11 @@ pub static ALL: &[&Rule] = &[
     &compat::compat_crlf::COMPAT_CRLF,
     &compat::compat_bom::COMPAT_BOM,
     &compat::compat_too_many_cultural_keys::COMPAT_TOO_MANY_CULTURAL_KEYS,
+    &compat::compat_indented_line::COMPAT_INDENTED_LINE,
+    &compat::compat_cultural_word_split::COMPAT_CULTURAL_WORD_SPLIT,
+    &compat::compat_reader_crash::COMPAT_READER_CRASH,
+    &compat::compat_slow_load::COMPAT_SLOW_LOAD,
+    &compat::compat_ignored_key::COMPAT_IGNORED_KEY,
 ];
 
 /// `text` from the file, cut to a length that fits in a one-line message.
@@ -141,8 +147,10 @@ pub fn by_name(name: &str) -> Option<&'static Rule> {
     ALL.iter().copied().find(|rule| rule.name == name)
 }
 
-/// Runs the rules that look at whole locations and the tour.
-pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, out: &mut Diagnostics) {
+/// Runs the rules that look at whole locations and the tour, and those that depend on the
+/// version of the robot's reader.
+pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, reader: Reader, out: &mut Diagnostics) {
+    compat::check_file(kb, source, reader, out);
     tour::tour_missing::check(kb, out);
     if let Some(tour) = &kb.tour {
         tour::tour_empty::check(tour, out);
@@ -152,7 +160,7 @@ pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, out: &mut Diagnostics) 
         tour::tour_repeated_stop::check(tour, out);
     }
     tour::tour_unknown_location::check(kb, out);
-    let context = LocationContext::new(kb, source);
+    let context = LocationContext::new(kb, source, reader);
     // Each location is checked on its own, so a large file's are checked in parts, on
     // every core.
     let ranges = crate::parallel::item_ranges(kb.locations().len(), MIN_LOCATIONS_PER_PART);
@@ -192,14 +200,17 @@ pub struct LocationContext<'k> {
     pub pose_key: Key,
     /// The ids the tour visits; `None` if there is no tour.
     pub visited: Option<IdSet>,
+    /// The version of the robot's reader the file is checked against.
+    pub reader: Reader,
 }
 
 impl<'k> LocationContext<'k> {
-    fn new(kb: &KnowledgeBase<'_>, source: &'k str) -> Self {
+    fn new(kb: &KnowledgeBase<'_>, source: &'k str, reader: Reader) -> Self {
         LocationContext {
             source,
             pose_key: kb.dialect.unwrap_or(Dialect::Seed).pose_key(),
             visited: kb.tour.is_some().then(|| kb.tour_stops().collect()),
+            reader,
         }
     }
 }
@@ -214,6 +225,7 @@ fn check_location(location: &Location<'_>, context: &LocationContext<'_>, out: &
     content::gesture_target_sums_to_zero::check(location, out);
     content::gesture_behind_robot::check(location, out);
     compat::compat_too_many_cultural_keys::check(location, out);
+    compat::compat_cultural_word_split::check(location, context.reader, out);
 }
 
 #[cfg(test)]
@@ -259,7 +271,7 @@ mod tests {
         }
         let mut found = Diagnostics::default();
         let kb = crate::model::build::build(&text, &Default::default(), &mut found);
-        let context = LocationContext::new(&kb, &text);
+        let context = LocationContext::new(&kb, &text, Reader::D542);
         let mut whole = Diagnostics::default();
         let runs = kb.locations().runs();
         let all = 0..kb.locations().len();

@@ -23,6 +23,17 @@ pub fn is_blank(byte: u8) -> bool {
     byte == b' ' || byte == b'\t'
 }
 
+/// Whether `bytes` are all white space to C's `isspace` (space, tab, newline, vertical tab,
+/// form feed, carriage return): such a line is blank to the robot's reader.
+pub fn is_c_space_only(bytes: &[u8]) -> bool {
+    bytes.iter().all(|&byte| is_c_space(byte))
+}
+
+/// C's `isspace` in the "C" locale.
+pub fn is_c_space(byte: u8) -> bool {
+    matches!(byte, b' ' | b'\t' | b'\n' | 0x0b | 0x0c | b'\r')
+}
+
 /// Splits `span` of `text`, which starts with a token (as a line's arguments do), into that
 /// token and the rest after the blanks that follow it (each empty if there is none): an id
 /// and its value, nearly always from one mask (`blanks::first_gap`).

@@ -1,63 +1,78 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::model::{Key, ValueKind};
+use crate::model::build::leading_id;
+use crate::model::{Key, KnowledgeBase, ValueKind};
+use crate::reader::Reader;
 use crate::rules::{declare_rule, excerpt};
-use crate::syntax::{Body, Line, Span};
-
-/// The robot reads lines with a buffer of this many bytes (one of them the terminating NUL).
-pub const LINE_BUFFER: usize = 200;
+use crate::syntax::{self, Body, Line, Span};
 
 declare_rule! {
     /// ## What it does
-    /// Flags a line of 200 bytes or more, counting its newline. Bytes, not characters: an
-    /// isiZulu or Kinyarwanda letter with an accent takes two.
+    /// Flags a line as long as the chosen reader's line buffer or longer, counting its
+    /// newline: 200 bytes for `d5.4.2` and `2025-06`, 300 for `2026-02`, 600 for `2026-03`
+    /// and `2026-04`. Bytes, not characters: an isiZulu or Kinyarwanda letter with an
+    /// accent takes two.
     ///
     /// ## Why it matters
-    /// The robot's reader reads lines into a 200-byte buffer. A longer line is cut after
-    /// 199 bytes; the rest is read as a line of its own (and ignored), so the robot stops
-    /// talking mid-sentence, and the message also loses its last letter.
+    /// The robot's reader reads lines into a fixed buffer. A longer line is cut after 199
+    /// (299, 599) bytes; the rest is read as a line of its own (and ignored), so the robot
+    /// stops talking mid-sentence, and the message also loses its last letter.
     ///
     /// ## Example
     /// ```text
     /// preGestureMessageEnglish      2 And this one is another Pepper robot, just like me! We are semi-humanoid robots … (230 bytes)
     /// ```
-    /// Shorten the message to fit in 199 bytes with its key and id.
+    /// Shorten the message to fit in 199 bytes with its key and id (for `2025-06`).
     pub static COMPAT_LINE_TOO_LONG = {
         name: "compat-line-too-long",
         category: Compat,
         severity: Error,
         fixable: false,
-        summary: "a line of 200 bytes or more, newline included",
+        summary: "a line as long as the reader's line buffer or longer (200, 300 or 600 bytes, newline included)",
     };
 }
 
-pub fn check(line: &Line, text: &str, out: &mut Diagnostics) {
-    let length = line.span.len();
-    if length < LINE_BUFFER {
-        return;
+/// Checks the long lines of `kb` against `reader`'s line buffer.
+pub fn check(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagnostics) {
+    let buffer = reader.line_buffer();
+    for &span in &kb.lines.long_lines {
+        if span.len() < buffer {
+            continue;
+        }
+        out.push_with(&COMPAT_LINE_TOO_LONG, || {
+            let line = syntax::lines_from(text, span.start as usize)
+                .next()
+                .expect("a line starts there");
+            diagnostic(&line, text, reader)
+        });
     }
-    out.push_with(&COMPAT_LINE_TOO_LONG, || diagnostic(line, text));
 }
 
-/// The finding about `line`, which is too long.
-fn diagnostic(line: &Line, text: &str) -> Diagnostic {
+/// The finding about `line`, which is too long for `reader`.
+fn diagnostic(line: &Line, text: &str, reader: Reader) -> Diagnostic {
+    let buffer = reader.line_buffer();
     let length = line.span.len();
     let content = line.content();
     let content_end = content.end as usize;
-    // The robot reads the first 199 bytes (here never half a character) ...
-    let read_end = line.span.start as usize + LINE_BUFFER - 1;
+    // The robot reads the first `buffer - 1` bytes (here never half a character) ...
+    let read_end = line.span.start as usize + buffer - 1;
     let mut cut = read_end.min(content_end);
     while !text.is_char_boundary(cut) {
         cut -= 1;
     }
     // ... and, for a text value, drops the last of them, taking it for the newline (unless
     // that is the `\r` of a CRLF ending, which then costs no letter).
-    let is_text = match line.body {
-        Body::Entry { key, .. } => {
-            Key::from_name(key.text(text)).is_some_and(|key| key.value_kind() == ValueKind::Text)
+    let (key, id) = match line.body {
+        Body::Entry { key, args } => {
+            let key = Key::from_name(key.text(text));
+            let id = key
+                .filter(|&key| key != Key::TourSpecification)
+                .and_then(|_| leading_id(args.text(text)));
+            (key, id)
         }
-        _ => false,
+        _ => (None, None),
     };
+    let is_text = key.is_some_and(|key| key.value_kind() == ValueKind::Text);
     let drops_letter = is_text && read_end <= content_end;
     let last_char = |end: usize| {
         text[..end]
@@ -91,16 +106,17 @@ fn diagnostic(line: &Line, text: &str) -> Diagnostic {
     };
     Diagnostic::new(
         &COMPAT_LINE_TOO_LONG,
-            Span::new(lost, content_end),
-            format!(
-                "this line is {length} bytes long, but the robot reads at most {} bytes per line: {what}",
-                LINE_BUFFER - 1
-            ),
-        )
-        .with_help(format!(
-            "shorten the line by {} bytes or more",
-            length - (LINE_BUFFER - 1)
-        ))
+        Span::new(lost, content_end),
+        format!(
+            "this line is {length} bytes long, but reader {reader} reads at most {} bytes per line: {what}",
+            buffer - 1
+        ),
+    )
+    .at_location(id)
+    .with_help(format!(
+        "shorten the line by {} bytes or more",
+        length - (buffer - 1)
+    ))
 }
 
 /// The last few characters of `text`.

@@ -1,5 +1,6 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit};
+use crate::model::build::leading_id;
 use crate::model::{Key, ValueKind};
 use crate::rules::declare_rule;
 use crate::syntax::{Body, Line, Span, BOM};
@@ -52,11 +53,16 @@ pub fn check(line: &Line, crlf_ending: Option<Span>, text: &str, out: &mut Diagn
     if span.is_empty() {
         return;
     }
-    let keeps_it = match line.body {
-        Body::Entry { key, .. } => {
-            Key::from_name(key.text(text)).is_some_and(|key| key.value_kind() == ValueKind::Text)
+    let key = match line.body {
+        Body::Entry { key, .. } => Key::from_name(key.text(text)),
+        _ => None,
+    };
+    let keeps_it = key.is_some_and(|key| key.value_kind() == ValueKind::Text);
+    let id = match line.body {
+        Body::Entry { args, .. } if key != Some(Key::TourSpecification) => {
+            leading_id(args.text(text))
         }
-        _ => false,
+        _ => None,
     };
     let consequence = if keeps_it {
         "the robot's reader keeps it at the end of the text"
@@ -69,6 +75,7 @@ pub fn check(line: &Line, crlf_ending: Option<Span>, text: &str, out: &mut Diagn
             span,
             format!("trailing whitespace: {consequence}"),
         )
+        .at_location(id)
         .with_help("remove it")
         .with_fix("remove trailing whitespace", vec![Edit::delete(span)])
     });

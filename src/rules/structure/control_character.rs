@@ -62,6 +62,7 @@ pub fn check(span: Span, text: &str, out: &mut Diagnostics) {
                 )
             },
         )
+        .at_location(crate::model::build::leading_id(value))
         .with_help("delete it; if it came from a copy and paste, retype the text around it"),
     );
 }

@@ -1,22 +1,24 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::model::build::leading_id;
-use crate::model::{Dialect, Key, ValueKind};
+use crate::model::{Key, KnowledgeBase};
+use crate::reader::Reader;
+use crate::rules::compat::lines_of_key;
 use crate::rules::{consequence, declare_rule};
-use crate::syntax::Span;
 
 declare_rule! {
     /// ## What it does
-    /// When the configuration pins a dialect (`dialect = current` or `dialect = seed`),
-    /// flags a key of the other dialect, and fixes the pose key.
+    /// Flags a pose key that the chosen version of the robot's reader does not read, and
+    /// renames it: `robotLocation` on every upstream version (`2025-06` on),
+    /// `robotLocationPose` on the document's reader (`d5.4.2`).
     ///
     /// ## Why it matters
-    /// The current robot's reader silently ignores `robotLocation`, so a file written in the
-    /// document's dialect puts every pose at (0, 0). The document's reader, in turn, knows
-    /// neither `robotLocationPose`, `culturalKnowledge` nor `gestureArm`.
+    /// The robot's reader silently ignores the other dialect's pose key, so a file written
+    /// in the document's dialect puts every pose at (0, 0, 0) on today's robot: it drives
+    /// to the map's origin before every exhibit.
     ///
     /// ## Example
-    /// With `dialect = current` in the configuration:
+    /// With `--reader 2025-06`:
     /// ```text
     /// robotLocation                 1 2.6 8.1 -90
     /// ```
@@ -26,42 +28,37 @@ declare_rule! {
         category: Structure,
         severity: Error,
         fixable: true,
-        summary: "a key of the other dialect when the configuration pins one",
+        summary: "a pose key that the chosen reader does not read (robotLocation upstream, robotLocationPose on d5.4.2)",
     };
 }
 
-/// `args` is the rest of the line, whose first word should be the location's id.
-pub fn check(key: Key, span: Span, args: &str, pinned: Dialect, out: &mut Diagnostics) {
-    if key.dialect() != Some(pinned.other()) {
-        return;
+/// Checks the pose lines that `reader` does not read.
+pub fn check(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagnostics) {
+    let wanted = reader.pose_key();
+    for key in [Key::RobotLocation, Key::RobotLocationPose] {
+        if key == wanted || !kb.lines.has(key) {
+            continue;
+        }
+        for (key_span, args) in lines_of_key(text, key) {
+            out.push_with(&LEGACY_KEY, || {
+                let id = leading_id(args.text(text));
+                Diagnostic::new(
+                    &LEGACY_KEY,
+                    key_span,
+                    format!(
+                        "reader {reader} reads poses from `{}`, not `{}`: it ignores this line, so {}",
+                        wanted.name(),
+                        key.name(),
+                        consequence::lost(key, id)
+                    ),
+                )
+                .at_location(id)
+                .with_help(format!("write `{}`", wanted.name()))
+                .with_fix(
+                    format!("rename to `{}`", wanted.name()),
+                    vec![Edit::replace(key_span, wanted.name())],
+                )
+            });
+        }
     }
-    let id = leading_id(args);
-    let diagnostic = Diagnostic::new(
-        &LEGACY_KEY,
-        span,
-        format!(
-            "`{}` belongs to the {} dialect, but the configuration pins the {} dialect: that robot's reader ignores this line, so {}",
-            key.name(),
-            pinned.other().name(),
-            pinned.name(),
-            consequence::lost(key, id)
-        ),
-    )
-    .at_location(id);
-    out.push(if key.value_kind() == ValueKind::Pose {
-        let replacement = pinned.pose_key().name();
-        diagnostic
-            .with_help(format!("write `{replacement}`"))
-            .with_fix(
-                format!("rename to `{replacement}`"),
-                vec![Edit::replace(span, replacement)],
-            )
-    } else {
-        diagnostic.with_help(format!(
-            "the {} dialect cannot express `{}`: remove the line or pin the {} dialect",
-            pinned.name(),
-            key.name(),
-            pinned.other().name()
-        ))
-    });
 }

@@ -1,0 +1,99 @@
+use crate::check::Diagnostics;
+use crate::diagnostic::{Diagnostic, Edit};
+use crate::model::build::leading_id;
+use crate::model::{Key, KnowledgeBase};
+use crate::reader::line::{LineRead, LoadedValue};
+use crate::reader::{self, Reader};
+use crate::rules::{declare_rule, excerpt};
+use crate::syntax::{self, Body, Span};
+
+declare_rule! {
+    /// ## What it does
+    /// Flags a line of a key that starts with a space or a tab, and removes the indentation.
+    ///
+    /// ## Why it matters
+    /// The robot's reader finds a value by counting from the start of the line as if the key
+    /// stood there. Indented, it reads from the wrong place: the id becomes the first number
+    /// or the first word of the text, and an indented tour is not read at all.
+    ///
+    /// ## Example
+    /// ```text
+    ///  robotLocationPose            1 2.0 3.0 90
+    /// ```
+    /// loads the pose `1 2 3`, and
+    /// ```text
+    ///  preGestureMessageEnglish     1 Hello
+    /// ```
+    /// the text `1 Hello`.
+    pub static COMPAT_INDENTED_LINE = {
+        name: "compat-indented-line",
+        category: Compat,
+        severity: Error,
+        fixable: true,
+        summary: "a keyed line that starts with a space or a tab",
+    };
+}
+
+/// Checks the indented lines of `kb` that `reader` reads.
+pub fn check(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagnostics) {
+    for &span in &kb.lines.indented_lines {
+        let Some(line) = syntax::lines_from(text, span.start as usize).next() else {
+            continue;
+        };
+        let Body::Entry {
+            key: key_span,
+            args,
+        } = line.body
+        else {
+            continue;
+        };
+        let Some(key) = Key::from_name(key_span.text(text)).filter(|&key| reader.reads(key)) else {
+            continue;
+        };
+        let id = (key != Key::TourSpecification)
+            .then(|| leading_id(args.text(text)))
+            .flatten();
+        let indentation = Span::new(span.start as usize, key_span.start as usize);
+        out.push_with(&COMPAT_INDENTED_LINE, || {
+            Diagnostic::new(
+                &COMPAT_INDENTED_LINE,
+                indentation,
+                format!(
+                    "`{}` is indented: the robot's reader counts from the start of the line and {}",
+                    key.name(),
+                    what_loads(text, span, reader)
+                ),
+            )
+            .at_location(id)
+            .with_help("start the line with its key")
+            .with_fix("remove the indentation", vec![Edit::delete(indentation)])
+        });
+    }
+}
+
+/// What `reader` loads from the line at `span`, in words.
+fn what_loads(text: &str, span: Span, reader: Reader) -> String {
+    let line = &text.as_bytes()[span.range()];
+    let (_, chunk) = reader::chunks(line, reader.line_buffer())
+        .next()
+        .expect("a line is not empty");
+    let loaded = |span: &Span| {
+        excerpt(&String::from_utf8_lossy(&text.as_bytes()[span.range()])).into_owned()
+    };
+    match reader::line::read(chunk, span.start as usize, reader) {
+        LineRead::Value { value, .. } => match value {
+            LoadedValue::Numbers([a, b, c]) => format!("loads the numbers `{a} {b} {c}`"),
+            LoadedValue::Text(span) => format!("loads the text \"{}\"", loaded(&span)),
+            LoadedValue::Words(words) => {
+                let words: Vec<String> = words.iter().map(loaded).collect();
+                format!("loads the words `{}`", words.join(" "))
+            }
+            LoadedValue::Undefined => "loads whatever its buffer held before".to_string(),
+        },
+        LineRead::TourFailed => "loads no tour at all".to_string(),
+        LineRead::Tour { .. } => "loads the tour from the wrong place".to_string(),
+        LineRead::Failed { .. } | LineRead::Ignored { .. } | LineRead::Skipped => {
+            "cannot read the value, so it ignores the line".to_string()
+        }
+    }
+}
