@@ -107,7 +107,7 @@ _ekb() {
 
     case "${cmd}" in
         ekb)
-            opts="-v -q -h -V --config --color --verbose --quiet --help --version check locations show tour diff export import fmt fix rules explain completions man help"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version check locations show tour diff export import fmt fix rules explain completions man help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -121,6 +121,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
                     return 0
                     ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -129,7 +133,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__check)
-            opts="-v -q -h -V --format --deny-warnings --config --color --verbose --quiet --help --version"
+            opts="-v -q -h -V --format --deny-warnings --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -147,6 +151,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
                     return 0
                     ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -155,7 +163,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__completions)
-            opts="-v -q -h -V --config --color --verbose --quiet --help --version bash elvish fish powershell zsh"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version bash elvish fish powershell zsh"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -169,6 +177,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
                     return 0
                     ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -177,7 +189,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__diff)
-            opts="-v -q -h -V --format --config --color --verbose --quiet --help --version"
+            opts="-v -q -h -V --format --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -195,6 +207,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
                     return 0
                     ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -203,7 +219,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__explain)
-            opts="-v -q -h -V --config --color --verbose --quiet --help --version"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -217,6 +233,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
                     return 0
                     ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -225,7 +245,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__export)
-            opts="-o -v -q -h -V --format --output --allow-errors --schema --config --color --verbose --quiet --help --version"
+            opts="-o -v -q -h -V --format --output --allow-errors --schema --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -251,6 +271,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
                     return 0
                     ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -259,7 +283,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__fix)
-            opts="-v -q -h -V --diff --dialect --config --color --verbose --quiet --help --version"
+            opts="-v -q -h -V --diff --dialect --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -277,6 +301,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
                     return 0
                     ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -285,7 +313,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__fmt)
-            opts="-v -q -h -V --check --config --color --verbose --quiet --help --version"
+            opts="-v -q -h -V --check --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -297,6 +325,10 @@ _ekb() {
                     ;;
                 --color)
                     COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
+                    return 0
+                    ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
                 *)
@@ -517,7 +549,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__import)
-            opts="-o -v -q -h -V --output --config --color --verbose --quiet --help --version"
+            opts="-o -v -q -h -V --output --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -539,6 +571,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
                     return 0
                     ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -547,7 +583,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__locations)
-            opts="-v -q -h -V --format --config --color --verbose --quiet --help --version"
+            opts="-v -q -h -V --format --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -565,6 +601,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
                     return 0
                     ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -573,7 +613,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__man)
-            opts="-v -q -h -V --config --color --verbose --quiet --help --version"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -585,6 +625,10 @@ _ekb() {
                     ;;
                 --color)
                     COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
+                    return 0
+                    ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
                 *)
@@ -595,7 +639,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__rules)
-            opts="-v -q -h -V --markdown --config --color --verbose --quiet --help --version"
+            opts="-v -q -h -V --markdown --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -607,6 +651,10 @@ _ekb() {
                     ;;
                 --color)
                     COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
+                    return 0
+                    ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
                 *)
@@ -617,7 +665,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__show)
-            opts="-v -q -h -V --config --color --verbose --quiet --help --version"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -631,6 +679,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
                     return 0
                     ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -639,7 +691,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__tour)
-            opts="-v -q -h -V --lang --format --config --color --verbose --quiet --help --version"
+            opts="-v -q -h -V --lang --format --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -659,6 +711,10 @@ _ekb() {
                     ;;
                 --color)
                     COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
+                    return 0
+                    ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
                 *)

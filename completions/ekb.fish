@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_ekb_global_optspecs
-    string join \n config= color= v/verbose q/quiet h/help V/version
+    string join \n config= color= v/verbose reader= q/quiet h/help V/version
 end
 
 function __fish_ekb_needs_command
@@ -28,9 +28,14 @@ complete -c ekb -n "__fish_ekb_needs_command" -l config -d 'Configuration file [
 complete -c ekb -n "__fish_ekb_needs_command" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_needs_command" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_needs_command" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_needs_command" -s q -l quiet -d 'Print only findings and errors, no summary'
-complete -c ekb -n "__fish_ekb_needs_command" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_needs_command" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_needs_command" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "check" -d 'Validate knowledge-base files against every rule'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "locations" -d 'A table of all locations'
@@ -55,6 +60,11 @@ complete -c ekb -n "__fish_ekb_using_subcommand check" -l config -d 'Configurati
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l deny-warnings -d 'Exit 1 on warnings too'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -s q -l quiet -d 'Print only findings and errors, no summary'
@@ -67,6 +77,11 @@ complete -c ekb -n "__fish_ekb_using_subcommand locations" -l config -d 'Configu
 complete -c ekb -n "__fish_ekb_using_subcommand locations" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand locations" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand locations" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand locations" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand locations" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -75,9 +90,14 @@ complete -c ekb -n "__fish_ekb_using_subcommand show" -l config -d 'Configuratio
 complete -c ekb -n "__fish_ekb_using_subcommand show" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand show" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s q -l quiet -d 'Print only findings and errors, no summary'
-complete -c ekb -n "__fish_ekb_using_subcommand show" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand show" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l lang -d 'The language the robot speaks: english, isizulu, kinyarwanda (any case), or en, zu, rw' -r -f -a "english\t''
 isizulu\t''
@@ -91,6 +111,11 @@ complete -c ekb -n "__fish_ekb_using_subcommand tour" -l config -d 'Configuratio
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -101,6 +126,11 @@ complete -c ekb -n "__fish_ekb_using_subcommand diff" -l config -d 'Configuratio
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand diff" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -111,6 +141,11 @@ complete -c ekb -n "__fish_ekb_using_subcommand export" -l config -d 'Configurat
 complete -c ekb -n "__fish_ekb_using_subcommand export" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand export" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand export" -l allow-errors -d 'Export even if the file has errors (what the robot would load of it)'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -l schema -d 'Print the JSON Schema of the export instead'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
@@ -122,18 +157,28 @@ complete -c ekb -n "__fish_ekb_using_subcommand import" -l config -d 'Configurat
 complete -c ekb -n "__fish_ekb_using_subcommand import" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand import" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand import" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand import" -s q -l quiet -d 'Print only findings and errors, no summary'
-complete -c ekb -n "__fish_ekb_using_subcommand import" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand import" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand import" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand fmt" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -l check -d 'Write nothing; print a diff and exit 1 if a file is not in the canonical layout'
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s q -l quiet -d 'Print only findings and errors, no summary'
-complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -l dialect -d 'Migrate to this dialect (`current`: robotLocation becomes robotLocationPose; `seed`: the reverse)' -r -f -a "seed\t'The document\'s dialect (v1.1): `robotLocation`'
 current\t'The robot\'s current dialect: `robotLocationPose`, `culturalKnowledge`, `gestureArm`'"
@@ -141,6 +186,11 @@ complete -c ekb -n "__fish_ekb_using_subcommand fix" -l config -d 'Configuration
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -l diff -d 'Write nothing; print a diff and exit 1 if anything would change'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -s q -l quiet -d 'Print only findings and errors, no summary'
@@ -150,34 +200,54 @@ complete -c ekb -n "__fish_ekb_using_subcommand rules" -l config -d 'Configurati
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand rules" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -l markdown -d 'Print the catalogue as a Markdown table (as in the README)'
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -s q -l quiet -d 'Print only findings and errors, no summary'
-complete -c ekb -n "__fish_ekb_using_subcommand rules" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand rules" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand explain" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand explain" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand explain" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand explain" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand explain" -s q -l quiet -d 'Print only findings and errors, no summary'
-complete -c ekb -n "__fish_ekb_using_subcommand explain" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand explain" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand explain" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand completions" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand completions" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand completions" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand completions" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand completions" -s q -l quiet -d 'Print only findings and errors, no summary'
-complete -c ekb -n "__fish_ekb_using_subcommand completions" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand completions" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand completions" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand man" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand man" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
 never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand man" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand man" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand man" -s q -l quiet -d 'Print only findings and errors, no summary'
-complete -c ekb -n "__fish_ekb_using_subcommand man" -s h -l help -d 'Print help'
+complete -c ekb -n "__fish_ekb_using_subcommand man" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand man" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "check" -d 'Validate knowledge-base files against every rule'
 complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "locations" -d 'A table of all locations'

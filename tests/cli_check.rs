@@ -79,7 +79,9 @@ fn seed_concise() -> String {
         expected.push_str(&placeholder(first + 3, "isiZulu", "after", location));
         expected.push_str(&placeholder(first + 4, "Kinyarwanda", "after", location));
     }
-    expected.push_str("Found 2 errors, 21 warnings (1 fixable with ekb fix)\n");
+    expected.push_str(
+        "Found 2 errors, 21 warnings (1 fixable with ekb fix), checked against reader d5.4.2\n",
+    );
     expected
 }
 
@@ -87,14 +89,18 @@ fn seed_concise() -> String {
 
 #[test]
 fn clean_files_of_both_dialects_exit_0() {
-    for file in ["clean-seed.dat", "clean-current.dat"] {
+    for (file, reader) in [
+        ("clean-seed.dat", "d5.4.2"),
+        ("clean-current.dat", "2025-06"),
+    ] {
+        let expected = format!("No problems found, checked against reader {reader}\n");
         let run = run(ekb().args(["check", "--format", "concise", file]));
         assert_eq!(run.code, 0, "{file}: {}", run.stdout);
-        assert_eq!(run.stdout, "No problems found\n");
+        assert_eq!(run.stdout, expected);
         assert_eq!(run.stderr, "");
         let run = run_human(file);
         assert_eq!(run.code, 0);
-        assert_eq!(run.stdout, "No problems found\n");
+        assert_eq!(run.stdout, expected);
     }
 }
 
@@ -131,7 +137,7 @@ fn an_unknown_format_is_a_usage_error() {
 
 #[test]
 fn warnings_fail_only_with_deny_warnings() {
-    let expected = "warning-only.dat:4:44: warning[repeated-word] \"the\" is repeated: the robot would say it twice\nFound 1 warning\n";
+    let expected = "warning-only.dat:4:44: warning[repeated-word] \"the\" is repeated: the robot would say it twice\nFound 1 warning, checked against reader d5.4.2\n";
     let run_plain = run(ekb().args(["check", "--format", "concise", "warning-only.dat"]));
     assert_eq!(run_plain.code, 0);
     assert_eq!(run_plain.stdout, expected);
@@ -177,7 +183,9 @@ fn several_files_are_reported_in_file_order_and_counted() {
 
     let concise = run_concise(&["clean-seed.dat", "warning-only.dat"]);
     assert_eq!(concise.code, 0);
-    assert!(concise.stdout.ends_with("\nFound 1 warning\n"));
+    assert!(concise
+        .stdout
+        .ends_with("\nFound 1 warning, checked against reader d5.4.2\n"));
 }
 
 fn run_concise(files: &[&str]) -> Run {
@@ -222,8 +230,10 @@ fn json_has_the_exact_shape_of_the_spec() {
     let object = report.as_object().unwrap();
     assert_eq!(
         object.keys().collect::<Vec<_>>(),
-        ["diagnostics", "summary"]
+        ["diagnostics", "reader", "readers", "summary"]
     );
+    assert_eq!(object["reader"], "d5.4.2");
+    assert_eq!(object["readers"], json!({ "seed.dat": "d5.4.2" }));
     assert_eq!(
         report["summary"],
         json!({ "files": 1, "errors": 2, "warnings": 21, "infos": 0 })
@@ -300,6 +310,8 @@ fn json_of_a_clean_file_is_empty_with_a_summary() {
         report,
         json!({
             "diagnostics": [],
+            "reader": "2025-06",
+            "readers": { "clean-current.dat": "2025-06" },
             "summary": { "files": 1, "errors": 0, "warnings": 0, "infos": 0 }
         })
     );
@@ -413,7 +425,9 @@ fn human_is_the_default_and_says_what_to_change() {
         assert!(out.contains(expected), "missing {expected:?} in\n{out}");
     }
     assert_eq!(out.matches("warning[untranslated-message]").count(), 20);
-    assert!(out.ends_with("\nFound 2 errors, 21 warnings (1 fixable with ekb fix)\n"));
+    assert!(out.ends_with(
+        "\nFound 2 errors, 21 warnings (1 fixable with ekb fix), checked against reader d5.4.2\n"
+    ));
     assert_eq!(run.stderr, "");
 }
 

@@ -68,7 +68,7 @@ pub fn render(
         }
     }
     if !options.quiet {
-        writeln!(out, "{}", summary.sentence())?;
+        writeln!(out, "{}{}", summary.sentence(), super::reader_note(reports))?;
     }
     Ok(())
 }

@@ -18,6 +18,7 @@ use clap::ValueEnum;
 
 use crate::check::Checked;
 use crate::diagnostic::Summary;
+use crate::reader::Reader;
 pub use located::{FileReport, LocatedDiagnostic};
 
 /// `ekb check --format`.
@@ -52,6 +53,31 @@ pub fn render(
         Format::Json => json::render(&reports, summary, out),
         Format::Github => github::render(&reports, out),
         Format::Sarif => sarif::render(&reports, out),
+    }
+}
+
+/// The versions of the robot's reader that the files were checked against, for the
+/// summary line: `, checked against reader 2025-06`, or with several `, checked against
+/// readers d5.4.2 for a.dat, …`.
+pub fn reader_note(reports: &[FileReport<'_>]) -> String {
+    let mut readers: Vec<Reader> = reports.iter().map(|r| r.checked.reader).collect();
+    readers.dedup();
+    match readers.as_slice() {
+        [] => String::new(),
+        [one] => format!(", checked against reader {one}"),
+        _ => {
+            let each: Vec<String> = reports
+                .iter()
+                .map(|r| {
+                    format!(
+                        "{} for {}",
+                        r.checked.reader,
+                        escape::escape(r.checked.source.name())
+                    )
+                })
+                .collect();
+            format!(", checked against readers {}", each.join(", "))
+        }
     }
 }
 

@@ -35,6 +35,12 @@ pub fn render(reports: &[FileReport<'_>], out: &mut dyn Write) -> io::Result<()>
         schema: SCHEMA,
         runs: [Run {
             column_kind: "unicodeCodePoints",
+            properties: RunProperties {
+                readers: reports
+                    .iter()
+                    .map(|r| (r.checked.source.name(), r.checked.reader.name()))
+                    .collect(),
+            },
             results: Results(reports),
             tool: json!({ "driver": driver }),
         }],
@@ -57,8 +63,16 @@ struct Log<'r, 'a> {
 #[serde(rename_all = "camelCase")]
 struct Run<'r, 'a> {
     column_kind: &'static str,
+    properties: RunProperties<'r>,
     results: Results<'r, 'a>,
     tool: Value,
+}
+
+/// What SARIF has no field for: the version of the robot's reader each file was checked
+/// against, by file name.
+#[derive(Serialize)]
+struct RunProperties<'r> {
+    readers: std::collections::BTreeMap<&'r str, &'static str>,
 }
 
 /// The results, each made as it is written: a tree of them all would hold the JSON of
