@@ -200,6 +200,17 @@ fn a_dash_reads_standard_input() {
 }
 
 #[test]
+fn standard_input_named_twice_is_refused() {
+    // A second read of standard input finds it empty: a phantom file with no tour.
+    for command in ["check", "fmt", "fix"] {
+        let run = run(ekb()
+            .args([command, "-", "clean-seed.dat", "-"])
+            .write_stdin(seed_text()));
+        assert_failure(&run, "standard input (`-`) is named 2 times");
+    }
+}
+
+#[test]
 fn quiet_leaves_out_the_summary() {
     let concise = run(ekb().args(["-q", "check", "--format", "concise", "seed.dat"]));
     assert_eq!(concise.code, 1);

@@ -124,8 +124,15 @@ impl Context {
         })
     }
 
-    /// The files to work on: those given, else the configured knowledge base.
+    /// The files to work on: those given, else the configured knowledge base. Standard input
+    /// may be given once: a second read of it would find it empty, a file with no tour.
     pub fn inputs(&self, files: &[PathBuf]) -> Result<Vec<PathBuf>, CommandError> {
+        let stdin_count = files.iter().filter(|f| f.as_os_str() == "-").count();
+        if stdin_count > 1 {
+            return Err(CommandError::Failed(format!(
+                "standard input (`-`) is named {stdin_count} times, but it can be read only once; name it once"
+            )));
+        }
         if !files.is_empty() {
             return Ok(files.to_vec());
         }
