@@ -541,6 +541,18 @@ fn standard_ini_form_works_too() {
 }
 
 #[test]
+fn comments_after_values_are_dropped_and_unknown_keys_warned_about() {
+    let robot = robot_folder("knowledgeBase = kb.dat ; the lab's file\nverbosemode true\n");
+    let run = run(ekb_in(robot.path()).args(["check", "--format", "concise"]));
+    assert_checked_configured_seed(&run, "data/kb.dat");
+    assert_eq!(
+        run.stderr,
+        "ekb: warning: configuration config/environmentKnowledgeBaseConfiguration.ini: \
+         unknown key `verbosemode` (ignored); did you mean `verboseMode`?\n"
+    );
+}
+
+#[test]
 fn a_file_argument_wins_over_the_configured_one() {
     let robot = robot_folder("knowledgeBase kb.dat\n");
     fs::write(

@@ -106,12 +106,16 @@ impl Context {
         }
     }
 
-    /// The configuration (see [`Config::discover`]).
+    /// The configuration (see [`Config::discover`]); what it ignores is told on standard
+    /// error, once.
     pub fn config(&self) -> Result<&Config, CommandError> {
         if let Some(config) = self.config.get() {
             return Ok(config);
         }
         let config = Config::discover(self.config_path.as_deref())?;
+        for warning in &config.warnings {
+            eprintln!("ekb: warning: {}", escape(warning));
+        }
         Ok(self.config.get_or_init(|| config))
     }
 
