@@ -183,6 +183,24 @@ fn fix_dialect_current_renames_the_pose_key_only() {
 }
 
 #[test]
+fn fix_dialect_current_keeps_a_formatted_file_formatted() {
+    let formatted = ekb()
+        .args(["fmt", "-"])
+        .write_stdin(seed())
+        .output()
+        .unwrap();
+    assert_eq!(formatted.status.code(), Some(0));
+    let (_dir, path) = temp_file("kb.dat", &formatted.stdout);
+    ekb()
+        .args(["fix", "--dialect", "current"])
+        .arg(&path)
+        .assert()
+        .code(0)
+        .stderr(contains("5 legacy-key"));
+    ekb().args(["fmt", "--check"]).arg(&path).assert().code(0);
+}
+
+#[test]
 fn fix_dialect_seed_refuses_lines_the_seed_dialect_cannot_hold() {
     let (_dir, path) = temp_file("kb.dat", read_fixture("current.dat").as_bytes());
     ekb()
