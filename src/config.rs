@@ -1,7 +1,8 @@
 //! The configuration file (SPEC §3): where the knowledge base is, and how to read it.
 //!
 //! Both the standard INI form (`knowledgeBase = file.dat`) and the robot's own whitespace
-//! form (`knowledgeBase   file.dat`) are accepted, in any mix.
+//! form (`knowledgeBase   file.dat`) are accepted, in any mix. A `;` or `#` after blanks
+//! starts a comment, on a line of its own or after a value.
 
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -14,6 +15,12 @@ pub const DEFAULT_PATH: &str = "config/environmentKnowledgeBaseConfiguration.ini
 /// The environment variable naming the configuration file.
 pub const ENV_VAR: &str = "EKB_CONFIG";
 
+/// The keys `ekb` reads; any other is reported as a warning, with the nearest of these.
+pub const KEYS: [&str; 4] = ["knowledgeBase", "verboseMode", "dialect", "reader"];
+
+/// The versions of the robot's reader (SPEC §2.1), the values of `reader`.
+pub const READERS: [&str; 5] = ["d5.4.2", "2025-06", "2026-02", "2026-03", "2026-04"];
+
 /// A configuration as read.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct Config {
@@ -25,6 +32,10 @@ pub struct Config {
     pub verbose: bool,
     /// `dialect`: `seed` or `current` pins one; absent or `auto` detects it per file.
     pub dialect: Option<Dialect>,
+    /// `reader`: the version of the robot's reader to check against, one of [`READERS`].
+    pub reader: Option<String>,
+    /// What in the file was ignored (unknown keys), one line each, to tell the user.
+    pub warnings: Vec<String>,
 }
 
 /// Why a configuration could not be used (exit code 2).
@@ -67,6 +78,9 @@ impl Config {
         })?;
         let mut config = Config::parse(&text)
             .map_err(|reason| ConfigError(format!("configuration {}: {reason}", path.display())))?;
+        for warning in &mut config.warnings {
+            *warning = format!("configuration {}: {warning}", path.display());
+        }
         config.knowledge_base = config
             .knowledge_base
             .map(|name| resolve_knowledge_base(path, &name));
@@ -84,7 +98,8 @@ impl Config {
                     "knowledgeBase" => config.knowledge_base = Some(PathBuf::from(value)),
                     "verboseMode" => config.verbose = parse_bool(value)?,
                     "dialect" => config.dialect = parse_dialect(value)?,
-                    _ => {}
+                    "reader" => config.reader = Some(parse_reader(value)?),
+                    unknown => config.warnings.push(unknown_key(unknown)),
                 }
             }
         }
@@ -120,24 +135,63 @@ fn resolve_knowledge_base(config_path: &Path, name: &Path) -> PathBuf {
     base.join(name)
 }
 
-/// Turns the robot's `key   value` lines into `key = value`, leaving INI lines alone.
+/// Turns the robot's `key   value` lines into `key = value`, leaving INI lines alone, and
+/// drops comments after values (which rust-ini would keep as part of the value).
 fn to_standard_ini(text: &str) -> String {
     let mut out = String::with_capacity(text.len() + 16);
     for line in text.lines() {
         let trimmed = line.trim();
-        let is_plain =
-            trimmed.is_empty() || trimmed.starts_with(['#', ';', '[']) || trimmed.contains('=');
-        match trimmed.split_once([' ', '\t']) {
-            Some((key, value)) if !is_plain => {
-                out.push_str(key);
-                out.push_str(" = ");
-                out.push_str(value.trim());
+        if trimmed.is_empty() || trimmed.starts_with(['#', ';', '[']) {
+            out.push_str(line);
+        } else {
+            let entry = without_comment(trimmed);
+            match entry.split_once([' ', '\t']) {
+                Some((key, value)) if !entry.contains('=') => {
+                    out.push_str(key);
+                    out.push_str(" = ");
+                    out.push_str(value.trim());
+                }
+                _ => out.push_str(entry),
             }
-            _ => out.push_str(line),
         }
         out.push('\n');
     }
     out
+}
+
+/// `entry` without a comment after its value: from a `;` or `#` that follows a blank (one
+/// inside a word, as in `kb#2.dat`, is part of the value).
+fn without_comment(entry: &str) -> &str {
+    let starts_comment =
+        |(at, ch): &(usize, char)| matches!(ch, ';' | '#') && entry[..*at].ends_with([' ', '\t']);
+    match entry.char_indices().find(starts_comment) {
+        Some((at, _)) => entry[..at].trim_end(),
+        None => entry,
+    }
+}
+
+/// `unknown key `verbosemode` (ignored); did you mean `verboseMode`?`
+fn unknown_key(key: &str) -> String {
+    let lower = key.to_ascii_lowercase();
+    let nearest = KEYS
+        .into_iter()
+        .map(|known| {
+            (
+                strsim::levenshtein(&lower, &known.to_ascii_lowercase()),
+                known,
+            )
+        })
+        .min_by_key(|&(distance, _)| distance);
+    match nearest {
+        // A typo or a wrong case, not some other program's key.
+        Some((distance, known)) if distance <= 3 => {
+            format!("unknown key `{key}` (ignored); did you mean `{known}`?")
+        }
+        _ => format!(
+            "unknown key `{key}` (ignored); the keys are {}",
+            KEYS.map(|known| format!("`{known}`")).join(", ")
+        ),
+    }
 }
 
 fn parse_bool(value: &str) -> Result<bool, String> {
@@ -146,6 +200,20 @@ fn parse_bool(value: &str) -> Result<bool, String> {
         "false" | "no" | "0" | "off" => Ok(false),
         other => Err(format!("verboseMode must be true or false, not `{other}`")),
     }
+}
+
+fn parse_reader(value: &str) -> Result<String, String> {
+    let value = value.trim();
+    READERS
+        .into_iter()
+        .find(|reader| reader.eq_ignore_ascii_case(value))
+        .map(str::to_string)
+        .ok_or_else(|| {
+            format!(
+                "reader must be one of {}, not `{value}`",
+                READERS.join(", ")
+            )
+        })
 }
 
 fn parse_dialect(value: &str) -> Result<Option<Dialect>, String> {
@@ -189,6 +257,58 @@ mod tests {
     fn bad_values_are_errors() {
         assert!(Config::parse("verboseMode maybe").is_err());
         assert!(Config::parse("dialect = klingon").is_err());
+    }
+
+    #[test]
+    fn comments_after_values_are_not_part_of_them() {
+        let config = Config::parse(
+            "knowledgeBase = kb.dat ; the lab's file\nverboseMode   true # for now\n",
+        );
+        let config = config.unwrap();
+        assert_eq!(config.knowledge_base.as_deref(), Some(Path::new("kb.dat")));
+        assert!(config.verbose);
+        // Without a blank before it, `;` or `#` is part of the value.
+        assert!(Config::parse("dialect=seed;x").is_err());
+        let config = Config::parse("knowledgeBase kb#2.dat\t# second\n").unwrap();
+        assert_eq!(
+            config.knowledge_base.as_deref(),
+            Some(Path::new("kb#2.dat"))
+        );
+    }
+
+    #[test]
+    fn unknown_keys_are_warned_about_with_the_nearest_known_key() {
+        let config = Config::parse(
+            "verbosemode true\nDialect = current\nknowledgeBas kb.dat\ncolour = red\n",
+        )
+        .unwrap();
+        assert_eq!(
+            config.warnings,
+            [
+                "unknown key `verbosemode` (ignored); did you mean `verboseMode`?",
+                "unknown key `Dialect` (ignored); did you mean `dialect`?",
+                "unknown key `knowledgeBas` (ignored); did you mean `knowledgeBase`?",
+                "unknown key `colour` (ignored); the keys are `knowledgeBase`, `verboseMode`, `dialect`, `reader`",
+            ]
+        );
+        assert!(!config.verbose);
+        assert_eq!(config.dialect, None);
+        assert!(Config::parse("knowledgeBase kb.dat\n")
+            .unwrap()
+            .warnings
+            .is_empty());
+    }
+
+    #[test]
+    fn reader_is_one_of_the_versions() {
+        let config = Config::parse("reader = 2026-03\n").unwrap();
+        assert_eq!(config.reader.as_deref(), Some("2026-03"));
+        let config = Config::parse("reader   D5.4.2\n").unwrap();
+        assert_eq!(config.reader.as_deref(), Some("d5.4.2"));
+        assert_eq!(
+            Config::parse("reader = 2024-01").unwrap_err(),
+            "reader must be one of d5.4.2, 2025-06, 2026-02, 2026-03, 2026-04, not `2024-01`"
+        );
     }
 
     #[test]

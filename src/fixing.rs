@@ -3,7 +3,8 @@
 //! Each pass checks the text, applies every fix that does not touch the bytes of a fix
 //! already taken, and goes again: a fix can make another one possible (a key in the wrong
 //! case becomes a key of the other dialect, which `legacy-key` then renames). Only the bytes
-//! of the edits change. The passes stop when nothing is left to fix, or after
+//! of the edits change, and the padding after a renamed key, so that an id aligned by
+//! `ekb fmt` stays aligned. The passes stop when nothing is left to fix, or after
 //! [`MAX_PASSES`] (no rule's fix undoes another's, so this bound is never reached in practice).
 //!
 //! `check` keeps at most [`MAX_KEPT_PER_RULE`] findings of a rule; a file with more of one
@@ -82,20 +83,58 @@ fn saw_only_some(diagnostics: &[Diagnostic]) -> bool {
 /// whose edits clash with those of one taken before it. Returns the new text and the rule
 /// of each fix applied.
 pub fn apply(text: &str, diagnostics: &[Diagnostic]) -> (String, Vec<&'static str>) {
+    let fixes: Vec<(&'static str, Vec<Edit>)> = diagnostics
+        .iter()
+        .filter_map(|diagnostic| {
+            let edits = &diagnostic.fix.as_ref()?.edits;
+            let edits = edits.iter().map(|edit| keeping_id_column(text, edit));
+            Some((diagnostic.rule.name, edits.collect()))
+        })
+        .collect();
     let mut accepted = Edits::default();
     let mut applied = Vec::new();
-    for diagnostic in diagnostics {
-        let Some(fix) = &diagnostic.fix else {
-            continue;
-        };
-        let fits =
-            fix.edits.iter().all(|edit| !accepted.clashes(edit.span)) && !clash_among(&fix.edits);
+    for (rule, edits) in &fixes {
+        let fits = edits.iter().all(|edit| !accepted.clashes(edit.span)) && !clash_among(edits);
         if fits {
-            fix.edits.iter().for_each(|edit| accepted.add(edit));
-            applied.push(diagnostic.rule.name);
+            edits.iter().for_each(|edit| accepted.add(edit));
+            applied.push(*rule);
         }
     }
     (accepted.apply(text), applied)
+}
+
+/// `edit`, made to keep the column of the id when it renames the key of a line whose key is
+/// padded with spaces up to the id (as `ekb fmt` writes): `robotLocation` becoming
+/// `robotLocationPose` takes four of its spaces, and the reverse gives them back. Any other
+/// edit is left as it is.
+fn keeping_id_column(text: &str, edit: &Edit) -> Edit {
+    let (start, end) = (edit.span.start as usize, edit.span.end as usize);
+    let old_key = &text[start..end];
+    let new_key = edit.replacement.as_str();
+    let at_line_start = start == 0 || text.as_bytes()[start - 1] == b'\n';
+    let is_word = |word: &str| !word.is_empty() && !word.contains(char::is_whitespace);
+    let padding = text[end..].bytes().take_while(|&b| b == b' ').count();
+    let id_follows = text[end + padding..]
+        .bytes()
+        .next()
+        .is_some_and(|b| !b.is_ascii_whitespace());
+    let same_length = old_key.chars().count() == new_key.chars().count();
+    // One space is a separator, not padding (and no layout to keep).
+    if same_length
+        || !at_line_start
+        || !is_word(old_key)
+        || !is_word(new_key)
+        || padding < 2
+        || !id_follows
+    {
+        return edit.clone();
+    }
+    let column = old_key.chars().count() + padding;
+    let new_padding = column.saturating_sub(new_key.chars().count()).max(1);
+    Edit::replace(
+        Span::new(start, end + padding),
+        format!("{new_key}{}", " ".repeat(new_padding)),
+    )
 }
 
 /// Non-clashing edits, by `(start, end)`. Since none overlap, their ends grow with their
@@ -194,6 +233,35 @@ mod tests {
         let result = fixed(&" \n".repeat(lines));
         assert_eq!(result.text, "\n".repeat(lines));
         assert_eq!(result.counts.get("trailing-whitespace"), Some(&lines));
+    }
+
+    #[test]
+    fn a_renamed_key_keeps_the_id_in_its_column() {
+        let migrate = |text: &str, dialect| {
+            let options = Options {
+                dialect: Some(dialect),
+                verbose: false,
+            };
+            fix(&SourceFile::from_bytes("t", text.into()), &options).text
+        };
+        let seed = "robotLocation                 1 2.6 8.1 -90\n";
+        let current = "robotLocationPose             1 2.6 8.1 -90\n";
+        assert_eq!(migrate(seed, crate::model::Dialect::Current), current);
+        assert_eq!(migrate(current, crate::model::Dialect::Seed), seed);
+        // A key followed by one space, or a tab, is not padded: only the key changes.
+        assert_eq!(
+            migrate("robotLocation 1 2 3 4\n", crate::model::Dialect::Current),
+            "robotLocationPose 1 2 3 4\n"
+        );
+        assert_eq!(
+            migrate("robotLocationPose\t1 2 3 4\n", crate::model::Dialect::Seed),
+            "robotLocation\t1 2 3 4\n"
+        );
+        // Padding too short for the longer key leaves one space.
+        assert_eq!(
+            migrate("robotLocation  1 2 3 4\n", crate::model::Dialect::Current),
+            "robotLocationPose 1 2 3 4\n"
+        );
     }
 
     #[test]

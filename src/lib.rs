@@ -23,7 +23,6 @@ pub mod diagnostic;
 pub mod diff;
 pub mod fixing;
 pub mod generate;
-mod huge_pages;
 pub mod model;
 mod parallel;
 pub mod present;

@@ -9,6 +9,7 @@ use similar::{Algorithm, TextDiff};
 
 use crate::commands::{CommandError, Exit};
 use crate::render::escape::escape;
+use crate::rules::structure::not_a_knowledge_base;
 use crate::source::{LineIndex, SourceFile};
 use crate::write::write_atomically;
 
@@ -27,19 +28,28 @@ pub struct DiffStyle {
     pub color: bool,
 }
 
-/// Refuses a file that was not valid UTF-8: rewriting it would replace the bad bytes.
+/// Refuses a file that was not valid UTF-8: rewriting it would replace the bad bytes; and a
+/// file that is not an environment knowledge base (the culture knowledge base, say), which
+/// the layout would reorder and no fix would mend.
 pub fn ensure_rewritable(source: &SourceFile) -> Result<(), CommandError> {
-    let Some(first) = source.invalid_utf8().first() else {
-        return Ok(());
-    };
-    let position = LineIndex::new(source.text()).position(source.text(), first.start);
-    Err(CommandError::Failed(format!(
-        "{} is not valid UTF-8 (line {}, column {}): ekb does not rewrite it, as that would lose \
-         the bad bytes; save it as UTF-8 and run again",
-        escape(source.name()),
-        position.line,
-        position.column
-    )))
+    if let Some(first) = source.invalid_utf8().first() {
+        let position = LineIndex::new(source.text()).position(source.text(), first.start);
+        return Err(CommandError::Failed(format!(
+            "{} is not valid UTF-8 (line {}, column {}): ekb does not rewrite it, as that would \
+             lose the bad bytes; save it as UTF-8 and run again",
+            escape(source.name()),
+            position.line,
+            position.column
+        )));
+    }
+    match not_a_knowledge_base::check(source.text()) {
+        Some(foreign) => Err(CommandError::Failed(format!(
+            "{}: {}; ekb does not rewrite it",
+            escape(source.name()),
+            foreign.message
+        ))),
+        None => Ok(()),
+    }
 }
 
 /// Delivers `new`, the new text of `source` read from `path`, as `mode` says. Returns whether

@@ -208,6 +208,17 @@ fn a_dash_reads_standard_input() {
 }
 
 #[test]
+fn standard_input_named_twice_is_refused() {
+    // A second read of standard input finds it empty: a phantom file with no tour.
+    for command in ["check", "fmt", "fix"] {
+        let run = run(ekb()
+            .args([command, "-", "clean-seed.dat", "-"])
+            .write_stdin(seed_text()));
+        assert_failure(&run, "standard input (`-`) is named 2 times");
+    }
+}
+
+#[test]
 fn quiet_leaves_out_the_summary() {
     let concise = run(ekb().args(["-q", "check", "--format", "concise", "seed.dat"]));
     assert_eq!(concise.code, 1);
@@ -541,6 +552,18 @@ fn standard_ini_form_works_too() {
         robot_folder("; ekb settings\n[robot]\nknowledgeBase = kb.dat\nverboseMode = false\n");
     let run = run(ekb_in(robot.path()).args(["check", "--format", "concise"]));
     assert_checked_configured_seed(&run, "data/kb.dat");
+}
+
+#[test]
+fn comments_after_values_are_dropped_and_unknown_keys_warned_about() {
+    let robot = robot_folder("knowledgeBase = kb.dat ; the lab's file\nverbosemode true\n");
+    let run = run(ekb_in(robot.path()).args(["check", "--format", "concise"]));
+    assert_checked_configured_seed(&run, "data/kb.dat");
+    assert_eq!(
+        run.stderr,
+        "ekb: warning: configuration config/environmentKnowledgeBaseConfiguration.ini: \
+         unknown key `verbosemode` (ignored); did you mean `verboseMode`?\n"
+    );
 }
 
 #[test]

@@ -4,7 +4,8 @@
 mod author_support;
 
 use author_support::{
-    assert_read_only_file_left_intact, ekb, fixture, read_fixture, seed, temp_file,
+    assert_read_only_file_left_intact, culture_knowledge_base, ekb, fixture, read_fixture, seed,
+    temp_file,
 };
 use predicates::str::contains;
 
@@ -185,6 +186,24 @@ fn fix_dialect_current_renames_the_pose_key_only() {
 }
 
 #[test]
+fn fix_dialect_current_keeps_a_formatted_file_formatted() {
+    let formatted = ekb()
+        .args(["fmt", "-"])
+        .write_stdin(seed())
+        .output()
+        .unwrap();
+    assert_eq!(formatted.status.code(), Some(0));
+    let (_dir, path) = temp_file("kb.dat", &formatted.stdout);
+    ekb()
+        .args(["fix", "--dialect", "current"])
+        .arg(&path)
+        .assert()
+        .code(0)
+        .stderr(contains("5 legacy-key"));
+    ekb().args(["fmt", "--check"]).arg(&path).assert().code(0);
+}
+
+#[test]
 fn fix_dialect_seed_refuses_lines_the_seed_dialect_cannot_hold() {
     let (_dir, path) = temp_file("kb.dat", read_fixture("current.dat").as_bytes());
     ekb()
@@ -246,4 +265,22 @@ fn fix_of_a_missing_file_is_exit_2() {
         .assert()
         .code(2)
         .stderr(contains("no such file"));
+}
+
+#[test]
+fn fix_refuses_a_file_that_is_not_an_environment_knowledge_base() {
+    // Reordering the culture knowledge base's lines would be a change, and a wrong one.
+    let bytes = culture_knowledge_base();
+    let (_dir, path) = temp_file("cultureKnowledgeBaseInput.dat", &bytes);
+    ekb()
+        .arg("fix")
+        .arg(&path)
+        .assert()
+        .code(2)
+        .stdout("")
+        .stderr(contains(
+            "cultureKnowledgeBaseInput.dat: this is not an environment knowledge base: none of \
+             its 78 `key value` lines has one of its keys (the first is `passingDistance`)",
+        ));
+    assert_eq!(std::fs::read(&path).unwrap(), bytes);
 }

@@ -3,8 +3,8 @@
 mod author_support;
 
 use author_support::{
-    assert_read_only_file_left_intact, ekb, export_text, permissions_are_ignored, read_fixture,
-    seed, temp_file,
+    assert_read_only_file_left_intact, culture_knowledge_base, ekb, export_text,
+    permissions_are_ignored, read_fixture, seed, temp_file,
 };
 use ekb::canonical::Document;
 use proptest::prelude::*;
@@ -337,4 +337,22 @@ proptest! {
         prop_assert_eq!(entries(&once), entries(&text));
         prop_assert_eq!(export_text(&once), export_text(&text));
     }
+}
+
+#[test]
+fn fmt_refuses_a_file_that_is_not_an_environment_knowledge_base() {
+    // Reordering the culture knowledge base's lines would be a change, and a wrong one.
+    let bytes = culture_knowledge_base();
+    let (_dir, path) = temp_file("cultureKnowledgeBaseInput.dat", &bytes);
+    ekb()
+        .arg("fmt")
+        .arg(&path)
+        .assert()
+        .code(2)
+        .stdout("")
+        .stderr(predicates::str::contains(
+            "cultureKnowledgeBaseInput.dat: this is not an environment knowledge base: none of \
+             its 78 `key value` lines has one of its keys (the first is `passingDistance`)",
+        ));
+    assert_eq!(std::fs::read(&path).unwrap(), bytes);
 }

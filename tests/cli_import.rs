@@ -36,6 +36,31 @@ fn import_reads_standard_input_and_writes_a_file() {
     );
 }
 
+#[test]
+fn import_writes_a_file_with_errors_and_tells_them() {
+    // A description the robot's 200-byte line buffer splits: JSON has no such limit.
+    let description = format!("{}x", "Roomba ".repeat(57));
+    assert_eq!(description.len(), 400);
+    let mut kb: serde_json::Value = serde_json::from_str(&read_fixture("current.json")).unwrap();
+    kb["locations"][0]["description"] = description.clone().into();
+    let (dir, _) = temp_file("unused", b"");
+    let out = dir.path().join("kb.dat");
+    ekb()
+        .args(["import", "-", "-o"])
+        .arg(&out)
+        .write_stdin(kb.to_string())
+        .assert()
+        .code(1)
+        .stdout("")
+        .stderr(contains(format!(
+            "{}:1:199: error[compat-line-too-long]",
+            out.display()
+        )))
+        .stderr(contains("written with 1 error to correct by hand"));
+    let written = std::fs::read_to_string(&out).unwrap();
+    assert!(written.starts_with(&format!("robotLocationDescription      1 {description}\n")));
+}
+
 /// `ekb export X | ekb import -` equals `ekb fmt X`.
 #[test]
 fn export_then_import_equals_fmt() {

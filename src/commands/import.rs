@@ -1,13 +1,19 @@
 //! `ekb import JSON [-o OUT]`: the JSON of `ekb export` back to a knowledge base, in the
 //! canonical layout of `ekb fmt` (both are written by [`crate::canonical::Document`]).
+//!
+//! JSON can hold what the robot cannot read (a 300-byte message, a negative first number):
+//! the file is written all the same, for a person to correct, and its errors are told.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::canonical::Document;
+use crate::check::check;
+use crate::diagnostic::{Severity, Summary};
 use crate::model::export::ExportedKnowledgeBase;
 use crate::render::escape::escape;
+use crate::render::{concise, FileReport, RenderOptions};
 use crate::source::SourceFile;
 use crate::write::write_atomically;
 
@@ -22,7 +28,7 @@ pub struct Args {
     pub output: Option<PathBuf>,
 }
 
-pub fn run(args: &Args, _context: &Context) -> CommandResult {
+pub fn run(args: &Args, context: &Context) -> CommandResult {
     let json = SourceFile::read(&args.input)?;
     let name = escape(json.name()).into_owned();
     if !json.invalid_utf8().is_empty() {
@@ -33,11 +39,49 @@ pub fn run(args: &Args, _context: &Context) -> CommandResult {
     let document = Document::from_export(&kb)
         .map_err(|error| CommandError::Failed(format!("{name}: {}", escape(&error.to_string()))))?;
     let text = document.render();
-    match &args.output {
-        Some(out) if out != Path::new("-") => write_atomically(out, text.as_bytes())?,
-        _ => std::io::stdout().lock().write_all(text.as_bytes())?,
+    let name = match &args.output {
+        Some(out) if out != Path::new("-") => {
+            write_atomically(out, text.as_bytes())?;
+            out.display().to_string()
+        }
+        _ => {
+            std::io::stdout().lock().write_all(text.as_bytes())?;
+            "<stdout>".to_string()
+        }
+    };
+    report_errors(&SourceFile::from_bytes(name, text.into_bytes()), context)
+}
+
+/// Tells, on standard error, the errors of the knowledge base written: exit 1 if it has any.
+fn report_errors(written: &SourceFile, context: &Context) -> CommandResult {
+    let mut checked = check(written, &context.read_options()?);
+    let errors = checked.summary().errors;
+    if errors == 0 {
+        return Ok(Exit::Clean);
     }
-    Ok(Exit::Clean)
+    checked
+        .diagnostics
+        .retain(|diagnostic| diagnostic.severity() == Severity::Error);
+    let mut stderr = std::io::stderr().lock();
+    let findings_only = RenderOptions {
+        color: false,
+        quiet: true,
+    };
+    concise::render(
+        &[FileReport::new(&checked)],
+        &Summary::default(),
+        &mut stderr,
+        &findings_only,
+    )?;
+    if !context.quiet {
+        let s = if errors == 1 { "" } else { "s" };
+        writeln!(
+            stderr,
+            "{}: written with {errors} error{s} to correct by hand (`ekb check` lists every finding)",
+            escape(written.name())
+        )?;
+    }
+    Ok(Exit::Findings)
 }
 
 /// Deserializes an export; an error names the JSON path of the bad field.

@@ -1,19 +1,169 @@
-//! `ekb man`: the man page, generated from the same CLI definition as `--help`.
+//! `ekb man`: one man page for the whole tool, generated from the same CLI definition as
+//! `--help`: the global options, every subcommand with its own, and what `--help` does not
+//! tell: the exit status, the environment and the configuration file.
 
-use std::io::Write;
+use std::io::{self, Write};
 
 use clap::CommandFactory;
+use clap_mangen::Man;
 
 use super::{CommandResult, Context, Exit};
 use crate::cli::Cli;
+use crate::config;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {}
 
 pub fn run(_args: &Args, _context: &Context) -> CommandResult {
-    let mut page = Vec::new();
-    clap_mangen::Man::new(Cli::command()).render(&mut page)?;
     let mut stdout = std::io::stdout().lock();
-    stdout.write_all(&page)?;
+    stdout.write_all(page()?.as_bytes())?;
     Ok(Exit::Clean)
+}
+
+/// The page, in roff. The subcommands are sections of it, not pages of their own (which
+/// clap_mangen would name, as `ekb-check(1)`, without writing them).
+pub fn page() -> io::Result<String> {
+    let cli = Cli::command();
+    let man = Man::new(cli.clone());
+    let mut page = rendered(|out| man.render_title(out))?;
+    page += &rendered(|out| man.render_name_section(out))?;
+    page += &rendered(|out| man.render_synopsis_section(out))?;
+    page += &rendered(|out| man.render_description_section(out))?;
+    page += &rendered(|out| man.render_options_section(out))?;
+    page += ".SH COMMANDS\n";
+    for command in cli.get_subcommands() {
+        page += &command_section(command)?;
+    }
+    page += EXIT_STATUS;
+    page += &environment();
+    page += &files();
+    page += &rendered(|out| man.render_version_section(out))?;
+    Ok(preamble()? + &page)
+}
+
+/// `ekb check` as a subsection: what it does, its synopsis and its own options (the global
+/// ones are in OPTIONS).
+fn command_section(command: &clap::Command) -> io::Result<String> {
+    let name = format!("ekb {}", command.get_name());
+    let man = Man::new(
+        command
+            .clone()
+            .bin_name(&name)
+            // `-h` is on every command: told once, in OPTIONS.
+            .disable_help_flag(true),
+    );
+    let mut section = format!(".SS \"{name}\"\n");
+    section += &without_headings(&rendered(|out| man.render_description_section(out))?);
+    section += ".PP\n";
+    section += &without_headings(&rendered(|out| man.render_synopsis_section(out))?);
+    section += &without_headings(&rendered(|out| man.render_options_section(out))?);
+    Ok(section)
+}
+
+/// What one of clap_mangen's renderers writes, without the preamble each one starts with.
+fn rendered(render: impl FnOnce(&mut dyn Write) -> io::Result<()>) -> io::Result<String> {
+    let mut out = Vec::new();
+    render(&mut out)?;
+    let text = String::from_utf8(out).map_err(io::Error::other)?;
+    Ok(text
+        .lines()
+        .filter(|line| !is_preamble(line))
+        .map(|line| format!("{line}\n"))
+        .collect())
+}
+
+/// The lines that define the `Aq` string (an apostrophe) in clap_mangen's roff: written once,
+/// at the top of the page.
+fn preamble() -> io::Result<String> {
+    let mut out = Vec::new();
+    Man::new(Cli::command()).render_title(&mut out)?;
+    let text = String::from_utf8(out).map_err(io::Error::other)?;
+    Ok(text
+        .lines()
+        .filter(|line| is_preamble(line))
+        .map(|line| format!("{line}\n"))
+        .collect())
+}
+
+fn is_preamble(line: &str) -> bool {
+    line.starts_with(".ie \\n(.g .ds Aq") || line.starts_with(".el .ds Aq")
+}
+
+/// A section's body without its `.SH` heading, to become part of a subsection.
+fn without_headings(section: &str) -> String {
+    section
+        .lines()
+        .filter(|line| !line.starts_with(".SH "))
+        .map(|line| format!("{line}\n"))
+        .collect()
+}
+
+const EXIT_STATUS: &str = r#".SH "EXIT STATUS"
+.TP
+.B 0
+Clean: no errors (warnings are allowed unless \fB\-\-deny\-warnings\fR is given), no difference, nothing to change.
+.TP
+.B 1
+Errors found, differences found, or something would change (\fBfmt \-\-check\fR, \fBfix \-\-diff\fR); also \fBimport\fR and \fBfix\fR when the file they write still has errors.
+.TP
+.B 2
+\fBekb\fR could not do its job: a usage error, an unreadable file, a bad configuration, a file it refuses to rewrite. One line on standard error says why.
+"#;
+
+fn environment() -> String {
+    format!(
+        r#".SH ENVIRONMENT
+.TP
+.B {}
+The configuration file, when \fB\-\-config\fR is not given.
+.TP
+.B NO_COLOR
+When set and not empty, no colour, unless \fB\-\-color always\fR is given.
+"#,
+        config::ENV_VAR
+    )
+}
+
+fn files() -> String {
+    let readers: Vec<String> = config::READERS
+        .iter()
+        .map(|reader| format!("\\fB{}\\fR", reader.replace('-', "\\-")))
+        .collect();
+    format!(
+        r#".SH FILES
+.TP
+.I {}
+The configuration, under the current folder, used when neither \fB\-\-config\fR nor \fB{}\fR names one; with none, give \fBekb\fR the \fIFILE\fR to work on. It is the robot's own file: standard INI (\fIkey\fR = \fIvalue\fR) or the robot's whitespace form (\fIkey\fR \fIvalue\fR), with \fB;\fR or \fB#\fR comments, also after a value. A key \fBekb\fR does not know is ignored with a warning. The keys:
+.RS
+.TP
+.B knowledgeBase
+The knowledge base that a command given no \fIFILE\fR works on. A relative name is resolved in the \fIdata/\fR folder beside the configuration's folder, as on the robot.
+.TP
+.B verboseMode
+\fBtrue\fR or \fBfalse\fR: print what is read, as it is read, on standard error (as \fB\-v\fR does).
+.TP
+.B dialect
+\fBseed\fR, \fBcurrent\fR or \fBauto\fR (the default, which detects it per file): with one pinned, keys of the other dialect are \fBlegacy\-key\fR errors.
+.TP
+.B reader
+The version of the robot's reader that the file is checked against: {}.
+.RE
+"#,
+        config::DEFAULT_PATH.replace('-', "\\-"),
+        config::ENV_VAR,
+        readers.join(", ")
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_configuration_key_is_documented() {
+        let page = page().unwrap();
+        for key in config::KEYS {
+            assert!(page.contains(&format!(".B {key}\n")), "{key}");
+        }
+    }
 }

@@ -112,12 +112,16 @@ impl Context {
         }
     }
 
-    /// The configuration (see [`Config::discover`]).
+    /// The configuration (see [`Config::discover`]); what it ignores is told on standard
+    /// error, once.
     pub fn config(&self) -> Result<&Config, CommandError> {
         if let Some(config) = self.config.get() {
             return Ok(config);
         }
         let config = Config::discover(self.config_path.as_deref())?;
+        for warning in &config.warnings {
+            eprintln!("ekb: warning: {}", escape(warning));
+        }
         Ok(self.config.get_or_init(|| config))
     }
 
@@ -140,8 +144,15 @@ impl Context {
         })
     }
 
-    /// The files to work on: those given, else the configured knowledge base.
+    /// The files to work on: those given, else the configured knowledge base. Standard input
+    /// may be given once: a second read of it would find it empty, a file with no tour.
     pub fn inputs(&self, files: &[PathBuf]) -> Result<Vec<PathBuf>, CommandError> {
+        let stdin_count = files.iter().filter(|f| f.as_os_str() == "-").count();
+        if stdin_count > 1 {
+            return Err(CommandError::Failed(format!(
+                "standard input (`-`) is named {stdin_count} times, but it can be read only once; name it once"
+            )));
+        }
         if !files.is_empty() {
             return Ok(files.to_vec());
         }

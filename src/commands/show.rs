@@ -4,7 +4,7 @@
 use std::io::Write;
 use std::path::PathBuf;
 
-use super::{CommandResult, Context, Exit};
+use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::build::parse_id;
 use crate::model::{Dialect, Location};
@@ -34,8 +34,8 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let source = context.read(&path)?;
     let checked = check(&source, &options);
     let Some(location) = checked.kb.location(args.id) else {
-        eprintln!("ekb: {}", not_found(&checked, args.id));
-        return Ok(Exit::Findings);
+        // Like an id that is no number: the command was asked for what is not there.
+        return Err(CommandError::Failed(not_found(&checked, args.id)));
     };
     let mut stdout = std::io::stdout().lock();
     stdout.write_all(render(&checked, location).as_bytes())?;
@@ -43,9 +43,10 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     Ok(Exit::Clean)
 }
 
-/// `no location 6 in FILE; the nearest ids are 5, 4 and 3`.
+/// `no location 6 in FILE; the nearest ids are 5, 4 and 3` (unescaped: `cli::main` escapes
+/// every error line).
 fn not_found(checked: &Checked<'_>, id: u32) -> String {
-    let file = escape(checked.source.name());
+    let file = checked.source.name();
     let mut ids: Vec<u32> = checked.kb.locations().iter().map(|l| l.id).collect();
     if ids.is_empty() {
         return format!("no location {id} in {file}: it has no locations");

@@ -154,7 +154,6 @@ impl<'a> Builder<'a> {
             rejected: HashMap::new(),
             controls_possible: structure::control_character::possible_in(&text[range.clone()]),
         };
-        crate::huge_pages::advise(&builder.locations);
         for line in syntax::lines_from(&text[..range.end], range.start) {
             let start = line.span.start as usize;
             if start >= share.end(start) {

@@ -102,6 +102,9 @@ pub struct Location<'a> {
     pub gesture_arm: Option<Value<Arm>>,
     /// Which keys have a line for this location, valid or not: bit `1 << Key::order()`.
     pub given: u16,
+    /// Which keys have a line for this location written in the wrong case (which the robot
+    /// ignores, and `key-case` reports): bit `1 << Key::order()`.
+    pub miscased: u16,
 }
 
 impl<'a> Location<'a> {
@@ -117,12 +120,18 @@ impl<'a> Location<'a> {
             gesture_target: None,
             gesture_arm: None,
             given: 0,
+            miscased: 0,
         }
     }
 
     /// Whether the file has a line with this key for this location (even a malformed one).
     pub fn has_line(&self, key: Key) -> bool {
         self.given & (1 << key.order()) != 0
+    }
+
+    /// Whether the file has a line for this location with this key in the wrong case.
+    pub fn has_miscased_line(&self, key: Key) -> bool {
+        self.miscased & (1 << key.order()) != 0
     }
 
     pub fn description(&self) -> Option<Value<&'a str>> {
@@ -163,6 +172,7 @@ impl<'a> Location<'a> {
         self.gesture_target = self.gesture_target.or(later.gesture_target);
         self.gesture_arm = self.gesture_arm.or(later.gesture_arm);
         self.given |= later.given;
+        self.miscased |= later.miscased;
         true
     }
 

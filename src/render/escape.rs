@@ -36,9 +36,43 @@ pub fn escape(text: &str) -> Cow<'_, str> {
     Cow::Owned(out)
 }
 
+/// `text` as [`escape`] writes it, with every space other than the plain one (U+0020) escaped
+/// too: for a key or an id, where such a space looks like a separator and is none.
+pub fn escape_odd_spaces(text: &str) -> Cow<'_, str> {
+    if !text.chars().any(is_odd_space) {
+        return escape(text);
+    }
+    let mut out = String::with_capacity(text.len() + 8);
+    for ch in text.chars() {
+        match ch {
+            '\t' => out.push_str("\\t"),
+            ch if is_unsafe(ch) || is_odd_space(ch) => {
+                out.push_str(&format!("\\u{{{:04X}}}", ch as u32))
+            }
+            ch => out.push(ch),
+        }
+    }
+    Cow::Owned(out)
+}
+
+/// Whitespace that is not a plain space: a tab, a no-break space, an em space, …
+pub fn is_odd_space(ch: char) -> bool {
+    ch.is_whitespace() && ch != ' '
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn odd_spaces_are_escaped_where_they_would_pass_for_plain_ones() {
+        assert_eq!(escape_odd_spaces("key 1"), "key 1");
+        assert_eq!(escape_odd_spaces("key\u{A0}1"), "key\\u{00A0}1");
+        assert_eq!(
+            escape_odd_spaces("a\u{2003}b\tc\u{202E}"),
+            "a\\u{2003}b\\tc\\u{202E}"
+        );
+    }
 
     #[test]
     fn escapes_controls_and_bidi() {

@@ -26,6 +26,15 @@ pub fn read_fixture(name: &str) -> String {
     std::fs::read_to_string(fixture(name)).unwrap()
 }
 
+/// The culture knowledge base of the robot's repository: a different kind of file.
+pub fn culture_knowledge_base() -> Vec<u8> {
+    std::fs::read(
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/fixtures/corpus/upstream-2025-06-cultureKnowledgeBaseInput.dat"),
+    )
+    .unwrap()
+}
+
 /// The seed file of the repository.
 pub fn seed() -> String {
     std::fs::read_to_string(

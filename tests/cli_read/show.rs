@@ -46,13 +46,13 @@ fn current_dialect_fields() {
 }
 
 #[test]
-fn unknown_id_lists_the_nearest() {
+fn unknown_id_is_a_usage_error_that_lists_the_nearest() {
     let out = run(&["show", "7", SEED]);
-    assert_eq!(out.code, 1);
+    assert_eq!(out.code, 2);
     assert_eq!(out.stdout, "");
     assert_eq!(
         out.stderr,
-        "ekb: no location 7 in data/environmentKnowledgeBaseInput.dat; the nearest ids are 5, 4 and 3 (`ekb locations` lists them all)\n"
+        "ekb: error: no location 7 in data/environmentKnowledgeBaseInput.dat; the nearest ids are 5, 4 and 3 (`ekb locations` lists them all)\n"
     );
 }
 

@@ -11,8 +11,9 @@ declare_rule! {
     /// ## Why it matters
     /// The robot's reader fills a missing field with nothing: a missing pose sends the
     /// robot to (0, 0), a missing message is silence at that point of the tour. A field
-    /// whose line has a miscased or misspelled key counts as missing, because that is what
-    /// the robot loads.
+    /// whose line has a misspelled key counts as missing, because that is what the robot
+    /// loads; one whose line has its key in the wrong case is reported once, as `key-case`,
+    /// where the fix is.
     ///
     /// ## Example
     /// ```text
@@ -70,7 +71,8 @@ pub fn check(location: &Location<'_>, context: &LocationContext<'_>, out: &mut D
     });
 }
 
-/// The required keys a location has no line for (a line with a bad value still counts).
+/// The required keys a location has no line for (a line with a bad value still counts, and
+/// so does one with the key in the wrong case: `key-case` reports it).
 fn missing_keys<'l>(location: &'l Location<'_>, pose_key: Key) -> impl Iterator<Item = Key> + 'l {
     let messages = Phase::ALL
         .into_iter()
@@ -78,5 +80,34 @@ fn missing_keys<'l>(location: &'l Location<'_>, pose_key: Key) -> impl Iterator<
     [Key::RobotLocationDescription, pose_key, Key::GestureTarget]
         .into_iter()
         .chain(messages)
-        .filter(|&key| !location.has_line(key))
+        .filter(|&key| !location.has_line(key) && !location.has_miscased_line(key))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::syntax::Span;
+
+    fn complete_but_post_english(text: &str) -> Location<'_> {
+        let mut location = Location::new(text, 4, Span::new(0, 1));
+        // Every key but postGestureMessageEnglish has a line.
+        location.given = !(1 << Key::PostGestureMessageEnglish.order());
+        location
+    }
+
+    fn missing(location: &Location<'_>) -> Vec<Key> {
+        missing_keys(location, Key::RobotLocation).collect()
+    }
+
+    #[test]
+    fn a_field_whose_line_is_miscased_is_not_also_missing() {
+        let text = "postGestureMessageenglish 4 We use it for teaching";
+        let mut location = complete_but_post_english(text);
+        assert_eq!(missing(&location), [Key::PostGestureMessageEnglish]);
+        location.miscased = 1 << Key::PostGestureMessageEnglish.order();
+        assert_eq!(missing(&location), []);
+        // A miscased line of another key excuses nothing.
+        location.miscased = 1 << Key::PostGestureMessageIsiZulu.order();
+        assert_eq!(missing(&location), [Key::PostGestureMessageEnglish]);
+    }
 }

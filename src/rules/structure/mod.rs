@@ -12,5 +12,6 @@ pub mod legacy_key;
 pub mod missing_field;
 pub mod missing_id;
 pub mod mixed_dialect;
+pub mod not_a_knowledge_base;
 pub mod unknown_key;
 pub mod wrong_arity;

@@ -1,5 +1,7 @@
 use crate::diagnostic::Diagnostic;
+use crate::model::build::parse_id;
 use crate::model::Key;
+use crate::render::escape::{escape_odd_spaces, is_odd_space};
 use crate::rules::{consequence, declare_rule, excerpt};
 use crate::syntax::Span;
 
@@ -15,7 +17,9 @@ declare_rule! {
     /// ```text
     /// preGestureMesageEnglish       2 This is the Pepper humanoid robot
     /// ```
-    /// Use `preGestureMessageEnglish`.
+    /// Use `preGestureMessageEnglish`. A key run into its id by a space that is not a plain
+    /// one, such as a no-break space (U+00A0) that a word processor put there, is no key
+    /// either: the message shows the space as `\u{00A0}`.
     pub static UNKNOWN_KEY = {
         name: "unknown-key",
         category: Structure,
@@ -26,9 +30,12 @@ declare_rule! {
 }
 
 pub fn diagnostic(span: Span, key: &str, id: Option<u32>) -> Diagnostic {
+    if let Some(diagnostic) = key_before_odd_space(span, key) {
+        return diagnostic;
+    }
     let ignored = format!(
         "`{}` is not a key of the knowledge base: the robot's reader ignores this line",
-        excerpt(key)
+        escape_odd_spaces(&excerpt(key))
     );
     match nearest(key) {
         Some(near) => Diagnostic::new(
@@ -47,6 +54,38 @@ pub fn diagnostic(span: Span, key: &str, id: Option<u32>) -> Diagnostic {
         )),
     }
     .at_location(id)
+}
+
+/// The finding for a known key followed by a space that the robot's reader does not take
+/// for one (`preGestureMessageEnglish\u{A0}3`): the key and the id are one word to it.
+fn key_before_odd_space(span: Span, written: &str) -> Option<Diagnostic> {
+    let (at, space) = written.char_indices().find(|&(_, ch)| is_odd_space(ch))?;
+    let key = Key::from_name(&written[..at])?;
+    let id = parse_id(&written[at + space.len_utf8()..]).filter(|_| key != Key::TourSpecification);
+    let space = match space {
+        '\u{A0}' => "a no-break space (U+00A0)".to_string(),
+        '\u{202F}' => "a narrow no-break space (U+202F)".to_string(),
+        other => format!("a Unicode space (U+{:04X})", other as u32),
+    };
+    Some(
+        Diagnostic::new(
+            &UNKNOWN_KEY,
+            span,
+            format!(
+                "`{}` is not a key of the knowledge base: {space}, not a plain space, follows \
+                 `{}`, so the robot's reader ignores this line; {}",
+                escape_odd_spaces(&excerpt(written)),
+                key.name(),
+                consequence::lost(key, id)
+            ),
+        )
+        .at_location(id)
+        .with_help(format!(
+            "a plain space or a tab must separate the key from what follows: replace {space} \
+             after `{}` with a plain space",
+            key.name()
+        )),
+    )
 }
 
 /// The known key closest to `key`, if one is close enough to be a likely typo.
@@ -79,5 +118,26 @@ mod tests {
         );
         assert_eq!(nearest("robotLocationPos"), Some(Key::RobotLocationPose));
         assert_eq!(nearest("colour"), None);
+    }
+
+    #[test]
+    fn a_key_run_into_its_id_by_a_no_break_space_is_shown_escaped() {
+        let key = "preGestureMessageEnglish\u{A0}3";
+        let found = diagnostic(Span::new(0, key.len()), key, None);
+        assert_eq!(
+            found.message,
+            "`preGestureMessageEnglish\\u{00A0}3` is not a key of the knowledge base: a no-break \
+             space (U+00A0), not a plain space, follows `preGestureMessageEnglish`, so the \
+             robot's reader ignores this line; location 3 will say nothing before the gesture \
+             in English"
+        );
+        assert_eq!(found.location_id, Some(3));
+        assert!(found
+            .help
+            .unwrap()
+            .contains("replace a no-break space (U+00A0) after `preGestureMessageEnglish`"));
+        // Any other key with an odd space in it is shown escaped too.
+        let found = diagnostic(Span::new(0, 10), "colour\u{2003}1", None);
+        assert!(found.message.starts_with("`colour\\u{2003}1` is not a key"));
     }
 }
