@@ -110,6 +110,25 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
     // The source keeps the first invalid range of a bounded number of lines only.
     let unrecorded = source.invalid_utf8_lines() - source.invalid_utf8().len();
     out.count(&structure::invalid_utf8::INVALID_UTF8, unrecorded);
+    if let Some(foreign) = structure::not_a_knowledge_base::check(source.text()) {
+        // One finding says it all: each of its lines would be an `unknown-key`.
+        out.push(foreign);
+        let Diagnostics {
+            kept: mut diagnostics,
+            counts,
+        } = out;
+        sort_by_position(&mut diagnostics);
+        return Checked {
+            source,
+            kb: KnowledgeBase::default(),
+            reader: options
+                .reader
+                .unwrap_or(Reader::default_for(options.dialect)),
+            omitted: omitted_notes(&diagnostics, &counts),
+            diagnostics,
+            counts,
+        };
+    }
     let kb = build(source.text(), options, &mut out);
     let reader = options
         .reader
@@ -370,7 +389,8 @@ mod tests {
     #[test]
     fn findings_beyond_the_cap_are_summed_up_in_one_note_per_rule() {
         let lines = MAX_SHOWN_PER_RULE + 5;
-        let text = "bogusKey 1 x\n".repeat(lines);
+        // One known key: a file of none is no knowledge base at all (one finding).
+        let text = "bogusKey 1 x\n".repeat(lines) + "robotLocationDescription 1 a\n";
         let source = SourceFile::from_bytes("t", text.into_bytes());
         let checked = check(&source, &Options::default());
         let unknown = |d: &&Diagnostic| d.rule.name == "unknown-key";
@@ -387,7 +407,8 @@ mod tests {
         );
         // The note stands where the first finding not shown is: line 1001.
         assert_eq!(note.span.start as usize, MAX_SHOWN_PER_RULE * 13);
-        assert_eq!(checked.summary().errors, lines + 1);
+        // And tour-missing, and missing-field of location 1.
+        assert_eq!(checked.summary().errors, lines + 2);
         // Other rules (tour-missing, one finding) are untouched.
         assert!(checked.shown().any(|d| d.rule.name == "tour-missing"));
     }

@@ -8,6 +8,7 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 
 use crate::model::Dialect;
+use crate::reader::Reader;
 
 /// Where the configuration is looked for when neither `--config` nor `EKB_CONFIG` is given.
 pub const DEFAULT_PATH: &str = "config/environmentKnowledgeBaseConfiguration.ini";
@@ -17,9 +18,6 @@ pub const ENV_VAR: &str = "EKB_CONFIG";
 
 /// The keys `ekb` reads; any other is reported as a warning, with the nearest of these.
 pub const KEYS: [&str; 4] = ["knowledgeBase", "verboseMode", "dialect", "reader"];
-
-/// The versions of the robot's reader (SPEC §2.1), the values of `reader`.
-pub const READERS: [&str; 5] = ["d5.4.2", "2025-06", "2026-02", "2026-03", "2026-04"];
 
 /// A configuration as read.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
@@ -32,8 +30,9 @@ pub struct Config {
     pub verbose: bool,
     /// `dialect`: `seed` or `current` pins one; absent or `auto` detects it per file.
     pub dialect: Option<Dialect>,
-    /// `reader`: the version of the robot's reader to check against, one of [`READERS`].
-    pub reader: Option<String>,
+    /// `reader`: the version of the robot's reader to check against (below `--reader` and
+    /// `ekb.toml`).
+    pub reader: Option<Reader>,
     /// What in the file was ignored (unknown keys), one line each, to tell the user.
     pub warnings: Vec<String>,
 }
@@ -202,18 +201,14 @@ fn parse_bool(value: &str) -> Result<bool, String> {
     }
 }
 
-fn parse_reader(value: &str) -> Result<String, String> {
-    let value = value.trim();
-    READERS
-        .into_iter()
-        .find(|reader| reader.eq_ignore_ascii_case(value))
-        .map(str::to_string)
-        .ok_or_else(|| {
-            format!(
-                "reader must be one of {}, not `{value}`",
-                READERS.join(", ")
-            )
-        })
+fn parse_reader(value: &str) -> Result<Reader, String> {
+    Reader::from_name(&value.to_ascii_lowercase()).ok_or_else(|| {
+        format!(
+            "reader must be one of {}, not `{}`",
+            crate::settings::reader_names(),
+            value.trim()
+        )
+    })
 }
 
 fn parse_dialect(value: &str) -> Result<Option<Dialect>, String> {
@@ -302,9 +297,9 @@ mod tests {
     #[test]
     fn reader_is_one_of_the_versions() {
         let config = Config::parse("reader = 2026-03\n").unwrap();
-        assert_eq!(config.reader.as_deref(), Some("2026-03"));
+        assert_eq!(config.reader, Some(Reader::V2026_03));
         let config = Config::parse("reader   D5.4.2\n").unwrap();
-        assert_eq!(config.reader.as_deref(), Some("d5.4.2"));
+        assert_eq!(config.reader, Some(Reader::D542));
         assert_eq!(
             Config::parse("reader = 2024-01").unwrap_err(),
             "reader must be one of d5.4.2, 2025-06, 2026-02, 2026-03, 2026-04, not `2024-01`"

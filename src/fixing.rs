@@ -240,7 +240,8 @@ mod tests {
         let migrate = |text: &str, dialect| {
             let options = Options {
                 dialect: Some(dialect),
-                verbose: false,
+                reader: Some(crate::reader::Reader::default_for(Some(dialect))),
+                ..Options::default()
             };
             fix(&SourceFile::from_bytes("t", text.into()), &options).text
         };

@@ -431,7 +431,8 @@ fn human_is_the_default_and_says_what_to_change() {
         "fix available: rename to `postGestureMessageEnglish` (run `ekb fix`)",
         "warning[repeated-word]",
         "error[missing-field]",
-        "help: add a line `postGestureMessageEnglish 4 …`",
+        // One typo, and the two findings agree on its one fix.
+        "help: the file has a line of `postGestureMessageEnglish` with the key in the wrong",
     ] {
         assert!(out.contains(expected), "missing {expected:?} in\n{out}");
     }

@@ -11,6 +11,7 @@ use super::{CommandError, CommandResult, Context, Exit};
 use crate::canonical::Document;
 use crate::check::check;
 use crate::diagnostic::{Severity, Summary};
+use crate::model::build::Options;
 use crate::model::export::ExportedKnowledgeBase;
 use crate::render::escape::escape;
 use crate::render::{concise, FileReport, RenderOptions};
@@ -39,22 +40,27 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let document = Document::from_export(&kb)
         .map_err(|error| CommandError::Failed(format!("{name}: {}", escape(&error.to_string()))))?;
     let text = document.render();
-    let name = match &args.output {
+    let (name, options) = match &args.output {
         Some(out) if out != Path::new("-") => {
             write_atomically(out, text.as_bytes())?;
-            out.display().to_string()
+            (out.display().to_string(), context.read_options(out)?)
         }
         _ => {
             std::io::stdout().lock().write_all(text.as_bytes())?;
-            "<stdout>".to_string()
+            let options = context.read_options(Path::new("-"))?;
+            ("<stdout>".to_string(), options)
         }
     };
-    report_errors(&SourceFile::from_bytes(name, text.into_bytes()), context)
+    report_errors(
+        &SourceFile::from_bytes(name, text.into_bytes()),
+        &options,
+        context,
+    )
 }
 
 /// Tells, on standard error, the errors of the knowledge base written: exit 1 if it has any.
-fn report_errors(written: &SourceFile, context: &Context) -> CommandResult {
-    let mut checked = check(written, &context.read_options()?);
+fn report_errors(written: &SourceFile, options: &Options, context: &Context) -> CommandResult {
+    let mut checked = check(written, options);
     let errors = checked.summary().errors;
     if errors == 0 {
         return Ok(Exit::Clean);

@@ -10,6 +10,7 @@ use clap_mangen::Man;
 use super::{CommandResult, Context, Exit};
 use crate::cli::Cli;
 use crate::config;
+use crate::reader::Reader;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {}
@@ -125,9 +126,9 @@ When set and not empty, no colour, unless \fB\-\-color always\fR is given.
 }
 
 fn files() -> String {
-    let readers: Vec<String> = config::READERS
+    let readers: Vec<String> = Reader::ALL
         .iter()
-        .map(|reader| format!("\\fB{}\\fR", reader.replace('-', "\\-")))
+        .map(|reader| format!("\\fB{}\\fR", reader.name().replace('-', "\\-")))
         .collect();
     format!(
         r#".SH FILES

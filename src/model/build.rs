@@ -114,6 +114,10 @@ struct Builder<'a> {
     /// Lines whose value could not be loaded, by id and key slot: the model holds no span
     /// for them, yet a later duplicate must point back at them.
     rejected: HashMap<(u32, usize), Span>,
+    /// The keys written in the wrong case, by location id, as [`Location::miscased`]: set on
+    /// the locations when the whole file is read, since such a line may come before any
+    /// other of its location.
+    miscased: IdMap<u16>,
 }
 
 impl<'a> Builder<'a> {
@@ -152,6 +156,7 @@ impl<'a> Builder<'a> {
             crlf_endings: Vec::new(),
             facts: LineFacts::default(),
             rejected: HashMap::new(),
+            miscased: IdMap::default(),
             controls_possible: structure::control_character::possible_in(&text[range.clone()]),
         };
         for line in syntax::lines_from(&text[..range.end], range.start) {
@@ -189,6 +194,9 @@ impl<'a> Builder<'a> {
         }
         self.crlf_endings.extend(later.crlf_endings);
         self.facts.append(later.facts);
+        for (id, keys) in later.miscased {
+            *self.miscased.entry(id).or_default() |= keys;
+        }
         true
     }
 
@@ -290,7 +298,7 @@ impl<'a> Builder<'a> {
                 // Form feeds and the like between blanks: a blank line to the robot too.
                 return;
             }
-            if key.start > line.span.start {
+            if line.indent.text(self.text).ends_with(syntax::is_blank_char) {
                 self.facts.indented_lines.push(line.span);
             }
             if self.controls_possible {
@@ -305,9 +313,14 @@ impl<'a> Builder<'a> {
         let Some(key) = Key::from_name(key_text) else {
             let id = leading_id(args.text(self.text));
             match Key::from_name_ignoring_case(key_text) {
-                Some(key) => out.push_with(&structure::key_case::KEY_CASE, || {
-                    structure::key_case::diagnostic(key_span, key_text, key, id)
-                }),
+                Some(key) => {
+                    if let Some(id) = id.filter(|_| key != Key::TourSpecification) {
+                        *self.miscased.entry(id).or_default() |= 1 << key.order();
+                    }
+                    out.push_with(&structure::key_case::KEY_CASE, || {
+                        structure::key_case::diagnostic(key_span, key_text, key, id)
+                    })
+                }
                 // Suggesting the nearest key is slow (an edit distance to every key), and a
                 // binary file has millions of unknown keys: made only if kept.
                 None => out.push_with(&structure::unknown_key::UNKNOWN_KEY, || {
@@ -540,6 +553,11 @@ impl<'a> Builder<'a> {
         };
         let mut runs = self.runs;
         runs.push(self.locations);
+        if !self.miscased.is_empty() {
+            for location in runs.iter_mut().flatten() {
+                location.miscased = self.miscased.get(&location.id).copied().unwrap_or(0);
+            }
+        }
         let mut kb = KnowledgeBase::from_runs(dialect, runs, self.tour);
         kb.lines = self.facts;
         kb

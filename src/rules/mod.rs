@@ -131,6 +131,7 @@ pub static ALL: &[&Rule] = &[
     &compat::compat_reader_crash::COMPAT_READER_CRASH,
     &compat::compat_slow_load::COMPAT_SLOW_LOAD,
     &compat::compat_ignored_key::COMPAT_IGNORED_KEY,
+    &structure::not_a_knowledge_base::NOT_AN_ENVIRONMENT_KNOWLEDGE_BASE,
 ];
 
 /// `text` from the file, cut to a length that fits in a one-line message.

@@ -23,6 +23,11 @@ pub fn is_blank(byte: u8) -> bool {
     byte == b' ' || byte == b'\t'
 }
 
+/// [`is_blank`], for a `char`.
+pub fn is_blank_char(c: char) -> bool {
+    c == ' ' || c == '\t'
+}
+
 /// Whether `bytes` are all white space to C's `isspace` (space, tab, newline, vertical tab,
 /// form feed, carriage return): such a line is blank to the robot's reader.
 pub fn is_c_space_only(bytes: &[u8]) -> bool {

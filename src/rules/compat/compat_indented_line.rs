@@ -5,7 +5,7 @@ use crate::model::{Key, KnowledgeBase};
 use crate::reader::line::{LineRead, LoadedValue};
 use crate::reader::{self, Reader};
 use crate::rules::{declare_rule, excerpt};
-use crate::syntax::{self, Body, Span};
+use crate::syntax::{self, Body, Span, BOM};
 
 declare_rule! {
     /// ## What it does
@@ -53,7 +53,13 @@ pub fn check(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagn
         let id = (key != Key::TourSpecification)
             .then(|| leading_id(args.text(text)))
             .flatten();
-        let indentation = Span::new(span.start as usize, key_span.start as usize);
+        // A byte-order mark before the blanks is `compat-bom`'s to remove.
+        let bom = if text[span.range()].starts_with(BOM) {
+            BOM.len()
+        } else {
+            0
+        };
+        let indentation = Span::new(span.start as usize + bom, key_span.start as usize);
         out.push_with(&COMPAT_INDENTED_LINE, || {
             Diagnostic::new(
                 &COMPAT_INDENTED_LINE,

@@ -48,7 +48,7 @@ pub fn check(text: &str, reader: Reader, out: &mut Diagnostics) {
             let mut shortened = value.chars();
             shortened.next_back();
             format!(
-                "the file does not end with a newline: reader {reader} takes the last character for one and drops it, loading `…{}` instead of `…{}`",
+                "the file does not end with a newline: the robot's reader ({reader}) takes the last character for one and drops it, loading `…{}` instead of `…{}`",
                 tail(shortened.as_str()),
                 tail(value)
             )

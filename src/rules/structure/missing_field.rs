@@ -12,8 +12,8 @@ declare_rule! {
     /// The robot's reader fills a missing field with nothing: a missing pose sends the
     /// robot to (0, 0), a missing message is silence at that point of the tour. A field
     /// whose line has a misspelled key counts as missing, because that is what the robot
-    /// loads; one whose line has its key in the wrong case is reported once, as `key-case`,
-    /// where the fix is.
+    /// loads; when its key is only in the wrong case, the help points at that line's
+    /// `key-case` finding, where the fix is.
     ///
     /// ## Example
     /// ```text
@@ -58,21 +58,35 @@ pub fn check(location: &Location<'_>, context: &LocationContext<'_>, out: &mut D
                 consequence::lost(first, Some(id))
             ),
         };
-        let lines: Vec<String> = missing
+        let (miscased, absent): (Vec<Key>, Vec<Key>) = missing
             .iter()
-            .map(|key| format!("`{} {id} …`", key.name()))
-            .collect();
-        Diagnostic::new(&MISSING_FIELD, location.first_line, message)
-            .at_location(Some(id))
-            .with_help(match lines.len() {
+            .partition(|&&key| location.has_miscased_line(key));
+        let mut help = Vec::new();
+        if !absent.is_empty() {
+            let lines: Vec<String> = absent
+                .iter()
+                .map(|key| format!("`{} {id} …`", key.name()))
+                .collect();
+            help.push(match lines.len() {
                 1 => format!("add a line {}", lines[0]),
                 _ => format!("add the lines {}", lines.join(", ")),
-            })
+            });
+        }
+        if !miscased.is_empty() {
+            let keys: Vec<String> = miscased.iter().map(|key| format!("`{}`", key.name())).collect();
+            help.push(format!(
+                "the file has a line of {} with the key in the wrong case: correct the case there (see its key-case finding; `ekb fix` does it)",
+                keys.join(", ")
+            ));
+        }
+        Diagnostic::new(&MISSING_FIELD, location.first_line, message)
+            .at_location(Some(id))
+            .with_help(help.join("; "))
     });
 }
 
-/// The required keys a location has no line for (a line with a bad value still counts, and
-/// so does one with the key in the wrong case: `key-case` reports it).
+/// The required keys a location has no line for that the robot reads (a line with a bad
+/// value still counts; one with the key in the wrong case does not).
 fn missing_keys<'l>(location: &'l Location<'_>, pose_key: Key) -> impl Iterator<Item = Key> + 'l {
     let messages = Phase::ALL
         .into_iter()
@@ -80,7 +94,7 @@ fn missing_keys<'l>(location: &'l Location<'_>, pose_key: Key) -> impl Iterator<
     [Key::RobotLocationDescription, pose_key, Key::GestureTarget]
         .into_iter()
         .chain(messages)
-        .filter(|&key| !location.has_line(key) && !location.has_miscased_line(key))
+        .filter(|&key| !location.has_line(key))
 }
 
 #[cfg(test)]
@@ -100,14 +114,26 @@ mod tests {
     }
 
     #[test]
-    fn a_field_whose_line_is_miscased_is_not_also_missing() {
+    fn a_field_whose_line_is_miscased_is_missing_and_points_at_the_fix() {
         let text = "postGestureMessageenglish 4 We use it for teaching";
         let mut location = complete_but_post_english(text);
-        assert_eq!(missing(&location), [Key::PostGestureMessageEnglish]);
         location.miscased = 1 << Key::PostGestureMessageEnglish.order();
-        assert_eq!(missing(&location), []);
+        assert_eq!(missing(&location), [Key::PostGestureMessageEnglish]);
+        let context = LocationContext {
+            source: text,
+            pose_key: Key::RobotLocation,
+            visited: None,
+            reader: crate::reader::Reader::D542,
+        };
+        let mut out = Diagnostics::default();
+        check(&location, &context, &mut out);
+        let help = out[0].help.as_deref().unwrap();
+        assert!(!help.contains("add a line"), "{help}");
+        assert!(help.contains("wrong case"), "{help}");
         // A miscased line of another key excuses nothing.
         location.miscased = 1 << Key::PostGestureMessageIsiZulu.order();
-        assert_eq!(missing(&location), [Key::PostGestureMessageEnglish]);
+        let mut out = Diagnostics::default();
+        check(&location, &context, &mut out);
+        assert!(out[0].help.as_deref().unwrap().starts_with("add a line"));
     }
 }
