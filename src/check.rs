@@ -85,6 +85,25 @@ impl Checked<'_> {
         self
     }
 
+    /// The findings that say the reader crashes on the file (a tree too deep, two split
+    /// culturalKnowledge words in one location).
+    pub fn reader_crashes(&self) -> Vec<Diagnostic> {
+        use rules::compat::{compat_cultural_word_split as split, compat_reader_crash as crash};
+        let crashes_at = |id: Option<u32>| {
+            id.and_then(|id| self.kb.location(id))
+                .is_some_and(split::crashes)
+        };
+        self.diagnostics
+            .iter()
+            .filter(|d| {
+                std::ptr::eq(d.rule, &crash::COMPAT_READER_CRASH)
+                    || (std::ptr::eq(d.rule, &split::COMPAT_CULTURAL_WORD_SPLIT)
+                        && crashes_at(d.location_id))
+            })
+            .cloned()
+            .collect()
+    }
+
     /// The findings to show, in order: the first [`MAX_SHOWN_PER_RULE`] of each rule, and
     /// in place of the others the rule's note from [`Checked::omitted`].
     pub fn shown(&self) -> impl Iterator<Item = &Diagnostic> {

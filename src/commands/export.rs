@@ -4,8 +4,9 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use super::{CommandError, CommandResult, Context, Exit};
-use crate::check::check;
+use crate::check::{check, Checked};
 use crate::model::export::ExportedKnowledgeBase;
+use crate::reader::{self, export::LoadedExport};
 use crate::render::safe_json as json;
 use crate::render::{self, escape::escape, Format, RenderOptions};
 
@@ -28,8 +29,13 @@ pub struct Args {
     pub allow_errors: bool,
 
     /// Print the JSON Schema of the export instead
-    #[arg(long)]
+    #[arg(long, conflicts_with = "as_loaded")]
     pub schema: bool,
+
+    /// Export what the chosen reader loads (`--reader`), field by field, instead of what the
+    /// file says; exit 1 if that reader would crash on the file
+    #[arg(long)]
+    pub as_loaded: bool,
 }
 
 /// `ekb export --format`.
@@ -49,36 +55,63 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let options = context.read_options(&path)?;
     let source = context.read(&path)?;
     let checked = check(&source, &options);
+    if args.as_loaded {
+        return export_as_loaded(args, context, checked);
+    }
     if checked.has_errors() && !args.allow_errors {
         let summary = checked.summary();
-        // Only the errors stop the export; the warnings would bury them.
-        let errors = checked.errors_only();
-        let mut stderr = std::io::stderr().lock();
-        let render_options = RenderOptions {
-            color: context.color_stderr(),
-            quiet: true,
-        };
-        let files = std::slice::from_ref(&errors);
-        render::render(
-            Format::Concise,
-            files,
-            &summary,
-            &mut stderr,
-            &render_options,
-        )?;
-        writeln!(
-            stderr,
+        let why = format!(
             "ekb: not exported: {} has {} (fix them, or give --allow-errors to export what the robot would load)",
             escape(source.name()),
             plural(summary.errors, "error")
-        )?;
-        return Ok(Exit::Findings);
+        );
+        // Only the errors stop the export; the warnings would bury them.
+        return report_to_stderr(checked.errors_only(), &why, context);
     }
     write_output(
         args.output.as_deref(),
         &ExportedKnowledgeBase::from(&checked.kb),
     )?;
     Ok(Exit::Clean)
+}
+
+/// What the reader loads, errors or not: that is the point. A reader that crashes loads
+/// nothing, and its crash is the finding to show.
+fn export_as_loaded(args: &Args, context: &Context, mut checked: Checked<'_>) -> CommandResult {
+    let crashes = checked.reader_crashes();
+    if !crashes.is_empty() {
+        let why = format!(
+            "ekb: not exported: reader {} crashes on {}",
+            checked.reader,
+            escape(checked.source.name())
+        );
+        checked.diagnostics = crashes;
+        checked.omitted.clear();
+        return report_to_stderr(checked, &why, context);
+    }
+    let text = checked.source.text().as_bytes();
+    let loaded = reader::load(text, checked.reader);
+    write_output(args.output.as_deref(), &LoadedExport::new(&loaded, text))?;
+    Ok(Exit::Clean)
+}
+
+/// Shows `checked`'s findings on standard error, concisely, then `why`: exit 1.
+fn report_to_stderr(checked: Checked<'_>, why: &str, context: &Context) -> CommandResult {
+    let summary = checked.summary();
+    let mut stderr = std::io::stderr().lock();
+    let render_options = RenderOptions {
+        color: context.color_stderr(),
+        quiet: true,
+    };
+    render::render(
+        Format::Concise,
+        std::slice::from_ref(&checked),
+        &summary,
+        &mut stderr,
+        &render_options,
+    )?;
+    writeln!(stderr, "{why}")?;
+    Ok(Exit::Findings)
 }
 
 fn plural(count: usize, word: &str) -> String {

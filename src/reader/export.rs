@@ -1,7 +1,8 @@
 //! `ekb export --as-loaded`: what a version of the reader loads, in the JSON shape of SPEC
 //! §5. Each field holds what the robot holds: a field no line set is the robot's empty text
-//! or 0; `gestureArm` is `null` where the version does not read it; a value the reader took
-//! from past the end of its line (undefined), or a number JSON cannot hold, is `null`.
+//! or 0; `gestureArm` and `culturalKnowledge` are `null` where the version does not read
+//! them; a value the reader took from past the end of its line (undefined), or a number
+//! JSON cannot hold, is `null`.
 
 use serde::Serialize;
 
@@ -110,6 +111,7 @@ impl LoadedLocationExport {
             pre_gesture_message: messages(Phase::Pre),
             post_gesture_message: messages(Phase::Post),
             cultural_knowledge: match value(Key::CulturalKnowledge) {
+                _ if !reader.reads(Key::CulturalKnowledge) => None,
                 None => Some(Vec::new()),
                 Some(LoadedValue::Words(words)) => Some(
                     words

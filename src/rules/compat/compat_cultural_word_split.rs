@@ -34,6 +34,23 @@ declare_rule! {
 /// The reader's buffer of culturalKnowledge words.
 const WORD_BUFFER: usize = 2;
 
+/// Two words that the reader splits overflow its buffer and crash it (SPEC §2.12).
+const CRASHING_SPLIT_WORDS: usize = 2;
+
+/// How many of the words the reader splits in two or more.
+fn split_words(words: &str) -> usize {
+    syntax::tokens(words, 0)
+        .filter(|(_, word)| word_pieces(word).len() > 1)
+        .count()
+}
+
+/// Whether the reader crashes on `location`'s culturalKnowledge words.
+pub fn crashes(location: &Location<'_>) -> bool {
+    location
+        .cultural_knowledge()
+        .is_some_and(|words| split_words(words.value) >= CRASHING_SPLIT_WORDS)
+}
+
 /// Checks the culturalKnowledge words of `location`, if `reader` reads them.
 pub fn check(location: &Location<'_>, reader: Reader, out: &mut Diagnostics) {
     let Some(words) = location
@@ -51,17 +68,14 @@ pub fn check(location: &Location<'_>, reader: Reader, out: &mut Diagnostics) {
     }
     let tokens: Vec<_> = syntax::tokens(words.value, words.span.start as usize).collect();
     let loaded: usize = tokens.iter().map(|(_, word)| word_pieces(word).len()).sum();
-    let split = tokens
-        .iter()
-        .filter(|(_, word)| word_pieces(word).len() > 1)
-        .count();
+    let split = split_words(words.value);
     for (index, (span, word)) in tokens.iter().enumerate() {
         let pieces = word_pieces(word);
         // A first word that only loses leading symbols is `compat-leading-symbol`'s.
         if pieces == [*word] || (index == 0 && pieces.len() == 1) {
             continue;
         }
-        let consequence = if split >= 2 {
+        let consequence = if split >= CRASHING_SPLIT_WORDS {
             " Two such words overflow its buffer of two words: the reader crashes while the robot starts.".to_string()
         } else if loaded > WORD_BUFFER {
             format!(

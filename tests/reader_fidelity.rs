@@ -1,0 +1,323 @@
+//! The promise of `ekb check --reader V`: wherever version V of the robot's reader loads
+//! something other than what the file says, the check reports an error (trailing blanks
+//! kept in a text excepted: a warning). The reader layer's simulation of each version
+//! (`ekb::reader::load`, the view of `export --as-loaded`) is the oracle; the written model
+//! is what `ekb` reads from the file.
+
+use ekb::model::build::Options;
+use ekb::model::{Key, KnowledgeBase, Language, Phase};
+use ekb::reader::line::LoadedValue;
+use ekb::reader::{self, Loaded, Reader};
+use ekb::source::LineIndex;
+use ekb::{Severity, SourceFile};
+use proptest::prelude::*;
+
+/// A place where the robot's view and the file differ: what, and the offsets of the lines
+/// involved (the line the file's value is on, the line the robot took its value from).
+struct Difference {
+    what: String,
+    at: Vec<u32>,
+}
+
+/// Every place where the robot's view and the file differ.
+fn differences(kb: &KnowledgeBase<'_>, loaded: &Loaded, text: &str) -> Vec<Difference> {
+    let reader = loaded.reader;
+    let mut found = Vec::new();
+    let differ = |what: String, at: Vec<u32>| Difference { what, at };
+    for robot in loaded.locations.values() {
+        let written = u32::try_from(robot.id).ok().and_then(|id| kb.location(id));
+        if written.is_none() {
+            let lines = Key::ALL
+                .iter()
+                .filter_map(|&key| robot.field(key))
+                .map(|field| field.line.start)
+                .collect();
+            found.push(differ(
+                format!("location {} only in the robot's view", robot.id),
+                lines,
+            ));
+        }
+    }
+    let loaded_text = |value: &LoadedValue| match value {
+        LoadedValue::Text(span) => Some(&text.as_bytes()[span.range()]),
+        _ => None,
+    };
+    for location in kb.locations() {
+        let Some(robot) = loaded.locations.get(&(location.id as i32)) else {
+            found.push(differ(
+                format!("location {} not in the robot's view", location.id),
+                vec![location.first_line.start],
+            ));
+            continue;
+        };
+        let robot_line = |key: Key| robot.field(key).map(|field| field.line.start);
+        let lines = |written: Option<u32>, key: Key| -> Vec<u32> {
+            written.into_iter().chain(robot_line(key)).collect()
+        };
+        let mut texts: Vec<Key> = Phase::ALL
+            .into_iter()
+            .flat_map(|phase| Language::ALL.map(|language| Key::for_message(phase, language)))
+            .collect();
+        texts.push(Key::RobotLocationDescription);
+        for key in texts {
+            let written = location.text_value(key);
+            let held = robot
+                .field(key)
+                .map(|field| loaded_text(&field.value).map(String::from_utf8_lossy));
+            let same = match (written, &held) {
+                (None, None) => true,
+                (Some(written), Some(Some(held))) => written.value == held,
+                _ => false,
+            };
+            if !same {
+                found.push(differ(
+                    format!(
+                        "{} of {}: {:?} vs {held:?}",
+                        key.name(),
+                        location.id,
+                        written.map(|v| v.value)
+                    ),
+                    lines(written.map(|v| v.span.start), key),
+                ));
+            }
+        }
+        let numbers = |key: Key| robot.field(key).map(|field| field.value.clone());
+        // The key of the line the pose was read from (a later line of the other pose key
+        // may have been rejected).
+        let pose_line_key = |at: u32| {
+            let line_start = text[..at as usize].rfind('\n').map_or(0, |i| i + 1);
+            text[line_start..].split_whitespace().next().unwrap_or("")
+        };
+        let written_pose = location
+            .pose
+            .filter(|pose| pose_line_key(pose.span.start) == reader.pose_key().name())
+            .map(|pose| {
+                (
+                    [pose.value.x, pose.value.y, pose.value.theta],
+                    pose.span.start,
+                )
+            });
+        let written_target = location.gesture_target.map(|target| {
+            (
+                [target.value.x, target.value.y, target.value.z],
+                target.span.start,
+            )
+        });
+        for (key, written) in [
+            (reader.pose_key(), written_pose),
+            (Key::GestureTarget, written_target),
+        ] {
+            let value = written.map(|(numbers, _)| LoadedValue::Numbers(numbers.map(|n| n as f32)));
+            if value != numbers(key) {
+                let mut at = lines(written.map(|(_, at)| at), key);
+                // A pose the robot does not read: the line with the other pose key.
+                at.extend(location.pose.map(|pose| pose.span.start));
+                found.push(differ(
+                    format!(
+                        "{} of {}: {value:?} vs {:?}",
+                        key.name(),
+                        location.id,
+                        numbers(key)
+                    ),
+                    at,
+                ));
+            }
+        }
+        if reader.reads(Key::GestureArm) {
+            let written = location.gesture_arm;
+            let held = robot.field(Key::GestureArm).map(|f| loaded_text(&f.value));
+            if held != written.map(|arm| Some(arm.value.name().as_bytes())) {
+                found.push(differ(
+                    format!("gestureArm of {}: {held:?}", location.id),
+                    lines(written.map(|v| v.span.start), Key::GestureArm),
+                ));
+            }
+        }
+        if reader.reads(Key::CulturalKnowledge) {
+            let written_value = location.cultural_knowledge();
+            let written: Option<Vec<&str>> =
+                written_value.map(|_| location.cultural_words().collect());
+            let held: Option<Vec<&str>> =
+                robot
+                    .field(Key::CulturalKnowledge)
+                    .map(|field| match &field.value {
+                        LoadedValue::Words(words) => {
+                            words.iter().map(|span| &text[span.range()]).collect()
+                        }
+                        _ => vec!["<undefined>"],
+                    });
+            if written != held {
+                found.push(differ(
+                    format!(
+                        "culturalKnowledge of {}: {written:?} vs {held:?}",
+                        location.id
+                    ),
+                    lines(written_value.map(|v| v.span.start), Key::CulturalKnowledge),
+                ));
+            }
+        }
+    }
+    let written_tour = kb.tour.as_ref().map(|tour| {
+        let stops: Vec<Option<i32>> = tour
+            .stops
+            .iter()
+            .map(|stop| Some(stop.value as i32))
+            .collect();
+        stops
+    });
+    let loaded_tour = loaded.tour.as_ref().map(|tour| tour.stops.clone());
+    if written_tour != loaded_tour {
+        let at = kb
+            .tour
+            .iter()
+            .map(|tour| tour.span.start)
+            .chain(loaded.tour.iter().map(|tour| tour.line.start))
+            .collect();
+        found.push(differ(
+            format!("tour {written_tour:?} vs {loaded_tour:?}"),
+            at,
+        ));
+    }
+    found
+}
+
+/// Asserts the promise on `text` for every version of the reader: where the robot's view
+/// differs, an error on one of the lines involved (or, for blanks kept at the end of a
+/// text, a warning there).
+fn assert_differences_are_reported(text: &str) {
+    let source = SourceFile::from_bytes("any", text.as_bytes().to_vec());
+    let index = LineIndex::new(source.text());
+    for version in Reader::ALL {
+        let options = Options {
+            reader: Some(version),
+            ..Options::default()
+        };
+        let checked = ekb::check(&source, &options);
+        let loaded = reader::load(source.text().as_bytes(), version);
+        for difference in differences(&checked.kb, &loaded, source.text()) {
+            let lines: Vec<u32> = difference.at.iter().map(|&at| index.line(at)).collect();
+            let reported = checked.diagnostics.iter().any(|d| {
+                let on_a_line = lines.contains(&index.line(d.span.start))
+                    || d.labels
+                        .iter()
+                        .any(|label| lines.contains(&index.line(label.span.start)));
+                let counts =
+                    d.severity() == Severity::Error || d.rule.name == "trailing-whitespace";
+                // Rules that report a file-wide cause once (the first CRLF ending, say).
+                let file_wide = matches!(d.rule.name, "compat-crlf" | "compat-line-too-long");
+                counts && (on_a_line || file_wide)
+            });
+            assert!(
+                reported,
+                "reader {version} loads something else ({}, lines {lines:?}) but check reports no error there in {text:?}:\n{:?}",
+                difference.what,
+                checked
+                    .diagnostics
+                    .iter()
+                    .map(|d| (d.rule.name, index.line(d.span.start)))
+                    .collect::<Vec<_>>()
+            );
+        }
+    }
+}
+
+/// Lines for the property test; `#` stands for an id.
+const LINES: &[&str] = &[
+    "robotLocationDescription # Hall",
+    "robotLocationDescription # \"Quoted\"",
+    "robotLocationDescription # Ùmuntu",
+    "robotLocationDescription # Roomba  ",
+    "robotLocation # 1 2 90",
+    "robotLocationPose # -1.5 2 -90",
+    "robotLocationPose # +1.5 2 90",
+    " robotLocationPose # 1.0 2.0 3.0",
+    "gestureTarget # 1 1 1",
+    "gestureTarget # .5 1 1",
+    "gestureTarget # 8,1 2 3",
+    "gestureArm # left",
+    "gestureArm # right ",
+    "culturalKnowledge # DeicticShape Bow",
+    "culturalKnowledge # Deictic_Shape",
+    "culturalKnowledge # Bow's Deictic-Shape",
+    "preGestureMessageEnglish # Hello the lab",
+    "\tpreGestureMessageIsiZulu # Sawubona",
+    "postGestureMessageKinyarwanda # Murakaza",
+    "postGestureMessageenglish # miscased",
+    "postGestureMessageEnglish\u{a0}# no-break space",
+    "bogus # 1",
+    "tourSpecification 2 # 1",
+    "tourSpecification 3 #, 1, 2",
+    "tourSpecification 3 # 1",
+    "  tourSpecification 1 #",
+    "# a comment",
+    "",
+    "\u{c}",
+    "robotLocationDescription +# plus id",
+    "robotLocationDescription # ",
+    "robotLocationDescription #a letters after the id",
+    "robotLocationDescription #.5 a point after the id",
+    "preGestureMessageEnglish\t#\tTabs between",
+    "robotLocationPose # 1e5 2 3",
+    "robotLocationPose # 1 2",
+    "robotLocationPose # 1 2 3 4",
+    "gestureTarget # nan 1 1",
+    "gestureTarget #",
+    "gestureArm # up",
+    "tourSpecification 0",
+    "tourSpecification x # 1",
+    "tourSpecification 2 # x",
+    "tourSpecification -1 #",
+    "culturalKnowledge # _Leading Trailing_",
+    "culturalKnowledge # A B C",
+    "robotLocationDescription 0 zero",
+    "robotLocationDescription -# minus id",
+    "robotLocationDescription 2147483648 overflow",
+];
+
+/// A message long enough to cross a line buffer (200, 300 or 600 bytes).
+fn long_line(id: u32, length: usize) -> String {
+    let mut line = format!("preGestureMessageEnglish {id} ");
+    while line.len() < length {
+        line.push_str("word ");
+    }
+    line.truncate(length);
+    line
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+    #[test]
+    fn every_difference_from_the_file_is_an_error(
+        lines in prop::collection::vec((0..LINES.len() + 3, 1..4u32, prop::bool::weighted(0.1)), 0..16),
+        final_newline in prop::bool::weighted(0.8),
+    ) {
+        let mut text = String::new();
+        for (template, id, crlf) in lines {
+            match template.checked_sub(LINES.len()) {
+                Some(which) => text.push_str(&long_line(id, [250, 350, 650][which])),
+                None => text.push_str(&LINES[template].replace('#', &id.to_string())),
+            }
+            text.push_str(if crlf { "\r\n" } else { "\n" });
+        }
+        if !final_newline {
+            text.pop();
+        }
+        assert_differences_are_reported(&text);
+    }
+}
+
+#[test]
+fn the_seed_and_the_corpus() {
+    for file in [
+        "corpus/environmentKnowledgeBaseInput.dat",
+        "corpus/upstream-2025-06-environmentKnowledgeBaseInput.dat",
+        "corpus/upstream-2026-02-environmentKnowledgeBaseInput.dat",
+        "corpus/upstream-2026-03-gesture-arm-environmentKnowledgeBaseInput.dat",
+    ] {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/fixtures")
+            .join(file);
+        let text = std::fs::read_to_string(path).unwrap();
+        assert_differences_are_reported(&text);
+    }
+}
