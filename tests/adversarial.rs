@@ -21,6 +21,7 @@ fn ekb(dir: &Path) -> Command {
     command
         .current_dir(dir)
         .env_remove("EKB_CONFIG")
+        .env_remove("EKB_READER")
         .timeout(Duration::from_secs(120));
     command
 }

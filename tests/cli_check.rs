@@ -21,6 +21,7 @@ fn ekb_in(dir: &Path) -> Command {
     command
         .current_dir(dir)
         .env_remove("EKB_CONFIG")
+        .env_remove("EKB_READER")
         .env_remove("NO_COLOR");
     command
 }
@@ -700,4 +701,94 @@ fn the_dialect_key_pins_a_dialect() {
         let run = run(ekb_in(robot.path()).args(["check", "--format", "concise"]));
         assert!(!run.stdout.contains("legacy-key"), "{dialect}");
     }
+}
+
+// ---------------------------------------------------------------- the robot's reader
+
+#[test]
+fn the_reader_comes_from_the_option_the_environment_ekb_toml_or_the_configuration() {
+    let robot = robot_folder("knowledgeBase = kb.dat\n");
+    let legacy = |run: &Run| run.stdout.matches("error[legacy-key]").count();
+    let check = || {
+        let mut command = ekb_in(robot.path());
+        command.args(["check", "--format", "concise"]);
+        command
+    };
+    // By default, the document's reader for the document's dialect.
+    let default = run(&mut check());
+    assert_eq!(legacy(&default), 0, "{}", default.stdout);
+    assert!(default.stdout.ends_with("checked against reader d5.4.2\n"));
+    // ekb.toml beside the file, or in a folder above it.
+    fs::write(robot.path().join("ekb.toml"), "reader = \"2025-06\"\n").unwrap();
+    let settings = run(&mut check());
+    assert_eq!(legacy(&settings), 5, "{}", settings.stdout);
+    assert!(settings
+        .stdout
+        .ends_with("checked against reader 2025-06\n"));
+    // EKB_READER overrides it, and --reader overrides both.
+    let env = run(check().env("EKB_READER", "d5.4.2"));
+    assert_eq!(legacy(&env), 0);
+    let option = run(check()
+        .env("EKB_READER", "d5.4.2")
+        .args(["--reader", "2026-02"]));
+    assert_eq!(legacy(&option), 5);
+    assert!(option.stdout.ends_with("checked against reader 2026-02\n"));
+    // The robot's configuration may name one too, below ekb.toml.
+    fs::remove_file(robot.path().join("ekb.toml")).unwrap();
+    fs::write(
+        robot
+            .path()
+            .join("config/environmentKnowledgeBaseConfiguration.ini"),
+        "knowledgeBase = kb.dat\nreader = 2026-04\n",
+    )
+    .unwrap();
+    let config = run(&mut check());
+    assert!(
+        config.stdout.ends_with("checked against reader 2026-04\n"),
+        "{}",
+        config.stdout
+    );
+}
+
+#[test]
+fn a_bad_reader_is_a_usage_error() {
+    let robot = robot_folder("knowledgeBase = kb.dat\n");
+    fs::write(robot.path().join("ekb.toml"), "\nreader = \"2027-01\"\n").unwrap();
+    let bad = run(ekb_in(robot.path()).arg("check"));
+    assert_eq!(bad.code, 2);
+    assert!(bad.stderr.contains("ekb.toml:2:10: `reader` must be one of d5.4.2, 2025-06, 2026-02, 2026-03, 2026-04, not `2027-01`"), "{}", bad.stderr);
+    let option = run(ekb_in(robot.path()).args(["check", "--reader", "2027-01"]));
+    assert_eq!(option.code, 2);
+    assert!(
+        option.stderr.contains("possible values: d5.4.2, 2025-06"),
+        "{}",
+        option.stderr
+    );
+}
+
+#[test]
+fn each_format_says_which_reader_it_checked_against() {
+    let sarif = run(ekb().args([
+        "check", "--format", "sarif", "--reader", "2026-03", "seed.dat",
+    ]));
+    let sarif: Value = serde_json::from_str(&sarif.stdout).unwrap();
+    assert_eq!(
+        sarif["runs"][0]["properties"]["readers"],
+        json!({ "seed.dat": "2026-03" })
+    );
+    let two = run(ekb().args(["check", "--format", "json", "seed.dat", "clean-current.dat"]));
+    let two: Value = serde_json::from_str(&two.stdout).unwrap();
+    assert_eq!(two["reader"], Value::Null);
+    assert_eq!(
+        two["readers"],
+        json!({ "clean-current.dat": "2025-06", "seed.dat": "d5.4.2" })
+    );
+    let human = run(ekb().args(["check", "seed.dat", "clean-current.dat"]));
+    assert!(
+        human.stdout.ends_with(
+            "checked against readers 2025-06 for clean-current.dat, d5.4.2 for seed.dat\n"
+        ),
+        "{}",
+        human.stdout
+    );
 }

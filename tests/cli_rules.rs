@@ -42,7 +42,10 @@ const SPEC_RULES: &[&str] = &[
 
 fn ekb() -> Command {
     let mut command = Command::cargo_bin("ekb").unwrap();
-    command.env_remove("EKB_CONFIG").env_remove("NO_COLOR");
+    command
+        .env_remove("EKB_CONFIG")
+        .env_remove("EKB_READER")
+        .env_remove("NO_COLOR");
     command
 }
 

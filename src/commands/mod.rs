@@ -126,16 +126,16 @@ impl Context {
     }
 
     /// How to read the knowledge base at `path`: the configuration's dialect and verbosity
-    /// (or `-v`), and the reader of `--reader`, else of the file's `ekb.toml`.
+    /// (or `-v`), and the reader of `--reader` (or `EKB_READER`), else of the file's
+    /// `ekb.toml`, else of the configuration.
     pub fn read_options(&self, path: &Path) -> Result<Options, CommandError> {
         let config = self.config()?;
         let reader = match self.reader {
             Some(reader) => Some(reader),
-            None => {
-                Settings::discover(path)
-                    .map_err(CommandError::Failed)?
-                    .reader
-            }
+            None => Settings::discover(path)
+                .map_err(CommandError::Failed)?
+                .reader
+                .or(config.reader),
         };
         Ok(Options {
             dialect: config.dialect,

@@ -12,7 +12,10 @@ use ekb::model::KnowledgeBase;
 /// `ekb` with no configuration from the environment.
 pub fn ekb() -> Command {
     let mut command = Command::cargo_bin("ekb").unwrap();
-    command.env_remove("EKB_CONFIG").env("NO_COLOR", "1");
+    command
+        .env_remove("EKB_CONFIG")
+        .env_remove("EKB_READER")
+        .env("NO_COLOR", "1");
     command
 }
 

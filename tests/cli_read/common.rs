@@ -14,6 +14,7 @@ pub fn ekb() -> Command {
     let mut cmd = assert_cmd::cargo::cargo_bin_cmd!("ekb");
     cmd.current_dir(env!("CARGO_MANIFEST_DIR"))
         .env_remove("EKB_CONFIG")
+        .env_remove("EKB_READER")
         .env_remove("COLUMNS")
         .env_remove("NO_COLOR");
     cmd

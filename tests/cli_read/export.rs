@@ -145,3 +145,101 @@ fn output_file_keeps_the_permissions_it_replaces() {
     assert_eq!(mode(&fresh), 0o644);
     assert_eq!(mode(&existing), 0o640);
 }
+
+// ---------------------------------------------------------------- as the robot loads it
+
+#[test]
+fn as_loaded_shows_what_each_reader_loads() {
+    let seed = json(&run(&["export", "--as-loaded", SEED]).stdout);
+    assert_eq!(seed["reader"], "d5.4.2");
+    assert_eq!(
+        seed["locations"][0]["pose"],
+        serde_json::json!({"x": 2.6, "y": 8.1, "theta": -90.0})
+    );
+    // The miscased key is not read: location 4 says nothing after the gesture.
+    assert_eq!(seed["locations"][3]["postGestureMessage"]["english"], "");
+    assert_eq!(seed["locations"][0]["gestureArm"], serde_json::Value::Null);
+    assert_eq!(
+        seed["locations"][0]["culturalKnowledge"],
+        serde_json::Value::Null
+    );
+    // Today's robot ignores `robotLocation`: every pose at the origin.
+    let today = run(&["export", "--as-loaded", "--reader", "2025-06", SEED]);
+    assert_eq!(today.code, 0, "{}", today.stderr);
+    let today = json(&today.stdout);
+    for location in today["locations"].as_array().unwrap() {
+        assert_eq!(
+            location["pose"],
+            serde_json::json!({"x": 0.0, "y": 0.0, "theta": 0.0})
+        );
+    }
+    assert_eq!(today["tour"], serde_json::json!([1, 4, 3, 2, 5]));
+}
+
+#[test]
+fn as_loaded_keeps_what_the_reader_keeps_and_drops_what_it_drops() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("kb.dat");
+    std::fs::write(
+        &path,
+        "robotLocationDescription 1 Roomba  \r\nrobotLocationPose 1 -2.5 1.0 90\r\n\
+         gestureArm 1 right \r\nculturalKnowledge 1 Bow's\r\ntourSpecification 2 1\r\n\
+         postGestureMessageIsiZulu 1 Sawubona",
+    )
+    .unwrap();
+    let path = path.to_str().unwrap();
+    let export = |reader: &str| {
+        let out = run(&["export", "--as-loaded", "--reader", reader, path]);
+        assert_eq!(out.code, 0, "{}", out.stderr);
+        json(&out.stdout)
+    };
+    let loaded = export("2026-03");
+    let location = &loaded["locations"][0];
+    assert_eq!(location["description"], "Roomba  \r");
+    assert_eq!(location["pose"]["x"], 2.5);
+    assert_eq!(location["gestureArm"], "right \r");
+    assert_eq!(
+        location["culturalKnowledge"],
+        serde_json::json!(["Bow's", "s"])
+    );
+    assert_eq!(location["postGestureMessage"]["isiZulu"], "Sawubon");
+    assert_eq!(loaded["tour"], serde_json::json!([1, null]));
+    assert_eq!(
+        export("2025-06")["locations"][0]["gestureArm"],
+        serde_json::Value::Null
+    );
+    // Plain export stays as written.
+    let written = json(&run(&["export", "--allow-errors", path]).stdout);
+    assert_eq!(written["locations"][0]["description"], "Roomba");
+    assert_eq!(written["locations"][0]["pose"]["x"], -2.5);
+}
+
+#[test]
+fn as_loaded_refuses_a_file_the_reader_crashes_on() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("deep.dat");
+    let text: String = (1..=1_800)
+        .map(|id| format!("robotLocationDescription {id} Exhibit {id}\n"))
+        .collect();
+    std::fs::write(&path, text).unwrap();
+    let path = path.to_str().unwrap();
+    let crash = run(&["export", "--as-loaded", "--reader", "2026-04", path]);
+    assert_eq!(crash.code, 1);
+    assert_eq!(crash.stdout, "");
+    assert!(
+        crash.stderr.contains("error[compat-reader-crash]"),
+        "{}",
+        crash.stderr
+    );
+    assert!(
+        crash.stderr.contains("reader 2026-04 crashes on"),
+        "{}",
+        crash.stderr
+    );
+    let deeper = run(&["export", "--as-loaded", "--reader", "2025-06", path]);
+    assert_eq!(deeper.code, 0, "{}", deeper.stderr);
+    assert_eq!(
+        json(&deeper.stdout)["locations"].as_array().unwrap().len(),
+        1_800
+    );
+}
