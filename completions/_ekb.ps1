@@ -133,6 +133,7 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('--reader', '--reader', [CompletionResultType]::ParameterName, 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]')
             [CompletionResult]::new('--allow-errors', '--allow-errors', [CompletionResultType]::ParameterName, 'Export even if the file has errors (what the robot would load of it)')
             [CompletionResult]::new('--schema', '--schema', [CompletionResultType]::ParameterName, 'Print the JSON Schema of the export instead')
+            [CompletionResult]::new('--as-loaded', '--as-loaded', [CompletionResultType]::ParameterName, 'Export what the chosen reader loads (`--reader`), field by field, instead of what the file says; exit 1 if that reader would crash on the file')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
             [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
             [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')

@@ -245,7 +245,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__export)
-            opts="-o -v -q -h -V --format --output --allow-errors --schema --config --color --verbose --reader --quiet --help --version"
+            opts="-o -v -q -h -V --format --output --allow-errors --schema --as-loaded --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0

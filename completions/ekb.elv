@@ -124,6 +124,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
             cand --allow-errors 'Export even if the file has errors (what the robot would load of it)'
             cand --schema 'Print the JSON Schema of the export instead'
+            cand --as-loaded 'Export what the chosen reader loads (`--reader`), field by field, instead of what the file says; exit 1 if that reader would crash on the file'
             cand -v 'Print what is read, as it is read, on standard error'
             cand --verbose 'Print what is read, as it is read, on standard error'
             cand -q 'Print only findings and errors, no summary'

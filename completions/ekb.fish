@@ -148,6 +148,7 @@ complete -c ekb -n "__fish_ekb_using_subcommand export" -l reader -d 'The versio
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand export" -l allow-errors -d 'Export even if the file has errors (what the robot would load of it)'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -l schema -d 'Print the JSON Schema of the export instead'
+complete -c ekb -n "__fish_ekb_using_subcommand export" -l as-loaded -d 'Export what the chosen reader loads (`--reader`), field by field, instead of what the file says; exit 1 if that reader would crash on the file'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s h -l help -d 'Print help (see more with \'--help\')'
