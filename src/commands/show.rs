@@ -1,5 +1,6 @@
-//! `ekb show ID [FILE]`: one location in full, every field with its line number, and what
-//! `ekb check` finds there.
+//! `ekb show ID [FILE]`: one location in full, every field with its line number as the
+//! chosen reader loads it (marked where the file says otherwise), and what `ekb check`
+//! finds there.
 
 use std::io::Write;
 use std::path::PathBuf;
@@ -7,9 +8,11 @@ use std::path::PathBuf;
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::build::parse_id;
-use crate::model::{Dialect, Location};
+use crate::model::{Dialect, Location, Point, Pose};
 use crate::present::field::{Field, FieldValue};
 use crate::present::{self, table, Lines};
+use crate::reader::view::{self, Held};
+use crate::reader::{self, Reader};
 use crate::render::escape::escape;
 
 #[derive(Debug, clap::Args)]
@@ -70,12 +73,15 @@ fn render(checked: &Checked<'_>, location: &Location<'_>) -> String {
         |d| present::text(d.value).into_owned(),
     );
     let mut out = format!(
-        "Location {}: {title}\n{}, {}; {}\n\n",
+        "Location {}: {title}\n{}, {}; {}\nAs reader {} loads it.\n\n",
         location.id,
         escape(checked.source.name()),
         present::line_range(lines.range(location)),
         tour_sentence(checked, location.id),
+        checked.reader,
     );
+    let text = checked.source.text().as_bytes();
+    let loaded = reader::load(text, checked.reader);
     let mut table = table::new(&["line", "field", "value"]);
     for field in Field::ALL {
         let given = field.has_line(location);
@@ -86,8 +92,12 @@ fn render(checked: &Checked<'_>, location: &Location<'_>) -> String {
             Field::Pose => location.pose_key.unwrap_or(dialect.pose_key()),
             other => other.key(dialect),
         };
+        let held = view::held(&loaded, text, location.id, key);
         let (line, value) = match field.get(location) {
-            Some((value, span)) => (lines.of(span).to_string(), describe(field, &value)),
+            Some((value, span)) => (
+                lines.of(span).to_string(),
+                as_loaded(field, &value, &held, checked.reader),
+            ),
             None if given => ("–".into(), "invalid: see the findings below".into()),
             None if field.is_current_only() => ("–".into(), "(not given)".into()),
             None => ("–".into(), "MISSING".into()),
@@ -113,6 +123,56 @@ fn render(checked: &Checked<'_>, location: &Location<'_>) -> String {
         }
     }
     out
+}
+
+/// What the robot holds of a field the file gives as `written`, and, where that is not
+/// what the file says, what the file says.
+fn as_loaded(field: Field, written: &FieldValue<'_>, held: &Held, reader: Reader) -> String {
+    let file_says = describe(field, written);
+    let robot = match held {
+        Held::NotRead => return format!("{file_says} (reader {reader} does not read this line)"),
+        Held::Undefined => return format!("undefined (the file says {file_says})"),
+        Held::Nothing => match field {
+            Field::Pose => FieldValue::Pose(Pose {
+                x: 0.0,
+                y: 0.0,
+                theta: 0.0,
+            })
+            .human(false),
+            Field::GestureTarget => FieldValue::Point(Point {
+                x: 0.0,
+                y: 0.0,
+                z: 0.0,
+            })
+            .human(false),
+            _ => "nothing".to_string(),
+        },
+        Held::Text(text) => present::quoted(text),
+        Held::Words(words) => escape(&words.join(" ")).into_owned(),
+        Held::Numbers([a, b, c]) => {
+            let [a, b, c] = [*a, *b, *c].map(view::shortest);
+            match field {
+                Field::Pose => FieldValue::Pose(Pose {
+                    x: a,
+                    y: b,
+                    theta: c,
+                })
+                .human(false),
+                _ => FieldValue::Point(Point { x: a, y: b, z: c }).human(false),
+            }
+        }
+    };
+    let same = match (held, written) {
+        (Held::Text(held), FieldValue::Text(text)) => held == text,
+        (Held::Text(held), FieldValue::Arm(arm)) => held == arm.name(),
+        (Held::Words(held), FieldValue::Words(words)) => held == words,
+        _ => robot == written.human(false),
+    };
+    if same {
+        file_says
+    } else {
+        format!("{robot} (the file says {file_says})")
+    }
 }
 
 /// A field's value, with what it means where that is not plain.

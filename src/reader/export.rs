@@ -8,6 +8,7 @@ use serde::Serialize;
 
 use super::line::LoadedValue;
 use super::load::{Loaded, LoadedLocation};
+use super::view::shortest;
 use crate::model::{Dialect, Key, Language, Phase};
 
 /// The whole of what the robot holds.
@@ -133,15 +134,9 @@ fn loaded_text(value: &LoadedValue, text: &[u8]) -> Option<String> {
     }
 }
 
-/// A C `float` as JSON: the shortest decimal that reads back as the same `float` (so
-/// `2.6`, not `2.5999999`), or `None` for an infinity or NaN.
+/// A C `float` as JSON (see [`shortest`]), or `None` for an infinity or NaN.
 fn json_number(value: f32) -> Option<f64> {
-    value.is_finite().then(|| {
-        value
-            .to_string()
-            .parse()
-            .expect("a float prints as a number")
-    })
+    value.is_finite().then(|| shortest(value))
 }
 
 #[cfg(test)]

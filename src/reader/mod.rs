@@ -12,6 +12,7 @@ mod load;
 mod scan;
 pub mod tree;
 mod version;
+pub mod view;
 
 pub use load::{chunks, load, Field, Loaded, LoadedLocation, LoadedTour};
 pub use version::Reader;

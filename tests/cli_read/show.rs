@@ -77,3 +77,51 @@ fn control_characters_are_escaped() {
     assert_terminal_safe(&out.stdout);
     assert!(out.stdout.contains(r"Bell\u{0007} rings"));
 }
+
+#[test]
+fn values_the_robot_loads_otherwise_are_marked_with_what_the_file_says() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("kb.dat");
+    let long = "word ".repeat(50);
+    std::fs::write(
+        &path,
+        format!(
+            "robotLocationDescription 1 Roomba  \nrobotLocationPose 1 -3.5 1.0 90\n\
+             preGestureMessageEnglish 1 {long}\ntourSpecification 1 1\n\
+             postGestureMessageIsiZulu 1 Sawubona"
+        ),
+    )
+    .unwrap();
+    let out = run(&["show", "1", path.to_str().unwrap()]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let stdout = &out.stdout;
+    assert!(stdout.contains("As reader 2025-06 loads it."), "{stdout}");
+    assert!(
+        stdout.contains("3.5, 1.0, 90.0° (the file says -3.5, 1.0, 90.0°)"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("\"Roomba  \" (the file says Roomba)"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("\"Sawubon\" (the file says Sawubona)"),
+        "{stdout}"
+    );
+    // Findings on the location's own lines are listed with it, whatever their rule.
+    for line in [
+        "line 1: warning[trailing-whitespace]",
+        "line 3: error[compat-line-too-long]",
+        "line 5: error[compat-no-final-newline]",
+    ] {
+        assert!(stdout.contains(line), "missing {line:?} in {stdout}");
+    }
+    // The document's reader ignores robotLocationPose: the robot stands at the origin.
+    let seed = run(&["show", "1", "--reader", "d5.4.2", path.to_str().unwrap()]);
+    assert!(
+        seed.stdout
+            .contains("0.0, 0.0, 0.0° (the file says -3.5, 1.0, 90.0°)"),
+        "{}",
+        seed.stdout
+    );
+}

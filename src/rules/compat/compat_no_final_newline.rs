@@ -1,5 +1,6 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit, Severity};
+use crate::model::build::leading_id;
 use crate::model::{Key, ValueKind};
 use crate::reader::line::{LineRead, LoadedValue};
 use crate::reader::{self, Reader};
@@ -60,9 +61,16 @@ pub fn check(text: &str, reader: Reader, out: &mut Diagnostics) {
     } else {
         Severity::Warning
     };
+    let id = match last.body {
+        Body::Entry { key, args } if key.text(text) != Key::TourSpecification.name() => {
+            leading_id(args.text(text))
+        }
+        _ => None,
+    };
     out.push_with(&COMPAT_NO_FINAL_NEWLINE, || {
         Diagnostic::new(&COMPAT_NO_FINAL_NEWLINE, Span::empty_at(end), message)
             .with_severity(severity)
+            .at_location(id)
             .with_help("end the file with a newline")
             // LF even in a CRLF file: `compat-crlf` converts the other endings to LF.
             .with_fix(

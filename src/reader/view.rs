@@ -1,0 +1,53 @@
+//! One field of one location as the robot holds it, for views that show it beside what the
+//! file says (`ekb show`, `ekb tour`).
+
+use super::line::LoadedValue;
+use super::Loaded;
+use crate::model::Key;
+
+/// What the robot holds in one field.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Held {
+    /// A text (the description, a message, the arm of `2026-03`), lossy where a cut split a
+    /// character.
+    Text(String),
+    Numbers([f32; 3]),
+    Words(Vec<String>),
+    /// No line set it: the robot's empty text, or 0.
+    Nothing,
+    /// The reader took it from past the end of its line.
+    Undefined,
+    /// This version does not read the key at all.
+    NotRead,
+}
+
+/// What `loaded` holds for `key` (for the pose, either pose key) at location `id`; `text` is
+/// the file the values are spans of.
+pub fn held(loaded: &Loaded, text: &[u8], id: u32, key: Key) -> Held {
+    let key = match key {
+        Key::RobotLocation | Key::RobotLocationPose => loaded.reader.pose_key(),
+        other => other,
+    };
+    if !loaded.reader.reads(key) {
+        return Held::NotRead;
+    }
+    let field = i32::try_from(id)
+        .ok()
+        .and_then(|id| loaded.locations.get(&id))
+        .and_then(|location| location.field(key));
+    let lossy =
+        |span: &crate::syntax::Span| String::from_utf8_lossy(&text[span.range()]).into_owned();
+    match field.map(|field| &field.value) {
+        None => Held::Nothing,
+        Some(LoadedValue::Text(span)) => Held::Text(lossy(span)),
+        Some(LoadedValue::Numbers(numbers)) => Held::Numbers(*numbers),
+        Some(LoadedValue::Words(words)) => Held::Words(words.iter().map(lossy).collect()),
+        Some(LoadedValue::Undefined) => Held::Undefined,
+    }
+}
+
+/// A C `float` as the shortest decimal that reads back as the same `float`, as an `f64`
+/// (so `2.6`, not `2.5999999`).
+pub fn shortest(value: f32) -> f64 {
+    value.to_string().parse().unwrap_or(f64::NAN)
+}
