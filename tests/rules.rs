@@ -1053,6 +1053,31 @@ fn compat_reader_crash() {
 }
 
 #[test]
+fn compat_reader_crash_fix_writes_a_balanced_order() {
+    let deep = generated(1_800, false);
+    let fixed = ekb::fixing::fix(&deep, &reader(Reader::V2026_03));
+    assert_eq!(fixed.counts.get("compat-reader-crash"), Some(&1));
+    let source = SourceFile::from_bytes("fixed", fixed.text.into_bytes());
+    let after = findings_of(&source, reader(Reader::V2026_03));
+    assert!(
+        of_rule(&after, "compat-reader-crash").is_empty(),
+        "{}",
+        show(&after)
+    );
+    assert!(of_rule(&after, "compat-slow-load").is_empty());
+    // The same locations, the middle one first.
+    let checked = ekb::check(&source, &reader(Reader::V2026_03));
+    assert_eq!(checked.kb.locations().len(), 1_800);
+    assert!(source
+        .text()
+        .starts_with("robotLocationDescription      901 "));
+    let depth = ekb::reader::load(source.text().as_bytes(), Reader::V2026_03)
+        .tree
+        .height;
+    assert_eq!(depth, 11);
+}
+
+#[test]
 fn compat_slow_load() {
     // Quadratic: 1,300 ascending locations take 2026-03 a second or more, 300 do not.
     let slow = findings_of(&generated(1_300, false), reader(Reader::V2026_03));

@@ -25,6 +25,7 @@
 //! spelling. Only the blanks *between* the numbers of a pose or a gesture target, and between
 //! the tour's items, become single spaces.
 
+mod balance;
 mod from_export;
 mod from_source;
 
