@@ -543,7 +543,10 @@ fn one_fix_run_fixes_more_findings_of_a_rule_than_check_keeps() {
     let [_, (code, stderr)] = rewrite(text.as_bytes());
     assert_eq!(code, 1, "missing fields are left: {stderr}");
     assert!(
-        stderr.contains(&format!("fixed {lines} trailing-whitespace")),
+        // And, 20,000 ascending ids being a tree too deep for the reader, their order.
+        stderr.contains(&format!(
+            "fixed 1 compat-reader-crash, {lines} trailing-whitespace"
+        )),
         "{stderr}"
     );
     assert!(!stderr.contains("trailing-whitespace]"), "{stderr}");
