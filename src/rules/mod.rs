@@ -3,7 +3,9 @@
 //! Each rule is declared with [`declare_rule!`]: its doc comment is both its rustdoc and the
 //! text of `ekb explain RULE`, so the documentation has a single source. Rules that need
 //! the text of a line run while the model is built ([`crate::model::build`]); rules that need
-//! whole locations or the tour run afterwards, over the model ([`check_model`]).
+//! whole locations or the tour, and those that depend on the version of the robot's reader
+//! ([`compat::check_file`], which asks [`crate::reader`] what each version loads), run
+//! afterwards, over the model ([`check_model`]).
 
 use std::ops::Range;
 
