@@ -41,10 +41,32 @@ pub fn check(shape: &TreeShape, reader: Reader, out: &mut Diagnostics) {
             &COMPAT_SLOW_LOAD,
             Span::empty_at(0),
             format!(
-                "reader {reader} would take about {seconds:.1} s to load this file: the order of its ids builds a tree of locations {} deep, which it searches for every line",
+                "reader {reader} would take {} to load this file: the order of its ids builds a tree of locations {} deep, which it searches for every line",
+                duration(seconds),
                 shape.height
             ),
         )
         .with_help("write the locations in an order that builds a balanced tree (the middle id first), or check that the robot may wait that long"),
     );
+}
+
+/// `about 2.5 s`, `about 40 s`, `about 34 minutes`.
+fn duration(seconds: f64) -> String {
+    match seconds {
+        s if s < 10.0 => format!("about {s:.1} s"),
+        s if s < 120.0 => format!("about {s:.0} s"),
+        s => format!("about {:.0} minutes", s / 60.0),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn durations_read_naturally() {
+        assert_eq!(duration(2.46), "about 2.5 s");
+        assert_eq!(duration(41.2), "about 41 s");
+        assert_eq!(duration(2025.0), "about 34 minutes");
+    }
 }
