@@ -308,16 +308,19 @@ proptest! {
 
 #[test]
 fn the_seed_and_the_corpus() {
+    let fixtures = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures");
     for file in [
         "corpus/environmentKnowledgeBaseInput.dat",
         "corpus/upstream-2025-06-environmentKnowledgeBaseInput.dat",
         "corpus/upstream-2026-02-environmentKnowledgeBaseInput.dat",
         "corpus/upstream-2026-03-gesture-arm-environmentKnowledgeBaseInput.dat",
     ] {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("tests/fixtures")
-            .join(file);
-        let text = std::fs::read_to_string(path).unwrap();
+        let text = std::fs::read_to_string(fixtures.join(file)).unwrap();
+        assert_differences_are_reported(&text);
+    }
+    // The robot's repository's knowledge bases over time.
+    for entry in std::fs::read_dir(fixtures.join("corpus/history")).unwrap() {
+        let text = std::fs::read_to_string(entry.unwrap().path()).unwrap();
         assert_differences_are_reported(&text);
     }
 }
