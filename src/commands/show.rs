@@ -8,11 +8,11 @@ use std::path::PathBuf;
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::build::parse_id;
-use crate::model::{Dialect, Location, Point, Pose};
-use crate::present::field::{Field, FieldValue};
-use crate::present::{self, table, Lines};
-use crate::reader::view::{self, Held};
-use crate::reader::{self, Reader};
+use crate::model::{Dialect, Location};
+use crate::present::field::Field;
+use crate::present::{self, robot, table, Lines};
+use crate::reader;
+use crate::reader::view;
 use crate::render::escape::escape;
 
 #[derive(Debug, clap::Args)]
@@ -96,7 +96,7 @@ fn render(checked: &Checked<'_>, location: &Location<'_>) -> String {
         let (line, value) = match field.get(location) {
             Some((value, span)) => (
                 lines.of(span).to_string(),
-                as_loaded(field, &value, &held, checked.reader),
+                robot::as_loaded(field, &value, &held, checked.reader),
             ),
             None if given => ("–".into(), "invalid: see the findings below".into()),
             None if field.is_current_only() => ("–".into(), "(not given)".into()),
@@ -123,67 +123,6 @@ fn render(checked: &Checked<'_>, location: &Location<'_>) -> String {
         }
     }
     out
-}
-
-/// What the robot holds of a field the file gives as `written`, and, where that is not
-/// what the file says, what the file says.
-fn as_loaded(field: Field, written: &FieldValue<'_>, held: &Held, reader: Reader) -> String {
-    let file_says = describe(field, written);
-    let robot = match held {
-        Held::NotRead => return format!("{file_says} (reader {reader} does not read this line)"),
-        Held::Undefined => return format!("undefined (the file says {file_says})"),
-        Held::Nothing => match field {
-            Field::Pose => FieldValue::Pose(Pose {
-                x: 0.0,
-                y: 0.0,
-                theta: 0.0,
-            })
-            .human(false),
-            Field::GestureTarget => FieldValue::Point(Point {
-                x: 0.0,
-                y: 0.0,
-                z: 0.0,
-            })
-            .human(false),
-            _ => "nothing".to_string(),
-        },
-        Held::Text(text) => present::quoted(text),
-        Held::Words(words) => escape(&words.join(" ")).into_owned(),
-        Held::Numbers([a, b, c]) => {
-            let [a, b, c] = [*a, *b, *c].map(view::shortest);
-            match field {
-                Field::Pose => FieldValue::Pose(Pose {
-                    x: a,
-                    y: b,
-                    theta: c,
-                })
-                .human(false),
-                _ => FieldValue::Point(Point { x: a, y: b, z: c }).human(false),
-            }
-        }
-    };
-    let same = match (held, written) {
-        (Held::Text(held), FieldValue::Text(text)) => held == text,
-        (Held::Text(held), FieldValue::Arm(arm)) => held == arm.name(),
-        (Held::Words(held), FieldValue::Words(words)) => held == words,
-        _ => robot == written.human(false),
-    };
-    if same {
-        file_says
-    } else {
-        format!("{robot} (the file says {file_says})")
-    }
-}
-
-/// A field's value, with what it means where that is not plain.
-fn describe(field: Field, value: &FieldValue<'_>) -> String {
-    match (field, value) {
-        (Field::GestureTarget, FieldValue::Point(target)) => present::Gesture::of(target).short(),
-        (Field::Message(..), FieldValue::Text(text)) if crate::model::is_placeholder(text) => {
-            format!("{} (placeholder, untranslated)", value.human(false))
-        }
-        _ => value.human(false),
-    }
 }
 
 /// `stop 2 of 5 on the tour`, `stops 1 and 3 of 3 on the tour (the start and home pose)` or

@@ -9,8 +9,11 @@ use serde::Serialize;
 
 use super::{CommandResult, Context, Exit};
 use crate::check::{check, Checked};
-use crate::model::{Arm, Language, Location, Phase, Point, Pose};
-use crate::present::{self, language, Gesture, Lines, Message};
+use crate::model::{Arm, Key, Language, Location, Phase, Point, Pose};
+use crate::present::field::{Field, FieldValue};
+use crate::present::{self, language, robot, Gesture, Lines, Message};
+use crate::reader;
+use crate::reader::view::{self, Held};
 use crate::render::escape::escape;
 use crate::render::safe_json as json;
 
@@ -68,6 +71,11 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
 struct Tour<'a> {
     #[serde(serialize_with = "serialize_language")]
     language: Language,
+    /// The version of the robot's reader whose view this is.
+    reader: &'static str,
+    /// The stops the reader loads, where they are not the file's (`null`: undefined).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    robot_tour: Option<Vec<Option<i32>>>,
     stops: Vec<Stop<'a>>,
     /// Messages written in the language (placeholders and missing ones are not).
     translated: usize,
@@ -93,6 +101,12 @@ struct Stop<'a> {
     gesture_arm: Option<Arm>,
     before: Said<'a>,
     after: Said<'a>,
+    /// Where the robot stands, as the reader loads it (marked where the file differs).
+    #[serde(skip)]
+    stands: String,
+    /// Where the reader's gesture target is not the file's, what it loads.
+    #[serde(skip)]
+    target_as_loaded: Option<String>,
 }
 
 /// One message of a stop in the tour's language.
@@ -105,8 +119,13 @@ struct Said<'a> {
     line: Option<u32>,
     /// The English message, what a translator should translate (null for English itself).
     english: Option<&'a str>,
+    /// What the robot says, as its reader loads the message (null: undefined).
+    robot_says: Option<String>,
     #[serde(skip)]
     message: Message<'a>,
+    /// Where the robot says something else than the file: what, shown.
+    #[serde(skip)]
+    differs: Option<String>,
 }
 
 fn serialize_language<S: serde::Serializer>(language: &Language, s: S) -> Result<S::Ok, S::Error> {
@@ -116,20 +135,50 @@ fn serialize_language<S: serde::Serializer>(language: &Language, s: S) -> Result
 impl<'a> Tour<'a> {
     fn new(checked: &'a Checked<'a>, language: Language) -> Tour<'a> {
         let lines = Lines::new(checked.source.text());
+        let text = checked.source.text().as_bytes();
+        let loaded = reader::load(text, checked.reader);
+        let held = |id: u32, key: Key| view::held(&loaded, text, id, key);
         let stops: Vec<Stop> = checked
             .kb
             .tour_stops()
             .enumerate()
             .map(|(index, id)| {
                 let location = checked.kb.location(id);
-                let said = |phase| Said::new(location, phase, language, &lines);
+                let said = |phase| {
+                    let key = Key::for_message(phase, language);
+                    Said::new(location, phase, language, &lines, held(id, key))
+                };
+                let pose = location.and_then(|l| l.pose).map(|p| p.value);
+                let pose_held = held(id, Key::RobotLocationPose);
+                let stands = match pose {
+                    Some(pose) => robot::as_loaded(
+                        Field::Pose,
+                        &FieldValue::Pose(pose),
+                        &pose_held,
+                        checked.reader,
+                    ),
+                    None => "MISSING pose: the robot's reader leaves it at 0, 0, 0°".to_string(),
+                };
+                let target = location.and_then(|l| l.gesture_target).map(|t| t.value);
+                let target_held = held(id, Key::GestureTarget);
+                let target_as_loaded = target
+                    .filter(|target| {
+                        !robot::agrees(
+                            Field::GestureTarget,
+                            &FieldValue::Point(*target),
+                            &target_held,
+                        )
+                    })
+                    .map(|_| robot::shown(Field::GestureTarget, &target_held));
                 Stop {
+                    stands,
+                    target_as_loaded,
                     stop: index + 1,
                     id,
                     start: index == 0,
                     found: location.is_some(),
                     description: location.and_then(|l| l.description()).map(|d| d.value),
-                    pose: location.and_then(|l| l.pose).map(|p| p.value),
+                    pose,
                     gesture_target: location.and_then(|l| l.gesture_target).map(|t| t.value),
                     points: location
                         .and_then(|l| l.gesture_target)
@@ -145,8 +194,19 @@ impl<'a> Tour<'a> {
             .flat_map(|stop| [&stop.before, &stop.after])
             .filter(|said| matches!(said.message, Message::Written(_)))
             .count();
+        let written_tour: Vec<Option<i32>> = checked
+            .kb
+            .tour_stops()
+            .map(|id| i32::try_from(id).ok())
+            .collect();
+        let robot_tour = loaded
+            .tour
+            .as_ref()
+            .map_or_else(Vec::new, |tour| tour.stops.clone());
         Tour {
             language,
+            reader: checked.reader.name(),
+            robot_tour: (robot_tour != written_tour).then_some(robot_tour),
             messages: stops.len() * 2,
             stops,
             translated,
@@ -157,11 +217,25 @@ impl<'a> Tour<'a> {
         let order: Vec<String> = self.stops.iter().map(|s| s.id.to_string()).collect();
         let count = self.stops.len();
         let mut out = format!(
-            "Tour of {file} in {}: {count} stop{} ({})\n",
+            "Tour of {file} in {}: {count} stop{} ({}), as reader {} loads it\n",
             self.language.name(),
             if count == 1 { "" } else { "s" },
-            order.join(" → ")
+            order.join(" → "),
+            self.reader
         );
+        if let Some(robot_tour) = &self.robot_tour {
+            let stops: Vec<String> = robot_tour
+                .iter()
+                .map(|stop| stop.map_or("?".to_string(), |id| id.to_string()))
+                .collect();
+            let stops = match stops.is_empty() {
+                true => "no tour at all".to_string(),
+                false => stops.join(" → "),
+            };
+            out.push_str(&format!(
+                "The robot's reader loads another tour: {stops} (`ekb check` says why)\n"
+            ));
+        }
         for stop in &self.stops {
             out.push('\n');
             out.push_str(&stop.text(self.language));
@@ -231,15 +305,14 @@ impl Stop<'_> {
             "Stop {}: location {}, {description}{start}\n",
             self.stop, self.id
         );
-        let stands = self.pose.map_or_else(
-            || "MISSING pose: the robot's reader leaves it at 0, 0, 0°".to_string(),
-            |pose| present::pose(&pose),
-        );
-        let gesture = self.gesture_target.map_or_else(
+        let mut gesture = self.gesture_target.map_or_else(
             || "MISSING gesture target: the robot does not point".to_string(),
             |target| Gesture::of(&target).sentence(self.gesture_arm),
         );
-        out.push_str(&format!("  {:<13}{stands}\n", "stands at"));
+        if let Some(loaded) = &self.target_as_loaded {
+            gesture.push_str(&format!(" (the robot's reader loads the target {loaded})"));
+        }
+        out.push_str(&format!("  {:<13}{}\n", "stands at", self.stands));
         out.push_str(&format!("  {:<13}{gesture}\n", "gesture"));
         for (said, label) in [(&self.before, "says before"), (&self.after, "says after")] {
             out.push_str(&said.text(label, language));
@@ -254,6 +327,7 @@ impl<'a> Said<'a> {
         phase: Phase,
         language: Language,
         lines: &Lines<'_>,
+        held: Held,
     ) -> Said<'a> {
         let message = location.map_or(Message::Missing, |l| Message::of(l, phase, language));
         let english = match language {
@@ -262,12 +336,24 @@ impl<'a> Said<'a> {
                 .and_then(|l| l.message(phase, Language::English))
                 .map(|m| m.value),
         };
+        let field = Field::Message(phase, language);
+        let differs = message
+            .value()
+            .filter(|v| !robot::agrees(field, &FieldValue::Text(v.value), &held))
+            .map(|_| robot::shown(field, &held));
+        let robot_says = match &held {
+            Held::Text(text) => Some(text.clone()),
+            Held::Nothing => Some(String::new()),
+            _ => None,
+        };
         Said {
             status: message.status(),
             text: message.value().map(|v| v.value),
             line: message.value().map(|v| lines.of(v.span)),
             english,
+            robot_says,
             message,
+            differs,
         }
     }
 
@@ -288,6 +374,12 @@ impl<'a> Said<'a> {
             ),
         };
         let mut out = format!("  {label:<13}{first}\n");
+        if let Some(loaded) = &self.differs {
+            out.push_str(&format!(
+                "  {:<13}but the robot's reader loads {loaded}\n",
+                ""
+            ));
+        }
         if !matches!(self.message, Message::Written(_)) && language != Language::English {
             let hint = match self.english {
                 Some(english) => format!("translate from English: {}", present::quoted(english)),

@@ -7,6 +7,7 @@
 
 pub mod field;
 pub mod language;
+pub mod robot;
 pub mod table;
 
 use std::borrow::Cow;
