@@ -81,7 +81,7 @@ fn differences(kb: &KnowledgeBase<'_>, loaded: &Loaded, text: &str) -> Vec<Diffe
                 ));
             }
         }
-        let numbers = |key: Key| robot.field(key).map(|field| field.value.clone());
+        let numbers = |key: Key| robot.field(key).map(|field| field.value);
         // The key of the line the pose was read from (a later line of the other pose key
         // may have been rejected).
         let pose_line_key = |at: u32| {

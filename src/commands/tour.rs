@@ -74,7 +74,7 @@ struct Tour<'a> {
     /// The version of the robot's reader whose view this is.
     reader: &'static str,
     /// The stops the reader loads, where they are not the file's (`null`: undefined).
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(rename = "robotTour", skip_serializing_if = "Option::is_none")]
     robot_tour: Option<Vec<Option<i32>>>,
     stops: Vec<Stop<'a>>,
     /// Messages written in the language (placeholders and missing ones are not).
@@ -120,6 +120,7 @@ struct Said<'a> {
     /// The English message, what a translator should translate (null for English itself).
     english: Option<&'a str>,
     /// What the robot says, as its reader loads the message (null: undefined).
+    #[serde(rename = "robotSays")]
     robot_says: Option<String>,
     #[serde(skip)]
     message: Message<'a>,

@@ -80,10 +80,10 @@ impl LoadedExport {
 
 impl LoadedLocationExport {
     fn new(location: &LoadedLocation, loaded: &Loaded, text: &[u8]) -> LoadedLocationExport {
-        let value = |key: Key| location.field(key).map(|field| &field.value);
+        let value = |key: Key| location.field(key).map(|field| field.value);
         let text_of = |key: Key| match value(key) {
             None => Some(String::new()),
-            Some(value) => loaded_text(value, text),
+            Some(value) => loaded_text(&value, text),
         };
         let numbers = |key: Key| match value(key) {
             None => Some([Some(0.0); 3]),

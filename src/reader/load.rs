@@ -3,17 +3,17 @@
 use std::collections::BTreeMap;
 
 use super::line::{self, LineRead, LoadedValue};
-use super::tree::{self, TreeShape};
+use super::tree::{ShapeBuilder, TreeShape};
 use super::Reader;
 use crate::model::Key;
 use crate::syntax::Span;
 
 /// What the robot holds after reading a file.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Loaded {
+pub struct Loaded<'a> {
     pub reader: Reader,
     /// By id, as `%d` read it (so possibly 0 or negative).
-    pub locations: BTreeMap<i32, LoadedLocation>,
+    pub locations: BTreeMap<i32, LoadedLocation<'a>>,
     /// `None` when no line set the tour.
     pub tour: Option<LoadedTour>,
     pub tree: TreeShape,
@@ -21,11 +21,17 @@ pub struct Loaded {
 
 /// One location as the robot holds it: each field set by a line, or never set (the
 /// robot's empty text or 0).
+///
+/// It keeps only where each field's line starts, and reads the line again when asked: a
+/// file of 100,000 locations would otherwise hold every value a second time.
 #[derive(Debug, Clone, PartialEq)]
-pub struct LoadedLocation {
+pub struct LoadedLocation<'a> {
     pub id: i32,
-    /// By [`Key::order`].
-    fields: [Option<Field>; Key::ALL.len()],
+    /// Where the `fgets` call that last set each field starts, plus one (0: none), by
+    /// [`Key::order`].
+    lines: [u32; Key::ALL.len()],
+    text: &'a [u8],
+    reader: Reader,
 }
 
 /// A field's value and the line (`fgets` call) it came from.
@@ -35,17 +41,16 @@ pub struct Field {
     pub value: LoadedValue,
 }
 
-impl LoadedLocation {
-    fn new(id: i32) -> LoadedLocation {
-        LoadedLocation {
-            id,
-            fields: Default::default(),
-        }
-    }
-
+impl LoadedLocation<'_> {
     /// The value of `key` (for the pose, either pose key), if a line set it.
-    pub fn field(&self, key: Key) -> Option<&Field> {
-        self.fields[key.order()].as_ref()
+    pub fn field(&self, key: Key) -> Option<Field> {
+        let start = self.lines[key.order()].checked_sub(1)? as usize;
+        let (_, chunk) = chunks(&self.text[start..], self.reader.line_buffer()).next()?;
+        let line = Span::new(start, start + chunk.len());
+        match line::read(chunk, start, self.reader) {
+            LineRead::Value { value, .. } => Some(Field { line, value }),
+            _ => unreachable!("the line set this field when it was read"),
+        }
     }
 }
 
@@ -65,21 +70,24 @@ pub struct LoadedTour {
 const TOUR_BUFFER: usize = 20;
 
 /// Loads `text` as `reader` does.
-pub fn load(text: &[u8], reader: Reader) -> Loaded {
+pub fn load(text: &[u8], reader: Reader) -> Loaded<'_> {
     let mut locations: BTreeMap<i32, LoadedLocation> = BTreeMap::new();
     let mut tour_line = None;
     let mut count = 0;
     let mut slots: Vec<Option<i32>> = Vec::new();
-    let mut visited = Vec::new();
+    let mut tree = ShapeBuilder::default();
     for (offset, chunk) in chunks(text, reader.line_buffer()) {
         let line = Span::new(offset, offset + chunk.len());
         match line::read(chunk, offset, reader) {
-            LineRead::Value { key, id, value, .. } => {
-                visited.push((id, 1));
-                let location = locations
-                    .entry(id)
-                    .or_insert_with(|| LoadedLocation::new(id));
-                location.fields[key.order()] = Some(Field { line, value });
+            LineRead::Value { key, id, .. } => {
+                tree.add(id, 1);
+                let location = locations.entry(id).or_insert_with(|| LoadedLocation {
+                    id,
+                    lines: [0; Key::ALL.len()],
+                    text,
+                    reader,
+                });
+                location.lines[key.order()] = line.start + 1;
             }
             LineRead::Tour { count: n, stops } => {
                 tour_line = Some(line);
@@ -111,7 +119,7 @@ pub fn load(text: &[u8], reader: Reader) -> Loaded {
         reader,
         locations,
         tour,
-        tree: tree::shape_of(visited),
+        tree: tree.shape(),
     }
 }
 
@@ -138,8 +146,8 @@ pub fn chunks(text: &[u8], buffer: usize) -> impl Iterator<Item = (usize, &[u8])
 mod tests {
     use super::*;
 
-    fn text_of<'t>(text: &'t str, field: Option<&Field>) -> &'t str {
-        match field.map(|field| &field.value) {
+    fn text_of(text: &str, field: Option<Field>) -> &str {
+        match field.map(|field| field.value) {
             Some(LoadedValue::Text(span)) => &text[span.range()],
             other => panic!("{other:?}"),
         }
@@ -166,13 +174,13 @@ mod tests {
             text_of(text, location.field(Key::RobotLocationDescription)),
             "Lab"
         );
-        let pose = location.field(Key::RobotLocationPose).map(|f| &f.value);
-        assert_eq!(pose, Some(&LoadedValue::Numbers([1.0, 2.0, 3.0])));
+        let pose = location.field(Key::RobotLocationPose).map(|f| f.value);
+        assert_eq!(pose, Some(LoadedValue::Numbers([1.0, 2.0, 3.0])));
         let seed = load(text.as_bytes(), Reader::D542);
         let pose = seed.locations[&2]
             .field(Key::RobotLocation)
-            .map(|f| &f.value);
-        assert_eq!(pose, Some(&LoadedValue::Numbers([9.0, 9.0, 9.0])));
+            .map(|f| f.value);
+        assert_eq!(pose, Some(LoadedValue::Numbers([9.0, 9.0, 9.0])));
     }
 
     #[test]

@@ -33,34 +33,51 @@ impl TreeShape {
 /// The shape of the tree that loading `lines` builds: for each run of lines of one
 /// location, in file order, its id and how many lines load a value.
 pub fn shape_of(lines: impl IntoIterator<Item = (i32, u32)>) -> TreeShape {
-    let mut shape = TreeShape::default();
-    // Ids in ascending order build a chain, whose depths need no map.
-    let mut chain: Vec<i32> = Vec::new();
-    let mut depths: Option<BTreeMap<i32, u32>> = None;
+    let mut builder = ShapeBuilder::default();
     for (id, count) in lines {
-        let depth = match &mut depths {
+        builder.add(id, count);
+    }
+    builder.shape
+}
+
+/// Builds a [`TreeShape`] one run of lines at a time, as a file is read.
+#[derive(Debug, Default)]
+pub struct ShapeBuilder {
+    shape: TreeShape,
+    /// While ids come in ascending order the tree is a chain, whose depths need no map.
+    chain: Vec<i32>,
+    depths: Option<BTreeMap<i32, u32>>,
+}
+
+impl ShapeBuilder {
+    /// `count` lines of location `id`, which load values.
+    pub fn add(&mut self, id: i32, count: u32) {
+        let depth = match &mut self.depths {
             Some(depths) => insert(depths, id),
-            None => match chain.last() {
-                Some(&last) if id == last => chain.len() as u32,
+            None => match self.chain.last() {
+                Some(&last) if id == last => self.chain.len() as u32,
                 Some(&last) if id < last => {
-                    let mut map: BTreeMap<i32, u32> = chain.iter().copied().zip(1..).collect();
+                    let mut map: BTreeMap<i32, u32> = self.chain.iter().copied().zip(1..).collect();
                     let depth = insert(&mut map, id);
-                    depths = Some(map);
+                    self.depths = Some(map);
                     depth
                 }
                 _ => {
-                    chain.push(id);
-                    chain.len() as u32
+                    self.chain.push(id);
+                    self.chain.len() as u32
                 }
             },
         };
-        if depth as usize > shape.height {
-            shape.height = depth as usize;
-            shape.deepest = Some(id);
+        if depth as usize > self.shape.height {
+            self.shape.height = depth as usize;
+            self.shape.deepest = Some(id);
         }
-        shape.visits += u64::from(depth) * u64::from(count);
+        self.shape.visits += u64::from(depth) * u64::from(count);
     }
-    shape
+
+    pub fn shape(&self) -> TreeShape {
+        self.shape
+    }
 }
 
 /// The shape of the tree that a file builds, from each location's first line (where it

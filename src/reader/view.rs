@@ -37,10 +37,10 @@ pub fn held(loaded: &Loaded, text: &[u8], id: u32, key: Key) -> Held {
         .and_then(|location| location.field(key));
     let lossy =
         |span: &crate::syntax::Span| String::from_utf8_lossy(&text[span.range()]).into_owned();
-    match field.map(|field| &field.value) {
+    match field.map(|field| field.value) {
         None => Held::Nothing,
-        Some(LoadedValue::Text(span)) => Held::Text(lossy(span)),
-        Some(LoadedValue::Numbers(numbers)) => Held::Numbers(*numbers),
+        Some(LoadedValue::Text(span)) => Held::Text(lossy(&span)),
+        Some(LoadedValue::Numbers(numbers)) => Held::Numbers(numbers),
         Some(LoadedValue::Words(words)) => Held::Words(words.iter().map(lossy).collect()),
         Some(LoadedValue::Undefined) => Held::Undefined,
     }

@@ -114,9 +114,12 @@ fn json_format() {
             "status": "placeholder",
             "text": "No message in isiZulu",
             "line": 5,
-            "english": "Welcome the the robotics lab at Carnegie Mellon University Africa"
+            "english": "Welcome the the robotics lab at Carnegie Mellon University Africa",
+            "robotSays": "No message in isiZulu"
         })
     );
+    assert_eq!(json["reader"], "d5.4.2");
+    assert!(json.get("robotTour").is_none());
     assert_eq!(
         json["stops"][1]["after"]["english"],
         serde_json::Value::Null
@@ -152,4 +155,39 @@ fn control_characters_are_escaped() {
         assert_eq!(out.code, 0);
         assert_terminal_safe(&out.stdout);
     }
+}
+
+#[test]
+fn the_tour_as_the_chosen_reader_loads_it() {
+    // Today's robot ignores `robotLocation`: it stands at the origin at every stop.
+    let out = run(&["tour", "--reader", "2025-06", SEED]);
+    assert_eq!(out.code, 0);
+    assert!(out.stdout.starts_with("Tour of data/environmentKnowledgeBaseInput.dat in English: 5 stops (1 → 4 → 3 → 2 → 5), as reader 2025-06 loads it\n"), "{}", out.stdout);
+    assert!(
+        out.stdout
+            .contains("stands at    0.0, 0.0, 0.0° (the file says 2.6, 8.1, -90.0°)"),
+        "{}",
+        out.stdout
+    );
+    // A last message without a newline loses its last letter; an indented tour is no tour.
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("kb.dat");
+    let text = std::fs::read_to_string(fixture("current.dat")).unwrap();
+    let text = text.replace("tourSpecification", " tourSpecification");
+    std::fs::write(&path, text.trim_end()).unwrap();
+    let out = run(&[
+        "tour",
+        "--lang",
+        "rw",
+        "--format",
+        "json",
+        path.to_str().unwrap(),
+    ]);
+    let json: serde_json::Value = serde_json::from_str(&out.stdout).unwrap();
+    assert_eq!(json["robotTour"], serde_json::json!([]));
+    let text = run(&["tour", "--lang", "rw", path.to_str().unwrap()]).stdout;
+    assert!(
+        text.contains("The robot's reader loads another tour: no tour at all"),
+        "{text}"
+    );
 }
