@@ -9,8 +9,14 @@ use serde::Serialize;
 use super::{CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::export::ExportedLocation;
-use crate::model::{Dialect, Language, Location, Phase};
-use crate::present::{self, language, table, Gesture, Message, TourPositions, MESSAGE_LEGEND};
+use crate::model::{Dialect, Key, Language, Location, Phase};
+use crate::present::field::Field;
+use crate::present::{
+    self, language, robot, table, Gesture, Message, TourPositions, MESSAGE_LEGEND,
+};
+use crate::reader::line::LoadedValue;
+use crate::reader::{self, view, Loaded};
+use crate::render::escape::escape;
 use crate::render::safe_json as json;
 
 #[derive(Debug, clap::Args)]
@@ -41,18 +47,29 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let source = context.read(&path)?;
     let checked = check(&source, &options);
     present::note_errors(&checked, context.quiet);
+    let text = checked.source.text().as_bytes();
+    let loaded = reader::load(text, checked.reader);
     let mut stdout = std::io::stdout().lock();
     match args.format {
-        LocationsFormat::Table => stdout.write_all(render_table(&checked).as_bytes())?,
+        LocationsFormat::Table => stdout.write_all(render_table(&checked, &loaded).as_bytes())?,
         LocationsFormat::Json => json::write(&JsonLocations::new(&checked), &mut stdout)?,
-        LocationsFormat::Classic => stdout.write_all(render_classic(&checked).as_bytes())?,
+        LocationsFormat::Classic => stdout.write_all(render_classic(&loaded).as_bytes())?,
     }
     stdout.flush()?;
     Ok(Exit::Clean)
 }
 
-fn render_table(checked: &Checked<'_>) -> String {
+/// The table of locations, each value as the chosen reader loads it, marked where the file
+/// says otherwise.
+fn render_table(checked: &Checked<'_>, loaded: &Loaded<'_>) -> String {
     let kb = &checked.kb;
+    let text = checked.source.text().as_bytes();
+    let as_loaded = |location: &Location<'_>, field: Field, key: Key| {
+        let held = view::held(loaded, text, location.id, key);
+        field
+            .get(location)
+            .map(|(value, _)| robot::as_loaded(field, &value, &held, checked.reader))
+    };
     let with_arm = kb.locations().iter().any(|l| l.gesture_arm.is_some());
     let mut header = vec!["id", "description", "pose (x, y, θ)", "gesture target"];
     if with_arm {
@@ -64,22 +81,18 @@ fn render_table(checked: &Checked<'_>) -> String {
     for location in kb.locations() {
         let mut row = vec![
             location.id.to_string(),
-            location
-                .description()
-                .map_or_else(|| "—".to_string(), |d| present::text(d.value).into_owned()),
-            location
-                .pose
-                .map_or_else(|| "—".to_string(), |p| present::pose(&p.value)),
+            as_loaded(location, Field::Description, Key::RobotLocationDescription)
+                .unwrap_or_else(|| "—".to_string()),
+            as_loaded(location, Field::Pose, Key::RobotLocationPose)
+                .unwrap_or_else(|| "—".to_string()),
             location
                 .gesture_target
                 .map_or_else(|| "—".to_string(), |t| Gesture::of(&t.value).short()),
         ];
         if with_arm {
             row.push(
-                location
-                    .gesture_arm
-                    .map_or("—", |arm| arm.value.name())
-                    .to_string(),
+                as_loaded(location, Field::GestureArm, Key::GestureArm)
+                    .unwrap_or_else(|| "—".to_string()),
             );
         }
         row.push(message_marks(location));
@@ -88,7 +101,10 @@ fn render_table(checked: &Checked<'_>) -> String {
     }
     let count = kb.locations().len();
     let plural = if count == 1 { "" } else { "s" };
-    format!("{table}\n{count} location{plural}. {MESSAGE_LEGEND}\n")
+    format!(
+        "{table}\n{count} location{plural}, as reader {} loads them. {MESSAGE_LEGEND}\n",
+        checked.reader
+    )
 }
 
 /// `before EN ✓ ZU ~ RW ~` and `after` on a second line.
@@ -127,6 +143,8 @@ fn tour_cell(positions: &[usize]) -> String {
 /// `ekb locations --format json`.
 #[derive(Serialize)]
 struct JsonLocations {
+    /// The version of the robot's reader the file was checked against.
+    reader: &'static str,
     dialect: Option<Dialect>,
     locations: Vec<JsonLocation>,
     tour: Option<Vec<u32>>,
@@ -190,6 +208,7 @@ impl JsonLocations {
             })
             .collect();
         JsonLocations {
+            reader: checked.reader.name(),
             dialect: checked.kb.dialect,
             locations,
             tour: checked
@@ -205,33 +224,42 @@ impl JsonLocations {
 const CLASSIC_WIDTH: usize = 33;
 
 /// The layout of the robot's `printToScreen()` and of the document's example application
-/// (section 6): one block per location, in id order. As on the robot, numbers are 32-bit
-/// floats printed with one decimal, and what the file lacks prints as 0.0 or nothing.
-fn render_classic(checked: &Checked<'_>) -> String {
+/// (section 6): one block per location, in id order, of what the chosen reader holds. As on
+/// the robot, numbers are 32-bit floats printed with one decimal, and what no line set prints
+/// as 0.0 or nothing.
+fn render_classic(loaded: &Loaded<'_>) -> String {
     let mut out = String::new();
-    let float = |n: f64| format!("{:.1}", n as f32);
-    let triple = |[a, b, c]: [f64; 3]| format!("({}, {} {})", float(a), float(b), float(c));
-    for location in checked.kb.locations() {
+    let triple = |numbers: Option<LoadedValue>| {
+        let [a, b, c] = match numbers {
+            Some(LoadedValue::Numbers(numbers)) => numbers,
+            _ => [0.0; 3],
+        };
+        format!("({a:.1}, {b:.1} {c:.1})")
+    };
+    for location in loaded.locations.values() {
         let label = |name: &str| format!("{name:<CLASSIC_WIDTH$}");
-        let pose = location.pose.map(|p| p.value);
-        let target = location.gesture_target.map(|t| t.value);
+        let text = |key: Key| match location.field(key).map(|field| field.value) {
+            Some(LoadedValue::Text(span)) => {
+                escape(&String::from_utf8_lossy(&loaded.text()[span.range()])).into_owned()
+            }
+            _ => String::new(),
+        };
+        let numbers = |key: Key| location.field(key).map(|field| field.value);
         out.push_str(&format!("{}{:<4} \n", label("Key"), location.id));
         out.push_str(&format!(
             "{}{} \n",
             label("Location Description"),
-            location
-                .description()
-                .map_or("".into(), |d| present::text(d.value))
+            text(Key::RobotLocationDescription)
         ));
         out.push_str(&format!(
             "{}{}\n",
             label("Robot Location"),
-            triple(pose.map_or([0.0; 3], |p| [p.x, p.y, p.theta]))
+            triple(numbers(loaded.reader.pose_key()))
         ));
         out.push_str(&format!(
             "{}{} \n",
             label("Gesture Target"),
-            triple(target.map_or([0.0; 3], |t| [t.x, t.y, t.z]))
+            triple(numbers(Key::GestureTarget))
         ));
         for phase in Phase::ALL {
             let prefix = match phase {
@@ -239,11 +267,10 @@ fn render_classic(checked: &Checked<'_>) -> String {
                 Phase::Post => "Post-Gesture Message",
             };
             for lang in Language::ALL {
-                let text = location.message(phase, lang).map_or("", |m| m.value);
                 out.push_str(&format!(
                     "{}{} \n",
                     label(&format!("{prefix} {}", lang.name())),
-                    present::text(text)
+                    text(Key::for_message(phase, lang))
                 ));
             }
         }

@@ -17,6 +17,7 @@ pub struct Loaded<'a> {
     /// `None` when no line set the tour.
     pub tour: Option<LoadedTour>,
     pub tree: TreeShape,
+    text: &'a [u8],
 }
 
 /// One location as the robot holds it: each field set by a line, or never set (the
@@ -51,6 +52,13 @@ impl LoadedLocation<'_> {
             LineRead::Value { value, .. } => Some(Field { line, value }),
             _ => unreachable!("the line set this field when it was read"),
         }
+    }
+}
+
+impl<'a> Loaded<'a> {
+    /// The file the values are spans of.
+    pub fn text(&self) -> &'a [u8] {
+        self.text
     }
 }
 
@@ -120,6 +128,7 @@ pub fn load(text: &[u8], reader: Reader) -> Loaded<'_> {
         locations,
         tour,
         tree: tree.shape(),
+        text,
     }
 }
 

@@ -123,3 +123,38 @@ fn without_a_file_the_configured_knowledge_base_is_read() {
         run(&["locations", "--format", "json", SEED]).stdout
     );
 }
+
+#[test]
+fn values_as_the_chosen_reader_loads_them() {
+    let out = run(&["locations", "--reader", "2025-06", SEED]);
+    assert_eq!(out.code, 0);
+    assert!(
+        out.stdout
+            .contains("0.0, 0.0, 0.0° (the file says 2.6, 8.1, -90.0°)"),
+        "{}",
+        out.stdout
+    );
+    assert!(out
+        .stdout
+        .contains("5 locations, as reader 2025-06 loads them."));
+    // The robot's own printout prints what it holds.
+    let classic = run(&[
+        "locations",
+        "--format",
+        "classic",
+        "--reader",
+        "2025-06",
+        SEED,
+    ]);
+    assert!(
+        classic
+            .stdout
+            .contains("Robot Location                   (0.0, 0.0 0.0)\n"),
+        "{}",
+        classic.stdout
+    );
+    assert!(!classic.stdout.contains("(2.6, 8.1 -90.0)"));
+    let json = run(&["locations", "--format", "json", "--reader", "2026-02", SEED]);
+    let json: serde_json::Value = serde_json::from_str(&json.stdout).unwrap();
+    assert_eq!(json["reader"], "2026-02");
+}
