@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::check;
-use crate::model::export::ExportedKnowledgeBase;
+use crate::model::export::{ExportView, ExportedKnowledgeBase};
 use crate::render::safe_json as json;
 use crate::render::{self, escape::escape, Format, RenderOptions};
 
@@ -74,10 +74,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         )?;
         return Ok(Exit::Findings);
     }
-    write_output(
-        args.output.as_deref(),
-        &ExportedKnowledgeBase::from(&checked.kb),
-    )?;
+    write_output(args.output.as_deref(), &ExportView::new(&checked.kb))?;
     Ok(Exit::Clean)
 }
 
