@@ -36,7 +36,21 @@ pub struct Fixed {
 
 /// Applies every fix the checks of `source` offer, pass after pass.
 pub fn fix(source: &SourceFile, options: &Options) -> Fixed {
-    let mut text = source.text().to_string();
+    let (text, counts) = fix_unless_clean(source, options);
+    Fixed {
+        text: text.unwrap_or_else(|| source.text().to_string()),
+        counts,
+    }
+}
+
+/// [`fix`], whose text is `None` when nothing was fixed: a file with nothing to fix is
+/// checked as it is, never copied (two copies of 60 MB were most of `ekb fix --diff`'s
+/// memory).
+pub fn fix_unless_clean(
+    source: &SourceFile,
+    options: &Options,
+) -> (Option<String>, BTreeMap<&'static str, usize>) {
+    let mut fixed: Option<String> = None;
     let mut counts = BTreeMap::new();
     let mut options = *options;
     let mut passes = 0;
@@ -47,22 +61,24 @@ pub fn fix(source: &SourceFile, options: &Options) -> Fixed {
     // Whether the order of ids crashes the reader: no edit changes that order.
     let mut crashes_reader = false;
     for _ in 0..MAX_PASSES + most_capped_passes {
-        let file = SourceFile::from_bytes(source.name(), text.clone().into_bytes());
-        let checked = check(&file, &options);
+        let file = fixed
+            .as_ref()
+            .map(|text| SourceFile::from_bytes(source.name(), text.clone().into_bytes()));
+        let file = file.as_ref().unwrap_or(source);
+        let checked = check(file, &options);
         crashes_reader = checked
             .diagnostics
             .iter()
             .any(|d| std::ptr::eq(d.rule, &COMPAT_READER_CRASH));
         // `--verbose` shows the file as read, once; later passes read it again.
         options.verbose = false;
-        let (new, applied) = apply(&text, &checked.diagnostics);
-        if applied.is_empty() {
+        let Some((new, applied)) = apply(file.text(), &checked.diagnostics) else {
             break;
-        }
+        };
         for rule in applied {
             *counts.entry(rule).or_insert(0) += 1;
         }
-        text = new;
+        fixed = Some(new);
         if !saw_only_some(&checked.diagnostics) {
             passes += 1;
             if passes == MAX_PASSES {
@@ -73,13 +89,14 @@ pub fn fix(source: &SourceFile, options: &Options) -> Fixed {
     if crashes_reader {
         // The one fix that is no edit: the location blocks in a balanced order, which
         // `ekb fmt`'s layout writes.
-        if let Ok(mut document) = Document::parse(&text) {
+        let text = fixed.as_deref().unwrap_or(source.text());
+        if let Ok(mut document) = Document::parse(text) {
             document.balance();
-            text = document.render();
+            fixed = Some(document.render());
             *counts.entry(COMPAT_READER_CRASH.name).or_insert(0) += 1;
         }
     }
-    Fixed { text, counts }
+    (fixed, counts)
 }
 
 /// Whether a fixable rule has as many findings as `check` keeps: it may have more, which the
@@ -98,8 +115,8 @@ fn saw_only_some(diagnostics: &[Diagnostic]) -> bool {
 
 /// Applies the fixes of `diagnostics` to `text`, each whole or not at all, skipping a fix
 /// whose edits clash with those of one taken before it. Returns the new text and the rule
-/// of each fix applied.
-pub fn apply(text: &str, diagnostics: &[Diagnostic]) -> (String, Vec<&'static str>) {
+/// of each fix applied, or `None` if there was none to apply.
+pub fn apply(text: &str, diagnostics: &[Diagnostic]) -> Option<(String, Vec<&'static str>)> {
     let fixes: Vec<(&'static str, Vec<Edit>)> = diagnostics
         .iter()
         .filter_map(|diagnostic| {
@@ -117,7 +134,7 @@ pub fn apply(text: &str, diagnostics: &[Diagnostic]) -> (String, Vec<&'static st
             applied.push(*rule);
         }
     }
-    (accepted.apply(text), applied)
+    (!applied.is_empty()).then(|| (accepted.apply(text), applied))
 }
 
 /// `edit`, made to keep the column of the id when it renames the key of a line whose key is

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::{check, Checked};
-use crate::model::export::ExportedKnowledgeBase;
+use crate::model::export::{ExportView, ExportedKnowledgeBase};
 use crate::reader::{self, export::LoadedExport};
 use crate::render::safe_json as json;
 use crate::render::{self, escape::escape, Format, RenderOptions};
@@ -68,10 +68,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         // Only the errors stop the export; the warnings would bury them.
         return report_to_stderr(checked.errors_only(), &why, context);
     }
-    write_output(
-        args.output.as_deref(),
-        &ExportedKnowledgeBase::from(&checked.kb),
-    )?;
+    write_output(args.output.as_deref(), &ExportView::new(&checked.kb))?;
     Ok(Exit::Clean)
 }
 

@@ -56,14 +56,22 @@ fn fix_file(
     if let Some(target) = args.dialect {
         refuse_inexpressible(&source, target)?;
     }
-    let fixed = fixing::fix(&source, options);
+    let (fixed, counts) = fixing::fix_unless_clean(&source, options);
     let mode = if args.diff { Mode::Diff } else { Mode::Write };
     let style = DiffStyle {
         color: context.color_stdout(),
     };
-    let changed = rewrite::deliver(path, &source, &fixed.text, mode, style)?;
-    let after = SourceFile::from_bytes(source.name(), fixed.text.into_bytes());
-    let errors_left = report(&after, &fixed.counts, options, context, mode)?;
+    let new_text = fixed.as_deref().unwrap_or(source.text());
+    let changed = rewrite::deliver(path, &source, new_text, mode, style)?;
+    // Nothing fixed: the file is what is left, without a copy of it.
+    let after = fixed.map(|text| SourceFile::from_bytes(source.name(), text.into_bytes()));
+    let errors_left = report(
+        after.as_ref().unwrap_or(&source),
+        &counts,
+        options,
+        context,
+        mode,
+    )?;
     Ok(match mode {
         Mode::Diff if changed => Exit::Findings,
         Mode::Write if errors_left => Exit::Findings,

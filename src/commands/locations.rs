@@ -1,7 +1,8 @@
 //! `ekb locations [FILE]`: every location in id order, as a table, JSON, or the layout of
 //! the robot's own `printToScreen()`.
 
-use std::io::Write;
+use std::fmt::Write as _;
+use std::io::{self, BufWriter, Write};
 use std::path::PathBuf;
 
 use serde::Serialize;
@@ -49,9 +50,9 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     present::note_errors(&checked, context.quiet);
     let text = checked.source.text().as_bytes();
     let loaded = reader::load(text, checked.reader);
-    let mut stdout = std::io::stdout().lock();
+    let mut stdout = BufWriter::new(std::io::stdout().lock());
     match args.format {
-        LocationsFormat::Table => stdout.write_all(render_table(&checked, &loaded).as_bytes())?,
+        LocationsFormat::Table => write_table(&checked, &loaded, &mut stdout)?,
         LocationsFormat::Json => json::write(&JsonLocations::new(&checked), &mut stdout)?,
         LocationsFormat::Classic => stdout.write_all(render_classic(&loaded).as_bytes())?,
     }
@@ -61,7 +62,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
 
 /// The table of locations, each value as the chosen reader loads it, marked where the file
 /// says otherwise.
-fn render_table(checked: &Checked<'_>, loaded: &Loaded<'_>) -> String {
+fn write_table(checked: &Checked<'_>, loaded: &Loaded<'_>, out: &mut impl Write) -> io::Result<()> {
     let kb = &checked.kb;
     let text = checked.source.text().as_bytes();
     let as_loaded = |location: &Location<'_>, field: Field, key: Key| {
@@ -76,7 +77,7 @@ fn render_table(checked: &Checked<'_>, loaded: &Loaded<'_>) -> String {
         header.push("arm");
     }
     header.extend(["messages", "tour stop"]);
-    let mut table = table::new(&header);
+    let mut table = table::Rows::new(&header);
     let positions = TourPositions::new(kb);
     for location in kb.locations() {
         let mut row = vec![
@@ -99,30 +100,34 @@ fn render_table(checked: &Checked<'_>, loaded: &Loaded<'_>) -> String {
         row.push(tour_cell(positions.of(location.id)));
         table.add_row(row);
     }
+    table.write(out)?;
     let count = kb.locations().len();
     let plural = if count == 1 { "" } else { "s" };
-    format!(
-        "{table}\n{count} location{plural}, as reader {} loads them. {MESSAGE_LEGEND}\n",
+    writeln!(
+        out,
+        "\n{count} location{plural}, as reader {} loads them. {MESSAGE_LEGEND}",
         checked.reader
     )
 }
 
 /// `before EN ✓ ZU ~ RW ~` and `after` on a second line.
 fn message_marks(location: &Location<'_>) -> String {
-    Phase::ALL
-        .iter()
-        .map(|&phase| {
-            let marks: Vec<String> = Language::ALL
-                .iter()
-                .map(|&lang| {
-                    let mark = Message::of(location, phase, lang).mark();
-                    format!("{} {mark}", language::code(lang))
-                })
-                .collect();
-            format!("{:<6} {}", phase.name(), marks.join(" "))
-        })
-        .collect::<Vec<_>>()
-        .join("\n")
+    let mut marks = String::with_capacity(64);
+    for (i, &phase) in Phase::ALL.iter().enumerate() {
+        if i > 0 {
+            marks.push('\n');
+        }
+        // Pieces pushed, not formatted: this is two cells of every row of a table that may
+        // have 100,000 of them.
+        write!(marks, "{:<6}", phase.name()).expect("a String takes any text");
+        for &lang in Language::ALL.iter() {
+            marks.push(' ');
+            marks.push_str(language::code(lang));
+            marks.push(' ');
+            marks.push_str(Message::of(location, phase, lang).mark());
+        }
+    }
+    marks
 }
 
 /// `1 (start)`, `2, 5` or `—` (not on the tour).

@@ -27,24 +27,14 @@ pub fn number(n: f64) -> String {
     format!("{n:?}")
 }
 
-/// `2.6, 8.1, -90.0°`
+/// `2.6, 8.1, -90.0°` (each number as [`number`] writes it).
 pub fn pose(pose: &Pose) -> String {
-    format!(
-        "{}, {}, {}°",
-        number(pose.x),
-        number(pose.y),
-        number(pose.theta)
-    )
+    format!("{:?}, {:?}, {:?}°", pose.x, pose.y, pose.theta)
 }
 
-/// `3.2, 8.4, 0.82`
+/// `3.2, 8.4, 0.82` (each number as [`number`] writes it).
 pub fn point(point: &Point) -> String {
-    format!(
-        "{}, {}, {}",
-        number(point.x),
-        number(point.y),
-        number(point.z)
-    )
+    format!("{:?}, {:?}, {:?}", point.x, point.y, point.z)
 }
 
 /// Whether, and at what, the robot gestures at a location.

@@ -2,7 +2,7 @@
 //! terminal shows written as a `\uXXXX` escape. The JSON means exactly the same; only its
 //! spelling is safe to print.
 
-use std::io::{self, Write};
+use std::io::{self, BufWriter, Write};
 
 use serde::Serialize;
 use serde_json::ser::{Formatter, PrettyFormatter};
@@ -11,10 +11,14 @@ use crate::render::escape::is_unsafe;
 
 /// Writes `value` as pretty JSON and a newline.
 pub fn write<T: Serialize + ?Sized>(value: &T, out: &mut dyn Write) -> io::Result<()> {
+    // The serializer writes a few bytes at a time: through a buffer, not a call (and, to a
+    // line-buffered standard output, a system call per line) each.
+    let mut out = BufWriter::with_capacity(1 << 16, out);
     let mut serializer =
-        serde_json::Serializer::with_formatter(&mut *out, SafeFormatter(PrettyFormatter::new()));
+        serde_json::Serializer::with_formatter(&mut out, SafeFormatter(PrettyFormatter::new()));
     value.serialize(&mut serializer).map_err(io::Error::from)?;
-    writeln!(out)
+    writeln!(out)?;
+    out.flush()
 }
 
 /// [`PrettyFormatter`] that also escapes what [`is_unsafe`] flags (serde_json escapes only
@@ -27,6 +31,12 @@ impl Formatter for SafeFormatter<'_> {
         writer: &mut W,
         fragment: &str,
     ) -> io::Result<()> {
+        // Nearly all text is printable ASCII: checking bytes (without stopping early, so that
+        // the check is vectorised) spares decoding characters.
+        let printable = |ok, &b: &u8| ok & matches!(b, b' '..=b'~');
+        if fragment.as_bytes().iter().fold(true, printable) {
+            return writer.write_all(fragment.as_bytes());
+        }
         let mut rest = fragment;
         while let Some(at) = rest.find(is_unsafe) {
             writer.write_all(&rest.as_bytes()[..at])?;
