@@ -343,7 +343,7 @@ impl<'a> Said<'a> {
             .filter(|v| !robot::agrees(field, &FieldValue::Text(v.value), &held))
             .map(|_| robot::shown(field, &held));
         let robot_says = match &held {
-            Held::Text(text) => Some(text.clone()),
+            Held::Text(text) => Some(text.clone().into_owned()),
             Held::Nothing => Some(String::new()),
             _ => None,
         };

@@ -25,7 +25,13 @@ pub fn agrees(field: Field, written: &FieldValue<'_>, held: &Held) -> bool {
         (Held::Text(held), FieldValue::Text(text)) => held == text,
         (Held::Text(held), FieldValue::Arm(arm)) => held == arm.name(),
         (Held::Words(held), FieldValue::Words(words)) => held == words,
-        (Held::Numbers(_) | Held::Nothing, _) => shown(field, held) == written.human(false),
+        (Held::Numbers(held), FieldValue::Pose(pose)) => {
+            *held == [pose.x, pose.y, pose.theta].map(|n| n as f32)
+        }
+        (Held::Numbers(held), FieldValue::Point(point)) => {
+            *held == [point.x, point.y, point.z].map(|n| n as f32)
+        }
+        (Held::Nothing, _) => shown(field, held) == written.human(false),
         _ => false,
     }
 }

@@ -4,6 +4,8 @@
 //! them; a value the reader took from past the end of its line (undefined), or a number
 //! JSON cannot hold, is `null`.
 
+use std::borrow::Cow;
+
 use serde::Serialize;
 
 use super::line::LoadedValue;
@@ -14,27 +16,27 @@ use crate::model::{Dialect, Key, Language, Phase};
 /// The whole of what the robot holds.
 #[derive(Debug, Serialize)]
 #[serde(rename_all = "camelCase")]
-pub struct LoadedExport {
+pub struct LoadedExport<'a> {
     /// The version of the reader.
     pub reader: &'static str,
     pub dialect: Dialect,
     /// In ascending id order.
-    pub locations: Vec<LoadedLocationExport>,
+    pub locations: Vec<LoadedLocationExport<'a>>,
     /// `null` when no line set the tour; a `null` stop holds whatever was in memory.
     pub tour: Option<Vec<Option<i32>>>,
 }
 
 #[derive(Debug, Serialize)]
 #[serde(rename_all = "camelCase")]
-pub struct LoadedLocationExport {
+pub struct LoadedLocationExport<'a> {
     pub id: i32,
-    pub description: Option<String>,
+    pub description: Option<Cow<'a, str>>,
     pub pose: Option<LoadedPose>,
     pub gesture_target: Option<LoadedPoint>,
-    pub gesture_arm: Option<String>,
-    pub pre_gesture_message: LoadedMessages,
-    pub post_gesture_message: LoadedMessages,
-    pub cultural_knowledge: Option<Vec<String>>,
+    pub gesture_arm: Option<Cow<'a, str>>,
+    pub pre_gesture_message: LoadedMessages<'a>,
+    pub post_gesture_message: LoadedMessages<'a>,
+    pub cultural_knowledge: Option<Vec<Cow<'a, str>>>,
 }
 
 #[derive(Debug, Serialize)]
@@ -52,16 +54,16 @@ pub struct LoadedPoint {
 }
 
 #[derive(Debug, Serialize)]
-pub struct LoadedMessages {
-    pub english: Option<String>,
+pub struct LoadedMessages<'a> {
+    pub english: Option<Cow<'a, str>>,
     #[serde(rename = "isiZulu")]
-    pub isi_zulu: Option<String>,
-    pub kinyarwanda: Option<String>,
+    pub isi_zulu: Option<Cow<'a, str>>,
+    pub kinyarwanda: Option<Cow<'a, str>>,
 }
 
-impl LoadedExport {
+impl<'a> LoadedExport<'a> {
     /// `loaded`, whose text values are spans of `text`.
-    pub fn new(loaded: &Loaded, text: &[u8]) -> LoadedExport {
+    pub fn new(loaded: &Loaded<'_>, text: &'a [u8]) -> LoadedExport<'a> {
         LoadedExport {
             reader: loaded.reader.name(),
             dialect: match loaded.reader.pose_key() {
@@ -78,11 +80,15 @@ impl LoadedExport {
     }
 }
 
-impl LoadedLocationExport {
-    fn new(location: &LoadedLocation, loaded: &Loaded, text: &[u8]) -> LoadedLocationExport {
+impl<'a> LoadedLocationExport<'a> {
+    fn new(
+        location: &LoadedLocation<'_>,
+        loaded: &Loaded<'_>,
+        text: &'a [u8],
+    ) -> LoadedLocationExport<'a> {
         let value = |key: Key| location.field(key).map(|field| field.value);
         let text_of = |key: Key| match value(key) {
-            None => Some(String::new()),
+            None => Some(Cow::Borrowed("")),
             Some(value) => loaded_text(&value, text),
         };
         let numbers = |key: Key| match value(key) {
@@ -117,7 +123,7 @@ impl LoadedLocationExport {
                 Some(LoadedValue::Words(words)) => Some(
                     words
                         .iter()
-                        .map(|span| String::from_utf8_lossy(&text[span.range()]).into_owned())
+                        .map(|span| String::from_utf8_lossy(&text[span.range()]))
                         .collect(),
                 ),
                 Some(_) => None,
@@ -127,9 +133,9 @@ impl LoadedLocationExport {
 }
 
 /// A loaded text (lossy where a cut split a character), or `None` when undefined.
-fn loaded_text(value: &LoadedValue, text: &[u8]) -> Option<String> {
+fn loaded_text<'a>(value: &LoadedValue, text: &'a [u8]) -> Option<Cow<'a, str>> {
     match value {
-        LoadedValue::Text(span) => Some(String::from_utf8_lossy(&text[span.range()]).into_owned()),
+        LoadedValue::Text(span) => Some(String::from_utf8_lossy(&text[span.range()])),
         _ => None,
     }
 }

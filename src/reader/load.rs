@@ -84,18 +84,38 @@ pub fn load(text: &[u8], reader: Reader) -> Loaded<'_> {
     let mut count = 0;
     let mut slots: Vec<Option<i32>> = Vec::new();
     let mut tree = ShapeBuilder::default();
+    // Most lines follow one of the same location: they are gathered here, and the map is
+    // updated once per run of them.
+    let mut run: Option<(i32, [u32; Key::ALL.len()], u32)> = None;
+    let mut end_run = |run: Option<(i32, [u32; Key::ALL.len()], u32)>| {
+        let Some((id, lines, count)) = run else {
+            return;
+        };
+        tree.add(id, count);
+        let location = locations.entry(id).or_insert_with(|| LoadedLocation {
+            id,
+            lines: [0; Key::ALL.len()],
+            text,
+            reader,
+        });
+        for (held, later) in location.lines.iter_mut().zip(lines) {
+            if later != 0 {
+                *held = later;
+            }
+        }
+    };
     for (offset, chunk) in chunks(text, reader.line_buffer()) {
         let line = Span::new(offset, offset + chunk.len());
         match line::read(chunk, offset, reader) {
             LineRead::Value { key, id, .. } => {
-                tree.add(id, 1);
-                let location = locations.entry(id).or_insert_with(|| LoadedLocation {
-                    id,
-                    lines: [0; Key::ALL.len()],
-                    text,
-                    reader,
-                });
-                location.lines[key.order()] = line.start + 1;
+                if run.as_ref().is_none_or(|(run_id, ..)| *run_id != id) {
+                    end_run(run.take());
+                    run = Some((id, [0; Key::ALL.len()], 0));
+                }
+                if let Some((_, lines, count)) = &mut run {
+                    lines[key.order()] = line.start + 1;
+                    *count += 1;
+                }
             }
             LineRead::Tour { count: n, stops } => {
                 tour_line = Some(line);
@@ -113,6 +133,8 @@ pub fn load(text: &[u8], reader: Reader) -> Loaded<'_> {
             | LineRead::TourFailed => {}
         }
     }
+    end_run(run);
+    let tree = tree.shape();
     let tour = tour_line.map(|line| {
         let shown = (count.max(0) as usize).min(slots.len().max(TOUR_BUFFER));
         LoadedTour {
@@ -127,7 +149,7 @@ pub fn load(text: &[u8], reader: Reader) -> Loaded<'_> {
         reader,
         locations,
         tour,
-        tree: tree.shape(),
+        tree,
         text,
     }
 }

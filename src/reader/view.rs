@@ -1,18 +1,20 @@
 //! One field of one location as the robot holds it, for views that show it beside what the
 //! file says (`ekb show`, `ekb tour`).
 
+use std::borrow::Cow;
+
 use super::line::LoadedValue;
 use super::Loaded;
 use crate::model::Key;
 
-/// What the robot holds in one field.
+/// What the robot holds in one field; its texts are the file's.
 #[derive(Debug, Clone, PartialEq)]
-pub enum Held {
+pub enum Held<'a> {
     /// A text (the description, a message, the arm of `2026-03`), lossy where a cut split a
     /// character.
-    Text(String),
+    Text(Cow<'a, str>),
     Numbers([f32; 3]),
-    Words(Vec<String>),
+    Words(Vec<Cow<'a, str>>),
     /// No line set it: the robot's empty text, or 0.
     Nothing,
     /// The reader took it from past the end of its line.
@@ -23,7 +25,7 @@ pub enum Held {
 
 /// What `loaded` holds for `key` (for the pose, either pose key) at location `id`; `text` is
 /// the file the values are spans of.
-pub fn held(loaded: &Loaded, text: &[u8], id: u32, key: Key) -> Held {
+pub fn held<'a>(loaded: &Loaded<'_>, text: &'a [u8], id: u32, key: Key) -> Held<'a> {
     let key = match key {
         Key::RobotLocation | Key::RobotLocationPose => loaded.reader.pose_key(),
         other => other,
@@ -35,8 +37,7 @@ pub fn held(loaded: &Loaded, text: &[u8], id: u32, key: Key) -> Held {
         .ok()
         .and_then(|id| loaded.locations.get(&id))
         .and_then(|location| location.field(key));
-    let lossy =
-        |span: &crate::syntax::Span| String::from_utf8_lossy(&text[span.range()]).into_owned();
+    let lossy = |span: &crate::syntax::Span| String::from_utf8_lossy(&text[span.range()]);
     match field.map(|field| field.value) {
         None => Held::Nothing,
         Some(LoadedValue::Text(span)) => Held::Text(lossy(&span)),
