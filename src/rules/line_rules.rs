@@ -132,3 +132,108 @@ impl LineFindings for LineRules {
         compat::compat_crlf::check(&self.crlf_endings, &mut self.found);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::check::Diagnostics;
+    use crate::model::build::{build_in_parts, Options};
+    use crate::syntax::BOM;
+
+    /// Builds `text` in one part and in 2 to 6, and asserts the same findings.
+    fn assert_parts_agree(text: &str) {
+        let options = Options::default();
+        let mut expected = Diagnostics::default();
+        let whole = build_in_parts(text, &options, 1, &mut expected);
+        for parts in 2..=6 {
+            let mut found = Diagnostics::default();
+            let kb = build_in_parts(text, &options, parts, &mut found);
+            assert_eq!(kb, whole, "{parts} parts of {text:?}");
+            assert_eq!(*found, *expected, "{parts} parts of {text:?}");
+        }
+    }
+
+    #[test]
+    fn every_line_rule_finds_in_parts_what_it_finds_in_one() {
+        let mut text = String::from(BOM);
+        for (id, line) in (1..).zip(LINES) {
+            text.push_str(&line.replace('#', &(id % 3 + 1).to_string()));
+            text.push_str(if id % 2 == 0 { "\r\n" } else { "\n" });
+        }
+        let mut found = Diagnostics::default();
+        build_in_parts(&text, &Options::default(), 1, &mut found);
+        let mut rules: Vec<&str> = found.iter().map(|d| d.rule.name).collect();
+        rules.sort_unstable();
+        rules.dedup();
+        assert_eq!(
+            rules,
+            [
+                "compat-crlf",
+                "compat-leading-symbol",
+                "control-character",
+                "duplicate-key",
+                "empty-value",
+                "invalid-id",
+                "invalid-number",
+                "invalid-value",
+                "key-case",
+                "missing-id",
+                "mixed-dialect",
+                "tour-duplicate-spec",
+                "trailing-whitespace",
+                "unknown-key",
+                "wrong-arity"
+            ]
+        );
+        assert_parts_agree(&text);
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(200))]
+        /// Any mix of lines (duplicates, both dialects, tours, bad values, CRLF, no final
+        /// newline) has the same findings read in parts as in one.
+        #[test]
+        fn any_file_has_the_same_findings_in_parts(
+            lines in proptest::collection::vec(
+                (0..LINES.len(), 1..4u32, proptest::bool::ANY), 0..24),
+            final_newline in proptest::bool::ANY,
+        ) {
+            let mut text = String::from(BOM);
+            for (template, id, crlf) in lines {
+                text.push_str(&LINES[template].replace('#', &id.to_string()));
+                text.push_str(if crlf { "\r\n" } else { "\n" });
+            }
+            if !final_newline {
+                text.pop();
+            }
+            assert_parts_agree(&text);
+        }
+    }
+
+    /// Lines that make every line rule find something; `#` stands for an id.
+    const LINES: &[&str] = &[
+        "robotLocationDescription # Hall",
+        "robotLocation # 1 2 90",
+        "robotLocationPose # 1 2 -90",
+        "robotLocation # -1 2 90 ",
+        "gestureTarget # 1 1 1",
+        "gestureTarget # x 1",
+        "gestureTarget #",
+        "gestureArm # left",
+        "gestureArm # up",
+        "gestureArm # left right",
+        "culturalKnowledge # a b c\t",
+        "preGestureMessageEnglish # Hello the the lab",
+        "postGestureMessageIsiZulu #",
+        "preGestureMessageenglish # miscased",
+        "robotLocationDescription # \u{202e}reversed",
+        "robotLocationDescription # -dash",
+        "robotLocationDescription",
+        "bogus # 1",
+        "tourSpecification 2 # 1",
+        "tourSpecification x y",
+        "# a comment",
+        "  ",
+        "robotLocationDescription 0 no id",
+        "robotLocationDescription # be\u{7}ll",
+    ];
+}
