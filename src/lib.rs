@@ -3,9 +3,11 @@
 //! The layers, from the bytes up:
 //! - [`source`]: a file read from disk (always valid UTF-8 text, invalid bytes recorded);
 //! - [`syntax`]: the lossless line syntax, every byte in a span;
-//! - [`model`]: the typed knowledge base, as written;
+//! - [`model`]: the typed knowledge base, as written; its builder reports what is wrong
+//!   with a line as facts, through a trait the rules implement, and names no rule;
 //! - [`reader`]: what each version of the robot's reader loads from a file;
-//! - [`rules`]: the rule catalogue, one module per rule;
+//! - [`rules`]: the rule catalogue, one module per rule; [`mod@check`]: the whole check of a
+//!   file, the model built and every rule run;
 //! - [`render`]: output formats for findings;
 //! - [`present`]: how `locations`, `show`, `tour` and `diff` show a knowledge base;
 //! - [`diff`]: the semantic difference of two knowledge bases;

@@ -2,10 +2,12 @@
 //!
 //! Each rule is declared with [`declare_rule!`]: its doc comment is both its rustdoc and the
 //! text of `ekb explain RULE`, so the documentation has a single source. Rules that need
-//! the text of a line run while the model is built ([`crate::model::build`]); rules that need
-//! whole locations or the tour, and those that depend on the version of the robot's reader
-//! ([`compat::check_file`], which asks [`crate::reader`] what each version loads), run
-//! afterwards, over the model ([`check_model`]).
+//! the text of a line run while the model is built: [`crate::model::build`] reports what
+//! it finds on each line as facts, and hands over each line, to [`line_rules`], which makes
+//! the findings (the model layer names no rule). Rules that need whole locations or the
+//! tour, and those that depend on the version of the robot's reader ([`compat::check_file`],
+//! which asks [`crate::reader`] what each version loads), run afterwards, over the model
+//! ([`check_model`]).
 
 use std::ops::Range;
 
@@ -17,6 +19,7 @@ use crate::reader::Reader;
 pub mod compat;
 mod consequence;
 pub mod content;
+pub mod line_rules;
 pub mod structure;
 pub mod tour;
 

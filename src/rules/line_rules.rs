@@ -1,0 +1,239 @@
+//! The rules about single lines, as the model is built: [`crate::model::build`] reports
+//! what it finds on each line (facts: spans, keys, ids, tokens) and hands over each line,
+//! and this module makes each fact its rule's finding, through the rule's own module, and
+//! runs the rules that read a line's text (trailing whitespace, control characters, CRLF
+//! endings, leading symbols). So the model layer names no rule, and the file is still read
+//! once.
+
+use std::ops::Range;
+
+use crate::check::Diagnostics;
+use crate::model::build::{Findings, LineFindings};
+use crate::model::Key;
+use crate::rules::{compat, content, structure, tour};
+use crate::syntax::{Line, Span};
+
+/// The line rules' findings on the lines of one part of a file.
+#[derive(Debug)]
+pub struct LineRules {
+    /// The findings, at most [`crate::check::kept_at_most`] of each rule.
+    found: Diagnostics,
+    /// The CRLF endings so far: one finding for all of them, when the file is read.
+    crlf_endings: Vec<Span>,
+    /// Whether the part's lines have a byte that may start a control character: nearly no
+    /// file has one, and one pass over all the bytes costs less than a check per value.
+    controls_possible: bool,
+}
+
+impl Findings for Diagnostics {
+    type Part = LineRules;
+
+    fn part(text: &str, range: Range<usize>) -> LineRules {
+        LineRules {
+            found: Diagnostics::default(),
+            crlf_endings: Vec::new(),
+            controls_possible: structure::control_character::possible_in(&text[range]),
+        }
+    }
+
+    fn add_part(&mut self, part: LineRules) {
+        self.append(part.found);
+    }
+}
+
+impl LineFindings for LineRules {
+    #[inline]
+    fn line(&mut self, line: &Line, text: &str) {
+        let crlf_ending = compat::compat_crlf::ending(line, text);
+        content::trailing_whitespace::check(line, crlf_ending, text, &mut self.found);
+        self.crlf_endings.extend(crlf_ending);
+    }
+
+    #[inline]
+    fn entry(&mut self, args: Span, text: &str) {
+        if self.controls_possible {
+            structure::control_character::check(args, text, &mut self.found);
+        }
+    }
+
+    #[inline]
+    fn value(&mut self, key: Key, id: u32, span: Span, value: &str) {
+        compat::compat_leading_symbol::check(key, id, span, value, &mut self.found);
+    }
+
+    fn key_case(&mut self, span: Span, written: &str, key: Key, id: Option<u32>) {
+        self.found.push_with(&structure::key_case::KEY_CASE, || {
+            structure::key_case::diagnostic(span, written, key, id)
+        });
+    }
+
+    fn unknown_key(&mut self, span: Span, written: &str, id: Option<u32>) {
+        // Suggesting the nearest key is slow (an edit distance to every key), and a binary
+        // file has millions of unknown keys: made only if kept.
+        self.found
+            .push_with(&structure::unknown_key::UNKNOWN_KEY, || {
+                structure::unknown_key::diagnostic(span, written, id)
+            });
+    }
+
+    fn missing_id(&mut self, key_span: Span, key: Key) {
+        self.found
+            .push(structure::missing_id::diagnostic(key_span, key));
+    }
+
+    fn invalid_id(&mut self, span: Span, token: &str, key: Key) {
+        self.found
+            .push(structure::invalid_id::diagnostic(span, token, key));
+    }
+
+    fn duplicate_key(&mut self, key: Key, id: u32, later: Span, earlier: Span) {
+        self.found.push(structure::duplicate_key::diagnostic(
+            key, id, later, earlier,
+        ));
+    }
+
+    fn wrong_arity(&mut self, key: Key, id: u32, span: Span, expected: usize, found: usize) {
+        self.found.push(structure::wrong_arity::diagnostic(
+            key, id, span, expected, found,
+        ));
+    }
+
+    fn empty_value(&mut self, key_span: Span, key: Key, id: u32) {
+        self.found
+            .push(structure::empty_value::diagnostic(key_span, key, id));
+    }
+
+    fn invalid_value(&mut self, key: Key, id: u32, span: Span, text: &str) {
+        self.found
+            .push(structure::invalid_value::diagnostic(key, id, span, text));
+    }
+
+    fn invalid_number(&mut self, key: Key, id: Option<u32>, span: Span, token: &str) {
+        self.found
+            .push(structure::invalid_number::diagnostic(key, id, span, token));
+    }
+
+    fn duplicate_tour(&mut self, later: Span, earlier: Span) {
+        self.found
+            .push(tour::tour_duplicate_spec::diagnostic(later, earlier));
+    }
+
+    fn mixed_dialect(&mut self, seed: (Span, usize), current: (Span, usize)) {
+        self.found
+            .push(structure::mixed_dialect::diagnostic(seed, current));
+    }
+
+    fn append(&mut self, later: LineRules) {
+        self.found.append(later.found);
+        self.crlf_endings.extend(later.crlf_endings);
+    }
+
+    fn finish(&mut self) {
+        compat::compat_crlf::check(&self.crlf_endings, &mut self.found);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::check::Diagnostics;
+    use crate::model::build::{build_in_parts, Options};
+    use crate::syntax::BOM;
+
+    /// Builds `text` in one part and in 2 to 6, and asserts the same findings.
+    fn assert_parts_agree(text: &str) {
+        let options = Options::default();
+        let mut expected = Diagnostics::default();
+        let whole = build_in_parts(text, &options, 1, &mut expected);
+        for parts in 2..=6 {
+            let mut found = Diagnostics::default();
+            let kb = build_in_parts(text, &options, parts, &mut found);
+            assert_eq!(kb, whole, "{parts} parts of {text:?}");
+            assert_eq!(*found, *expected, "{parts} parts of {text:?}");
+        }
+    }
+
+    #[test]
+    fn every_line_rule_finds_in_parts_what_it_finds_in_one() {
+        let mut text = String::from(BOM);
+        for (id, line) in (1..).zip(LINES) {
+            text.push_str(&line.replace('#', &(id % 3 + 1).to_string()));
+            text.push_str(if id % 2 == 0 { "\r\n" } else { "\n" });
+        }
+        let mut found = Diagnostics::default();
+        build_in_parts(&text, &Options::default(), 1, &mut found);
+        let mut rules: Vec<&str> = found.iter().map(|d| d.rule.name).collect();
+        rules.sort_unstable();
+        rules.dedup();
+        assert_eq!(
+            rules,
+            [
+                "compat-crlf",
+                "compat-leading-symbol",
+                "control-character",
+                "duplicate-key",
+                "empty-value",
+                "invalid-id",
+                "invalid-number",
+                "invalid-value",
+                "key-case",
+                "missing-id",
+                "mixed-dialect",
+                "tour-duplicate-spec",
+                "trailing-whitespace",
+                "unknown-key",
+                "wrong-arity"
+            ]
+        );
+        assert_parts_agree(&text);
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(200))]
+        /// Any mix of lines (duplicates, both dialects, tours, bad values, CRLF, no final
+        /// newline) has the same findings read in parts as in one.
+        #[test]
+        fn any_file_has_the_same_findings_in_parts(
+            lines in proptest::collection::vec(
+                (0..LINES.len(), 1..4u32, proptest::bool::ANY), 0..24),
+            final_newline in proptest::bool::ANY,
+        ) {
+            let mut text = String::from(BOM);
+            for (template, id, crlf) in lines {
+                text.push_str(&LINES[template].replace('#', &id.to_string()));
+                text.push_str(if crlf { "\r\n" } else { "\n" });
+            }
+            if !final_newline {
+                text.pop();
+            }
+            assert_parts_agree(&text);
+        }
+    }
+
+    /// Lines that make every line rule find something; `#` stands for an id.
+    const LINES: &[&str] = &[
+        "robotLocationDescription # Hall",
+        "robotLocation # 1 2 90",
+        "robotLocationPose # 1 2 -90",
+        "robotLocation # -1 2 90 ",
+        "gestureTarget # 1 1 1",
+        "gestureTarget # x 1",
+        "gestureTarget #",
+        "gestureArm # left",
+        "gestureArm # up",
+        "gestureArm # left right",
+        "culturalKnowledge # a b c\t",
+        "preGestureMessageEnglish # Hello the the lab",
+        "postGestureMessageIsiZulu #",
+        "preGestureMessageenglish # miscased",
+        "robotLocationDescription # \u{202e}reversed",
+        "robotLocationDescription # -dash",
+        "robotLocationDescription",
+        "bogus # 1",
+        "tourSpecification 2 # 1",
+        "tourSpecification x y",
+        "# a comment",
+        "  ",
+        "robotLocationDescription 0 no id",
+        "robotLocationDescription # be\u{7}ll",
+    ];
+}
