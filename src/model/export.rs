@@ -160,27 +160,3 @@ impl<'a> LocationView<'a> {
         }
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::check::check;
-    use crate::model::build::Options;
-    use crate::source::SourceFile;
-
-    /// The view must write exactly what the owned export does, field for field.
-    #[test]
-    fn the_view_serializes_as_the_export() {
-        let seed = include_str!("../../data/environmentKnowledgeBaseInput.dat");
-        let current = "robotLocationDescription 3 Hall\nrobotLocationPose 3 1 2 3\n\
-                       gestureTarget 3 1 1 1\ngestureArm 3 left\n\
-                       culturalKnowledge 3 greeting bow\npreGestureMessageEnglish 3 Hi\n";
-        for text in [seed, current] {
-            let source = SourceFile::from_bytes("kb.dat", text.as_bytes().to_vec());
-            let checked = check(&source, &Options::default());
-            let owned = serde_json::to_string(&ExportedKnowledgeBase::from(&checked.kb)).unwrap();
-            let view = serde_json::to_string(&ExportView::new(&checked.kb)).unwrap();
-            assert_eq!(view, owned);
-        }
-    }
-}
