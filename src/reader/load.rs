@@ -6,6 +6,7 @@ use super::line::{self, LineRead, LoadedValue};
 use super::tree::{ShapeBuilder, TreeShape};
 use super::Reader;
 use crate::model::Key;
+use crate::parallel;
 use crate::syntax::Span;
 
 /// What the robot holds after reading a file.
@@ -77,64 +78,47 @@ pub struct LoadedTour {
 /// The stops of the robot's tour buffer.
 const TOUR_BUFFER: usize = 20;
 
-/// Loads `text` as `reader` does.
+/// Loads `text` as `reader` does. A large file is read in parts, one per core (lines are
+/// read one at a time, so a part may start at any line), and the parts joined in order.
 pub fn load(text: &[u8], reader: Reader) -> Loaded<'_> {
+    load_in_parts(text, reader, parallel::parts_for_text(text.len()))
+}
+
+/// [`load`], reading `text` in at most `parts` parts.
+fn load_in_parts(text: &[u8], reader: Reader, parts: usize) -> Loaded<'_> {
+    let ranges = parallel::line_ranges(text, parts);
+    let parts = parallel::map_ranges(ranges, |range| read_part(text, range, reader));
     let mut locations: BTreeMap<i32, LoadedLocation> = BTreeMap::new();
+    let mut tree = ShapeBuilder::default();
     let mut tour_line = None;
     let mut count = 0;
     let mut slots: Vec<Option<i32>> = Vec::new();
-    let mut tree = ShapeBuilder::default();
-    // Most lines follow one of the same location: they are gathered here, and the map is
-    // updated once per run of them.
-    let mut run: Option<(i32, [u32; Key::ALL.len()], u32)> = None;
-    let mut end_run = |run: Option<(i32, [u32; Key::ALL.len()], u32)>| {
-        let Some((id, lines, count)) = run else {
-            return;
-        };
-        tree.add(id, count);
-        let location = locations.entry(id).or_insert_with(|| LoadedLocation {
-            id,
-            lines: [0; Key::ALL.len()],
-            text,
-            reader,
-        });
-        for (held, later) in location.lines.iter_mut().zip(lines) {
-            if later != 0 {
-                *held = later;
+    for part in parts {
+        for Run { id, lines, count } in part.runs {
+            tree.add(id, count);
+            let location = locations.entry(id).or_insert_with(|| LoadedLocation {
+                id,
+                lines: [0; Key::ALL.len()],
+                text,
+                reader,
+            });
+            for (held, later) in location.lines.iter_mut().zip(lines) {
+                if later != 0 {
+                    *held = later;
+                }
             }
         }
-    };
-    for (offset, chunk) in chunks(text, reader.line_buffer()) {
-        let line = Span::new(offset, offset + chunk.len());
-        match line::read(chunk, offset, reader) {
-            LineRead::Value { key, id, .. } => {
-                if run.as_ref().is_none_or(|(run_id, ..)| *run_id != id) {
-                    end_run(run.take());
-                    run = Some((id, [0; Key::ALL.len()], 0));
-                }
-                if let Some((_, lines, count)) = &mut run {
-                    lines[key.order()] = line.start + 1;
-                    *count += 1;
-                }
+        for (line, declared, stops) in part.tours {
+            tour_line = Some(line);
+            count = declared;
+            if slots.len() < stops.len() {
+                slots.resize(stops.len(), None);
             }
-            LineRead::Tour { count: n, stops } => {
-                tour_line = Some(line);
-                count = n;
-                if slots.len() < stops.len() {
-                    slots.resize(stops.len(), None);
-                }
-                for (slot, stop) in slots.iter_mut().zip(stops) {
-                    *slot = stop;
-                }
+            for (slot, stop) in slots.iter_mut().zip(stops) {
+                *slot = stop;
             }
-            LineRead::Skipped
-            | LineRead::Ignored { .. }
-            | LineRead::Failed { .. }
-            | LineRead::TourFailed => {}
         }
     }
-    end_run(run);
-    let tree = tree.shape();
     let tour = tour_line.map(|line| {
         let shown = (count.max(0) as usize).min(slots.len().max(TOUR_BUFFER));
         LoadedTour {
@@ -149,9 +133,55 @@ pub fn load(text: &[u8], reader: Reader) -> Loaded<'_> {
         reader,
         locations,
         tour,
-        tree,
+        tree: tree.shape(),
         text,
     }
+}
+
+/// Consecutive lines of one location that load values: where each field's last line
+/// starts (plus one; 0: none), and how many lines there are.
+struct Run {
+    id: i32,
+    lines: [u32; Key::ALL.len()],
+    count: u32,
+}
+
+/// What the lines of one part of a file load, in file order.
+#[derive(Default)]
+struct Part {
+    runs: Vec<Run>,
+    /// Each tour line read: where, its count, and its stops.
+    tours: Vec<(Span, i32, Vec<Option<i32>>)>,
+}
+
+/// Reads the whole lines of `text` in `range`.
+fn read_part(text: &[u8], range: std::ops::Range<usize>, reader: Reader) -> Part {
+    let mut part = Part::default();
+    let start = range.start;
+    for (offset, chunk) in chunks(&text[range], reader.line_buffer()) {
+        let offset = start + offset;
+        let line = Span::new(offset, offset + chunk.len());
+        match line::read(chunk, offset, reader) {
+            LineRead::Value { key, id, .. } => {
+                if part.runs.last().is_none_or(|run| run.id != id) {
+                    part.runs.push(Run {
+                        id,
+                        lines: [0; Key::ALL.len()],
+                        count: 0,
+                    });
+                }
+                let run = part.runs.last_mut().expect("a run was just pushed");
+                run.lines[key.order()] = line.start + 1;
+                run.count += 1;
+            }
+            LineRead::Tour { count, stops } => part.tours.push((line, count, stops)),
+            LineRead::Skipped
+            | LineRead::Ignored { .. }
+            | LineRead::Failed { .. }
+            | LineRead::TourFailed => {}
+        }
+    }
+    part
 }
 
 /// The file as `fgets` with a buffer of `buffer` bytes returns it: each line, newline
@@ -245,6 +275,27 @@ mod tests {
             .unwrap();
         assert_eq!(fresh.stops, vec![Some(7), None, None]);
         assert_eq!(load(b"", Reader::V2025_06).tour, None);
+    }
+
+    #[test]
+    fn a_file_read_in_parts_loads_as_read_whole() {
+        for shuffle in [false, true] {
+            let spec = crate::generate::Spec {
+                dialect: crate::model::Dialect::Current,
+                shuffle,
+                ..crate::generate::Spec::new(400)
+            };
+            let mut text = crate::generate::generate(&spec);
+            // A later tour that overwrites some of the first one's stops.
+            text.push_str("tourSpecification 3 7\nrobotLocationDescription 5 Again\n");
+            for reader in Reader::ALL {
+                let whole = load_in_parts(text.as_bytes(), reader, 1);
+                for parts in 2..=5 {
+                    let parted = load_in_parts(text.as_bytes(), reader, parts);
+                    assert_eq!(parted, whole, "{parts} parts, {reader}");
+                }
+            }
+        }
     }
 
     #[test]
