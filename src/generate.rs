@@ -260,6 +260,26 @@ fn tour(out: &mut String, locations: usize, rng: &mut Xorshift) {
     out.push('\n');
 }
 
+/// A file for property tests: each of `lines` is a template of `templates` (`#` stands for
+/// its id) ending in `\r\n` or `\n`, after a byte-order mark; the last newline dropped
+/// unless `final_newline`.
+#[cfg(test)]
+pub(crate) fn from_templates(
+    templates: &[&str],
+    lines: Vec<(usize, u32, bool)>,
+    final_newline: bool,
+) -> String {
+    let mut text = String::from(crate::syntax::BOM);
+    for (template, id, crlf) in lines {
+        text.push_str(&templates[template].replace('#', &id.to_string()));
+        text.push_str(if crlf { "\r\n" } else { "\n" });
+    }
+    if !final_newline {
+        text.pop();
+    }
+    text
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -4,15 +4,13 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-use super::{CommandError, CommandResult, Context, Exit};
+use super::{errors_to_stderr, CommandError, CommandResult, Context, Exit};
 use crate::check::check;
-use crate::diagnostic::{Severity, Summary};
 use crate::fixing;
 use crate::model::build::Options;
 use crate::model::{Dialect, Key};
 use crate::reader::Reader;
 use crate::render::escape::escape;
-use crate::render::{concise, FileReport, RenderOptions};
 use crate::rewrite::{self, DiffStyle, Mode};
 use crate::source::SourceFile;
 use crate::syntax::{self, Body};
@@ -125,10 +123,6 @@ fn report(
         },
     );
     let summary = checked.summary();
-    checked
-        .diagnostics
-        .retain(|diagnostic| diagnostic.severity() == Severity::Error);
-    let mut stderr = std::io::stderr().lock();
     if !context.quiet && !counts.is_empty() {
         let fixed: Vec<String> = counts
             .iter()
@@ -141,16 +135,7 @@ fn report(
         };
         eprintln!("{name}: {verb} {}", fixed.join(", "));
     }
-    let quiet = RenderOptions {
-        color: false,
-        quiet: true,
-    };
-    concise::render(
-        &[FileReport::new(&checked)],
-        &Summary::default(),
-        &mut stderr,
-        &quiet,
-    )?;
+    errors_to_stderr(&mut checked)?;
     if !context.quiet {
         if summary.errors > 0 {
             let s = if summary.errors == 1 { "" } else { "s" };

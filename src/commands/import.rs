@@ -7,14 +7,12 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use super::{CommandError, CommandResult, Context, Exit};
+use super::{errors_to_stderr, CommandError, CommandResult, Context, Exit};
 use crate::canonical::Document;
 use crate::check::check;
-use crate::diagnostic::{Severity, Summary};
 use crate::model::build::Options;
 use crate::model::export::ExportedKnowledgeBase;
 use crate::render::escape::escape;
-use crate::render::{concise, FileReport, RenderOptions};
 use crate::source::SourceFile;
 use crate::write::write_atomically;
 
@@ -65,20 +63,8 @@ fn report_errors(written: &SourceFile, options: &Options, context: &Context) -> 
     if errors == 0 {
         return Ok(Exit::Clean);
     }
-    checked
-        .diagnostics
-        .retain(|diagnostic| diagnostic.severity() == Severity::Error);
+    errors_to_stderr(&mut checked)?;
     let mut stderr = std::io::stderr().lock();
-    let findings_only = RenderOptions {
-        color: false,
-        quiet: true,
-    };
-    concise::render(
-        &[FileReport::new(&checked)],
-        &Summary::default(),
-        &mut stderr,
-        &findings_only,
-    )?;
     if !context.quiet {
         let s = if errors == 1 { "" } else { "s" };
         writeln!(

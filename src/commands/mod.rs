@@ -20,11 +20,14 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use crate::check::Checked;
 use crate::cli::{Cli, ColorChoice};
 use crate::config::Config;
+use crate::diagnostic::{Severity, Summary};
 use crate::model::build::Options;
 use crate::reader::Reader;
 use crate::render::escape::escape;
+use crate::render::{concise, FileReport, RenderOptions};
 use crate::settings::Settings;
 use crate::source::SourceFile;
 
@@ -74,6 +77,24 @@ impl<E: std::error::Error + 'static> From<E> for CommandError {
 }
 
 pub type CommandResult = Result<Exit, CommandError>;
+
+/// Lists the errors of `checked` on standard error, a concise line each, and drops its
+/// other findings (for commands that write a file and tell what a person must still do).
+fn errors_to_stderr(checked: &mut Checked<'_>) -> std::io::Result<()> {
+    checked
+        .diagnostics
+        .retain(|diagnostic| diagnostic.severity() == Severity::Error);
+    let findings_only = RenderOptions {
+        color: false,
+        quiet: true,
+    };
+    concise::render(
+        &[FileReport::new(checked)],
+        &Summary::default(),
+        &mut std::io::stderr().lock(),
+        &findings_only,
+    )
+}
 
 /// What every command may need: the global options and the configuration (read once, and
 /// only by commands that need it).

@@ -751,7 +751,6 @@ pub(crate) fn leading_id(args: &str) -> Option<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::syntax::BOM;
 
     /// Everything a builder reports, in order, one entry a call: what the rules are given.
     #[derive(Debug, Default, PartialEq)]
@@ -989,14 +988,7 @@ mod tests {
                 (0..LINES.len(), 1..4u32, proptest::bool::ANY), 0..24),
             final_newline in proptest::bool::ANY,
         ) {
-            let mut text = String::from(BOM);
-            for (template, id, crlf) in lines {
-                text.push_str(&LINES[template].replace('#', &id.to_string()));
-                text.push_str(if crlf { "\r\n" } else { "\n" });
-            }
-            if !final_newline {
-                text.pop();
-            }
+            let text = crate::generate::from_templates(LINES, lines, final_newline);
             assert_parts_agree(&text);
         }
     }

@@ -197,14 +197,7 @@ mod tests {
                 (0..LINES.len(), 1..4u32, proptest::bool::ANY), 0..24),
             final_newline in proptest::bool::ANY,
         ) {
-            let mut text = String::from(BOM);
-            for (template, id, crlf) in lines {
-                text.push_str(&LINES[template].replace('#', &id.to_string()));
-                text.push_str(if crlf { "\r\n" } else { "\n" });
-            }
-            if !final_newline {
-                text.pop();
-            }
+            let text = crate::generate::from_templates(LINES, lines, final_newline);
             assert_parts_agree(&text);
         }
     }
