@@ -260,24 +260,28 @@ fn tour(out: &mut String, locations: usize, rng: &mut Xorshift) {
     out.push('\n');
 }
 
-/// A file for property tests: each of `lines` is a template of `templates` (`#` stands for
-/// its id) ending in `\r\n` or `\n`, after a byte-order mark; the last newline dropped
-/// unless `final_newline`.
+/// Files for property tests: up to 24 lines, each a template of `templates` (`#` stands for
+/// an id from 1 to 3) ending in `\r\n` or `\n`, after a byte-order mark; the last newline
+/// sometimes dropped.
 #[cfg(test)]
-pub(crate) fn from_templates(
-    templates: &[&str],
-    lines: Vec<(usize, u32, bool)>,
-    final_newline: bool,
-) -> String {
-    let mut text = String::from(crate::syntax::BOM);
-    for (template, id, crlf) in lines {
-        text.push_str(&templates[template].replace('#', &id.to_string()));
-        text.push_str(if crlf { "\r\n" } else { "\n" });
-    }
-    if !final_newline {
-        text.pop();
-    }
-    text
+pub(crate) fn files_of_templates(
+    templates: &'static [&'static str],
+) -> impl proptest::strategy::Strategy<Value = String> {
+    use proptest::prelude::*;
+    let line = (0..templates.len(), 1..4u32, any::<bool>());
+    (proptest::collection::vec(line, 0..24), any::<bool>()).prop_map(
+        move |(lines, final_newline)| {
+            let mut text = String::from(crate::syntax::BOM);
+            for (template, id, crlf) in lines {
+                text.push_str(&templates[template].replace('#', &id.to_string()));
+                text.push_str(if crlf { "\r\n" } else { "\n" });
+            }
+            if !final_newline {
+                text.pop();
+            }
+            text
+        },
+    )
 }
 
 #[cfg(test)]
