@@ -314,6 +314,7 @@ fn the_catalogue_is_the_specified_one() {
         ("mixed-dialect", Warning, false),
         ("legacy-key", Error, true),
         ("control-character", Error, false),
+        ("not-an-environment-knowledge-base", Error, false),
         ("tour-missing", Error, false),
         ("tour-duplicate-spec", Warning, false),
         ("tour-count-mismatch", Error, false),
@@ -339,7 +340,6 @@ fn the_catalogue_is_the_specified_one() {
         ("compat-reader-crash", Error, true),
         ("compat-slow-load", Warning, false),
         ("compat-ignored-key", Warning, false),
-        ("not-an-environment-knowledge-base", Error, false),
     ];
     let actual: Vec<(&str, Severity, bool)> = rules::ALL
         .iter()

@@ -111,6 +111,7 @@ pub static ALL: &[&Rule] = &[
     &structure::mixed_dialect::MIXED_DIALECT,
     &structure::legacy_key::LEGACY_KEY,
     &structure::control_character::CONTROL_CHARACTER,
+    &structure::not_a_knowledge_base::NOT_AN_ENVIRONMENT_KNOWLEDGE_BASE,
     &tour::tour_missing::TOUR_MISSING,
     &tour::tour_duplicate_spec::TOUR_DUPLICATE_SPEC,
     &tour::tour_count_mismatch::TOUR_COUNT_MISMATCH,
@@ -136,7 +137,6 @@ pub static ALL: &[&Rule] = &[
     &compat::compat_reader_crash::COMPAT_READER_CRASH,
     &compat::compat_slow_load::COMPAT_SLOW_LOAD,
     &compat::compat_ignored_key::COMPAT_IGNORED_KEY,
-    &structure::not_a_knowledge_base::NOT_AN_ENVIRONMENT_KNOWLEDGE_BASE,
 ];
 
 /// `text` from the file, cut to a length that fits in a one-line message.
