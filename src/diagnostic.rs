@@ -103,8 +103,12 @@ impl Diagnostic {
     }
 
     pub fn with_severity(mut self, severity: Severity) -> Diagnostic {
-        self.severity = severity;
+        self.set_severity(severity);
         self
+    }
+
+    pub fn set_severity(&mut self, severity: Severity) {
+        self.severity = severity;
     }
 
     pub fn at_location(mut self, id: Option<u32>) -> Diagnostic {

@@ -60,19 +60,21 @@ fn arm_blanks_are_errors(
     if !reader.reads(Key::GestureArm) || !kb.lines.has(Key::GestureArm) {
         return;
     }
+    // In file order, so sorted: each finding is looked up, not compared with every line.
     let arm_lines: Vec<Span> = lines_of_key(text, Key::GestureArm)
         .map(|(key, args)| key.cover(args))
         .collect();
+    let on_arm_line = |at: u32| {
+        let before = arm_lines.partition_point(|line| line.start <= at);
+        before > 0 && at <= arm_lines[before - 1].end + 1
+    };
     for diagnostic in out.iter_mut() {
-        let on_arm_line = |line: &Span| {
-            line.start <= diagnostic.span.start && diagnostic.span.start <= line.end + 1
-        };
-        if std::ptr::eq(diagnostic.rule, &TRAILING_WHITESPACE) && arm_lines.iter().any(on_arm_line)
+        if std::ptr::eq(diagnostic.rule, &TRAILING_WHITESPACE) && on_arm_line(diagnostic.span.start)
         {
             diagnostic.message.push_str(&format!(
                 ": reader {reader} passes the arm to the arm controller with them, which knows no such arm"
             ));
-            *diagnostic = diagnostic.clone().with_severity(Severity::Error);
+            diagnostic.set_severity(Severity::Error);
         }
     }
 }
