@@ -14,6 +14,8 @@
 //! - [`canonical`]: the canonical layout that `fmt` and `import` write; [`fixing`]: `fix`;
 //!   [`rewrite`] and [`mod@write`]: how both show and safely write their result;
 //! - [`generate`]: synthetic knowledge bases of any size, for benchmarks and tests;
+//! - [`config`] (the robot's INI) and [`settings`] (`ekb.toml`): where the file is and how
+//!   to check it;
 //! - [`cli`]: the `ekb` command line, one module per command under `commands`.
 
 pub mod canonical;
