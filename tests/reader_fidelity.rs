@@ -272,6 +272,17 @@ const LINES: &[&str] = &[
     "robotLocationDescription 0 zero",
     "robotLocationDescription -# minus id",
     "robotLocationDescription 2147483648 overflow",
+    "robotLocationDescription\x0b# vertical tab",
+    "robotLocationDescription\t#\tHall\t",
+    "preGestureMessageEnglish # Hello\u{0}world",
+    "tourSpecification 2 #,1",
+    "tourSpecification 2 #x 1",
+    "culturalKnowledge # A\tB",
+    "culturalKnowledge #",
+    "gestureArm # Left",
+    "robotLocationPose # 1 2 3x",
+    "robotLocationPose # 0x10 2 3",
+    "gestureTarget # 1,0 2 3",
 ];
 
 /// A message long enough to cross a line buffer (200, 300 or 600 bytes).
