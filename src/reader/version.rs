@@ -50,17 +50,6 @@ impl Reader {
             .find(|reader| reader.name() == name.trim())
     }
 
-    /// Where the version comes from, for messages.
-    pub fn origin(self) -> &'static str {
-        match self {
-            Reader::D542 => "the document's class",
-            Reader::V2025_06 => "main, June 2025",
-            Reader::V2026_02 => "the bc_service branch, February 2026",
-            Reader::V2026_03 => "the workspace branch, March 2026",
-            Reader::V2026_04 => "behaviorController v1.1, April 2026",
-        }
-    }
-
     /// The reader a file is checked against when none is chosen: the document's for a file
     /// in its dialect, today's robot's for any other.
     pub fn default_for(dialect: Option<Dialect>) -> Reader {
