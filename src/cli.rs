@@ -9,7 +9,6 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand, ValueEnum};
 
 use crate::commands::{self, Context};
-use crate::render::escape::escape;
 
 /// Author and validate the environment knowledge base of a tour-guide robot.
 #[derive(Debug, Parser)]
@@ -106,8 +105,7 @@ pub fn main() -> ExitCode {
         Ok(exit) => exit.into(),
         Err(commands::CommandError::OutputClosed) => commands::Exit::Clean.into(),
         Err(error) => {
-            // Errors quote file names and file text: never let them drive the terminal.
-            eprintln!("ekb: error: {}", escape(&error.to_string()));
+            error.report();
             commands::Exit::Failure.into()
         }
     }

@@ -1,7 +1,7 @@
 //! What `ekb fmt` and `ekb fix` share once they know a file's new text: show it as a diff,
 //! write it in place, or send it to standard output; and the refusals that come before.
 
-use std::io::{self, IsTerminal, Write};
+use std::io::{self, Write};
 use std::path::Path;
 use std::time::Duration;
 
@@ -83,7 +83,7 @@ pub fn for_each_file(
     let mut worst = Exit::Clean;
     for path in paths {
         let exit = each(path).unwrap_or_else(|error| {
-            eprintln!("ekb: error: {error}");
+            error.report();
             Exit::Failure
         });
         if exit as u8 > worst as u8 {
@@ -127,13 +127,13 @@ pub fn unified_diff(name: &str, old: &str, new: &str) -> String {
         .to_string()
 }
 
+/// Prints the diff of `old` and `new`, every line escaped as every output of ekb is, on a
+/// terminal or not: a diff is file text, and a CI log shows it too. (A line with something
+/// escaped no longer applies with `patch`; every other line does.)
 fn print_diff(name: &str, old: &str, new: &str, style: DiffStyle) -> io::Result<()> {
     let diff = unified_diff(name, old, new);
-    let mut stdout = io::stdout().lock();
-    if !io::stdout().is_terminal() && !style.color {
-        // Raw, so that the diff can be applied with `patch`.
-        return stdout.write_all(diff.as_bytes());
-    }
+    // A line at a time through a buffer: standard output alone is flushed at every line.
+    let mut stdout = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
     for line in diff.split_inclusive('\n') {
         let colour = match line.as_bytes().first() {
             _ if !style.color => None,
@@ -148,7 +148,7 @@ fn print_diff(name: &str, old: &str, new: &str, style: DiffStyle) -> io::Result<
             None => writeln!(stdout, "{text}")?,
         }
     }
-    Ok(())
+    stdout.flush()
 }
 
 #[cfg(test)]

@@ -483,12 +483,27 @@ fn tables_tours_diffs_and_rewrites_never_print_raw_control_characters() {
             &["locations"],
             &[&old],
             0,
-            "Evil\\u{001B}[31m room\\u{202E}",
+            "Evil\\u{001B}[31m room\\u{202E RIGHT-TO-LEFT OVERRIDE}",
         ),
         (&["show", "1"], &[&old], 0, "\\u{001B}]0;pwned\\u{0007}"),
-        (&["show", "2"], &[&old], 0, "Lab\\u{200F}"),
-        (&["tour", "--lang", "en"], &[&old], 0, "Hi \\u{202E}there"),
-        (&["diff"], &[&old, &new], 1, "L\\u{001B}[1mab\\u{200F}"),
+        (
+            &["show", "2"],
+            &[&old],
+            0,
+            "Lab\\u{200F RIGHT-TO-LEFT MARK}",
+        ),
+        (
+            &["tour", "--lang", "en"],
+            &[&old],
+            0,
+            "Hi \\u{202E RIGHT-TO-LEFT OVERRIDE}there",
+        ),
+        (
+            &["diff"],
+            &[&old, &new],
+            1,
+            "L\\u{001B}[1mab\\u{200F RIGHT-TO-LEFT MARK}",
+        ),
         (&["export", "--allow-errors"], &[&old], 0, "a\\u009bb"),
         // The diffs of fmt and fix, coloured as on a terminal.
         (

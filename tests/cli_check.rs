@@ -497,7 +497,7 @@ fn control_characters_in_the_file_never_reach_the_terminal() {
     .stdout;
     assert!(
         human.contains(
-            " 1 │ robotLocationDescription      1 Ro\\u{001B}]0;pwned\\u{0007}omba\\u{202E}"
+            " 1 │ robotLocationDescription      1 Ro\\u{001B}]0;pwned\\u{0007}omba\\u{202E RIGHT-TO-LEFT OVERRIDE}"
         ),
         "{human}"
     );

@@ -76,6 +76,14 @@ impl<E: std::error::Error + 'static> From<E> for CommandError {
     }
 }
 
+impl CommandError {
+    /// Tells on standard error why the command failed, `ekb: error: …` on one line, escaped:
+    /// errors quote file names and file text.
+    pub fn report(&self) {
+        eprintln!("ekb: error: {}", escape(&self.to_string()));
+    }
+}
+
 pub type CommandResult = Result<Exit, CommandError>;
 
 /// Lists the errors of `checked` on standard error, a concise line each, and drops its

@@ -20,7 +20,7 @@ use miette::{
     SourceCode, SourceSpan, SpanContents,
 };
 
-use super::escape::escape;
+use super::escape::{escape, escape_lines};
 use super::located::{Locator, Mark};
 use super::{FileReport, LocatedDiagnostic, RenderOptions};
 use crate::diagnostic::{Severity, Summary};
@@ -28,11 +28,11 @@ use crate::parallel;
 use crate::source::Position;
 use crate::syntax::Span;
 
-/// Lines shown before and after each underlined place.
-const CONTEXT_LINES: usize = 1;
-
 /// Where messages and help wrap.
 const WIDTH: usize = 100;
+
+/// Lines shown before and after each underlined place.
+const CONTEXT_LINES: usize = 1;
 
 /// How many findings are held, drawn, at once.
 const FINDINGS_PER_BATCH: usize = 512;
@@ -52,7 +52,7 @@ pub fn render(
     out: &mut dyn Write,
     options: &RenderOptions,
 ) -> io::Result<()> {
-    let handlers = Handlers::new(options.color);
+    let handlers = Handlers::new(options.color, WIDTH);
     for report in reports.iter().filter(|r| !r.diagnostics.is_empty()) {
         let source = Source::new(report.checked.source.name(), report.checked.source.text());
         // Findings are cut from the file in order (each is located from the one before),
@@ -73,13 +73,14 @@ pub fn render(
     Ok(())
 }
 
-/// miette's report handler, twice: one wraps the message and help at [`WIDTH`], the other
+/// miette's report handler, twice: one wraps the message and help at `width`, the other
 /// does not. Wrapping (textwrap, finding where Unicode lets a line break) was a third of the
 /// cost of a report, and most messages fit on a line anyway: those are drawn by the handler
 /// that does not wrap, to the same bytes ([`unwrapped`]).
 struct Handlers {
     wrapping: GraphicalReportHandler,
     plain: GraphicalReportHandler,
+    width: usize,
 }
 
 /// The columns before a message's lines (`  × `) and a help's (`  help: `).
@@ -87,19 +88,23 @@ const MESSAGE_INDENT: usize = 4;
 const HELP_INDENT: usize = 8;
 
 impl Handlers {
-    fn new(color: bool) -> Handlers {
+    fn new(color: bool, width: usize) -> Handlers {
         let theme = if color {
             GraphicalTheme::unicode()
         } else {
             GraphicalTheme::unicode_nocolor()
         };
         let wrapping = GraphicalReportHandler::new_themed(theme)
-            .with_width(WIDTH)
+            .with_width(width)
             .with_urls(false)
             .with_context_lines(CONTEXT_LINES)
             .without_syntax_highlighting();
         let plain = wrapping.clone().with_wrap_lines(false);
-        Handlers { wrapping, plain }
+        Handlers {
+            wrapping,
+            plain,
+            width,
+        }
     }
 
     /// The findings in `share`, drawn one after the other, each followed by a blank line.
@@ -121,8 +126,8 @@ impl Handlers {
 
     fn for_finding(&self, finding: &Finding<'_>) -> &GraphicalReportHandler {
         let help = finding.help.as_deref();
-        if unwrapped(&finding.message, MESSAGE_INDENT)
-            && help.is_none_or(|help| unwrapped(help, HELP_INDENT))
+        if unwrapped(&finding.message, MESSAGE_INDENT, self.width)
+            && help.is_none_or(|help| unwrapped(help, HELP_INDENT, self.width))
         {
             &self.plain
         } else {
@@ -132,13 +137,13 @@ impl Handlers {
 }
 
 /// Whether miette's wrapping leaves `text`, drawn after `indent` columns, as it is. It does
-/// when each line fits in the width ([`WIDTH`] less miette's margin of 2) and holds only
+/// when each line fits in `width` (less miette's margin of 2) and holds only
 /// printable ASCII (one column a byte), neither blank nor beginning or ending with a space
 /// (wrapping drops trailing spaces, and indents blank lines differently).
-fn unwrapped(text: &str, indent: usize) -> bool {
+fn unwrapped(text: &str, indent: usize, width: usize) -> bool {
     text.split('\n').all(|line| {
         let bytes = line.as_bytes();
-        line.len() + indent <= WIDTH - 2
+        line.len() + indent <= width.saturating_sub(2)
             && bytes.first().is_some_and(u8::is_ascii_graphic)
             && bytes.last().is_some_and(u8::is_ascii_graphic)
             && bytes
@@ -367,9 +372,9 @@ fn line_text(text: &str, start: usize, end: usize) -> &str {
     line.strip_suffix('\r').unwrap_or(line)
 }
 
-/// `text`, escaped, still owned if it was.
+/// `text` (a help: a line of advice, and the fix's), escaped, still owned if it was.
 fn escaped(text: Cow<'_, str>) -> Cow<'_, str> {
-    match escape(&text) {
+    match escape_lines(&text) {
         Cow::Borrowed(_) => text,
         Cow::Owned(escaped) => Cow::Owned(escaped),
     }
@@ -614,7 +619,7 @@ mod tests {
         let source = SourceFile::from_bytes("kb.dat", text.into_bytes());
         let checked = check(&source, &Options::default());
         let report = FileReport::new(&checked);
-        let handlers = Handlers::new(false);
+        let handlers = Handlers::new(false, WIDTH);
         let one_by_one = Source::new("kb.dat", source.text());
         let findings: Vec<Finding> = report
             .diagnostics
@@ -632,8 +637,15 @@ mod tests {
             "evil\x1b]0;x\x07.dat",
             "robotLocationDescription 1 Ro\x1b[2Jomba\u{202E}x\r\n",
         );
-        assert!(!out.chars().any(super::super::escape::is_unsafe), "{out}");
-        assert!(out.contains("Ro\\u{001B}[2Jomba\\u{202E}x"), "{out}");
+        assert!(
+            !out.chars()
+                .any(|c| c != '\n' && super::super::escape::is_unsafe(c)),
+            "{out}"
+        );
+        assert!(
+            out.contains("Ro\\u{001B}[2Jomba\\u{202E RIGHT-TO-LEFT OVERRIDE}x"),
+            "{out}"
+        );
         assert!(out.contains("evil\\u{001B}]0;x\\u{0007}.dat"), "{out}");
     }
 
@@ -677,14 +689,18 @@ mod tests {
                 handler
                     .render_report(&mut out, &finding)
                     .unwrap_or_else(|_| panic!("span {start}..{end}"));
-                assert!(!out.chars().any(super::super::escape::is_unsafe), "{out}");
+                assert!(
+                    !out.chars()
+                        .any(|c| c != '\n' && super::super::escape::is_unsafe(c)),
+                    "{out}"
+                );
             }
         }
     }
 
     /// `message` and `help` drawn by both handlers, without a snippet.
     fn drawn_by_both(message: &str, help: Option<&str>) -> (String, String) {
-        let handlers = Handlers::new(false);
+        let handlers = Handlers::new(false, WIDTH);
         let finding = Finding {
             severity: Severity::Warning,
             rule: "test",
@@ -711,8 +727,10 @@ mod tests {
             ("m".into(), Some(words(98 - HELP_INDENT))),
             ("m".into(), Some(format!("{}\n{}", words(20), words(90)))),
         ] {
-            assert!(unwrapped(&message, MESSAGE_INDENT));
-            assert!(help.as_deref().is_none_or(|h| unwrapped(h, HELP_INDENT)));
+            assert!(unwrapped(&message, MESSAGE_INDENT, WIDTH));
+            assert!(help
+                .as_deref()
+                .is_none_or(|h| unwrapped(h, HELP_INDENT, WIDTH)));
             let (wrapped, plain) = drawn_by_both(&message, help.as_deref());
             assert_eq!(wrapped, plain);
         }
@@ -725,8 +743,10 @@ mod tests {
             ("m".into(), Some("a\n\nb".into())),
             (format!("{}中", words(fits - 1)), None),
         ] {
-            let unwrapped = unwrapped(&message, MESSAGE_INDENT)
-                && help.as_deref().is_none_or(|h| unwrapped(h, HELP_INDENT));
+            let unwrapped = unwrapped(&message, MESSAGE_INDENT, WIDTH)
+                && help
+                    .as_deref()
+                    .is_none_or(|h| unwrapped(h, HELP_INDENT, WIDTH));
             assert!(!unwrapped, "{message:?} {help:?}");
             let (wrapped, plain) = drawn_by_both(&message, help.as_deref());
             assert_ne!(wrapped, plain, "{message:?} {help:?}");
@@ -740,7 +760,7 @@ mod tests {
             help in proptest::option::of("[ -~]{1,100}(\n[ -~]{0,100}){0,2}"),
         ) {
             let help = help.as_deref();
-            if unwrapped(&message, MESSAGE_INDENT) && help.is_none_or(|h| unwrapped(h, HELP_INDENT)) {
+            if unwrapped(&message, MESSAGE_INDENT, WIDTH) && help.is_none_or(|h| unwrapped(h, HELP_INDENT, WIDTH)) {
                 let (wrapped, plain) = drawn_by_both(&message, help);
                 proptest::prop_assert_eq!(wrapped, plain);
             }

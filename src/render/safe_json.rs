@@ -1,13 +1,14 @@
-//! JSON for the terminal: pretty, and with every character that could change what a
-//! terminal shows written as a `\uXXXX` escape. The JSON means exactly the same; only its
-//! spelling is safe to print.
+//! JSON for the terminal and CI logs: pretty, with every character that could change what
+//! a terminal shows or hide (what [`is_hidden`] flags) written as a `\uXXXX` escape, and the
+//! `[` of `##[` too (a GitHub Actions runner obeys `##[` anywhere in a line). The JSON means
+//! exactly the same; only its spelling is safe to print.
 
 use std::io::{self, BufWriter, Write};
 
 use serde::Serialize;
 use serde_json::ser::{Formatter, PrettyFormatter};
 
-use crate::render::escape::is_unsafe;
+use crate::render::escape::{ends_with_ci_marker, is_hidden};
 
 /// Writes `value` as pretty JSON and a newline.
 pub fn write<T: Serialize + ?Sized>(value: &T, out: &mut dyn Write) -> io::Result<()> {
@@ -21,8 +22,10 @@ pub fn write<T: Serialize + ?Sized>(value: &T, out: &mut dyn Write) -> io::Resul
     out.flush()
 }
 
-/// [`PrettyFormatter`] that also escapes what [`is_unsafe`] flags (serde_json escapes only
-/// C0 controls: DEL, C1 controls and bidirectional overrides would pass through raw).
+/// [`PrettyFormatter`] that also escapes what [`is_hidden`] flags (serde_json escapes only
+/// C0 controls: DEL, C1 controls, bidirectional overrides and Unicode spaces would pass
+/// through raw), and a `[` that would make a CI command. serde_json cuts a string into
+/// fragments only at what it escapes itself, so `##[` is never cut.
 struct SafeFormatter<'a>(PrettyFormatter<'a>);
 
 impl Formatter for SafeFormatter<'_> {
@@ -33,21 +36,25 @@ impl Formatter for SafeFormatter<'_> {
     ) -> io::Result<()> {
         // Nearly all text is printable ASCII: checking bytes (without stopping early, so that
         // the check is vectorised) spares decoding characters.
+        let bytes = fragment.as_bytes();
         let printable = |ok, &b: &u8| ok & matches!(b, b' '..=b'~');
-        if fragment.as_bytes().iter().fold(true, printable) {
-            return writer.write_all(fragment.as_bytes());
+        if bytes.iter().fold(true, printable) && memchr::memmem::find(bytes, b"##").is_none() {
+            return writer.write_all(bytes);
         }
-        let mut rest = fragment;
-        while let Some(at) = rest.find(is_unsafe) {
-            writer.write_all(&rest.as_bytes()[..at])?;
-            let ch = rest[at..].chars().next().expect("found at a char boundary");
+        let mut written = 0;
+        for (at, ch) in fragment.char_indices() {
+            let escaped = is_hidden(ch) || (ch == '[' && ends_with_ci_marker(&fragment[..at]));
+            if !escaped {
+                continue;
+            }
+            writer.write_all(&bytes[written..at])?;
             let mut units = [0u16; 2];
             for unit in ch.encode_utf16(&mut units) {
                 write!(writer, "\\u{unit:04x}")?;
             }
-            rest = &rest[at + ch.len_utf8()..];
+            written = at + ch.len_utf8();
         }
-        writer.write_all(rest.as_bytes())
+        writer.write_all(&bytes[written..])
     }
 
     fn begin_array<W: ?Sized + Write>(&mut self, writer: &mut W) -> io::Result<()> {
@@ -101,13 +108,13 @@ mod tests {
 
     #[test]
     fn unsafe_characters_are_escaped_and_the_json_is_unchanged() {
-        let value = serde_json::json!({ "text": "a\u{1b}[31m\u{202E}b\u{85}é" });
+        let value = serde_json::json!({ "text": "a\u{1b}[31m\u{202E}b\u{85}é\u{a0}##[x]" });
         let mut out = Vec::new();
         write(&value, &mut out).unwrap();
         let printed = String::from_utf8(out).unwrap();
         assert_eq!(
             printed,
-            "{\n  \"text\": \"a\\u001b[31m\\u202eb\\u0085é\"\n}\n"
+            "{\n  \"text\": \"a\\u001b[31m\\u202eb\\u0085é\\u00a0##\\u005bx]\"\n}\n"
         );
         let back: serde_json::Value = serde_json::from_str(&printed).unwrap();
         assert_eq!(back, value);

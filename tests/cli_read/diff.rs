@@ -167,9 +167,9 @@ fn control_characters_are_escaped() {
     let out = run(&["diff", &fixture("seed.dat"), &fixture("control.dat")]);
     assert_eq!(out.code, 1);
     assert_terminal_safe(&out.stdout);
-    assert!(out
-        .stdout
-        .contains(r#""Red\u{001B}[31m alert\u{202E} reversed" (new line 1)"#));
+    assert!(out.stdout.contains(
+        r#""Red\u{001B}[31m alert\u{202E RIGHT-TO-LEFT OVERRIDE} reversed" (new line 1)"#
+    ));
     let out = run(&[
         "diff",
         "--format",

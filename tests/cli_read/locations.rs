@@ -100,7 +100,7 @@ fn control_characters_are_escaped_in_every_format() {
         assert_terminal_safe(&out.stderr);
     }
     let table = run(&["locations", &fixture("control.dat")]).stdout;
-    assert!(table.contains(r"Red\u{001B}[31m alert\u{202E} reversed"));
+    assert!(table.contains(r"Red\u{001B}[31m alert\u{202E RIGHT-TO-LEFT OVERRIDE} reversed"));
     let json = run(&["locations", "--format", "json", &fixture("control.dat")]).stdout;
     assert!(json.contains(r#""description": "Red\u001b[31m alert\u202e reversed""#));
 }

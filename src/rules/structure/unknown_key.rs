@@ -1,7 +1,7 @@
 use crate::diagnostic::Diagnostic;
 use crate::model::build::parse_id;
 use crate::model::Key;
-use crate::render::escape::{escape_odd_spaces, is_odd_space};
+use crate::render::escape::{escape, is_odd_space};
 use crate::rules::{consequence, declare_rule, excerpt};
 use crate::syntax::Span;
 
@@ -19,7 +19,7 @@ declare_rule! {
     /// ```
     /// Use `preGestureMessageEnglish`. A key run into its id by a space that is not a plain
     /// one, such as a no-break space (U+00A0) that a word processor put there, is no key
-    /// either: the message shows the space as `\u{00A0}`.
+    /// either: the message shows the space as `\u{00A0 NO-BREAK SPACE}`.
     pub static UNKNOWN_KEY = {
         name: "unknown-key",
         category: Structure,
@@ -35,7 +35,7 @@ pub fn diagnostic(span: Span, key: &str, id: Option<u32>) -> Diagnostic {
     }
     let ignored = format!(
         "`{}` is not a key of the knowledge base: the robot's reader ignores this line",
-        escape_odd_spaces(&excerpt(key))
+        escape(&excerpt(key))
     );
     match nearest(key) {
         Some(near) => Diagnostic::new(
@@ -74,7 +74,7 @@ fn key_before_odd_space(span: Span, written: &str) -> Option<Diagnostic> {
             format!(
                 "`{}` is not a key of the knowledge base: {space}, not a plain space, follows \
                  `{}`, so the robot's reader ignores this line; {}",
-                escape_odd_spaces(&excerpt(written)),
+                escape(&excerpt(written)),
                 key.name(),
                 consequence::lost(key, id)
             ),
@@ -126,7 +126,7 @@ mod tests {
         let found = diagnostic(Span::new(0, key.len()), key, None);
         assert_eq!(
             found.message,
-            "`preGestureMessageEnglish\\u{00A0}3` is not a key of the knowledge base: a no-break \
+            "`preGestureMessageEnglish\\u{00A0 NO-BREAK SPACE}3` is not a key of the knowledge base: a no-break \
              space (U+00A0), not a plain space, follows `preGestureMessageEnglish`, so the \
              robot's reader ignores this line; location 3 will say nothing before the gesture \
              in English"
@@ -138,6 +138,8 @@ mod tests {
             .contains("replace a no-break space (U+00A0) after `preGestureMessageEnglish`"));
         // Any other key with an odd space in it is shown escaped too.
         let found = diagnostic(Span::new(0, 10), "colour\u{2003}1", None);
-        assert!(found.message.starts_with("`colour\\u{2003}1` is not a key"));
+        assert!(found
+            .message
+            .starts_with("`colour\\u{2003 EM SPACE}1` is not a key"));
     }
 }
