@@ -53,6 +53,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let render_options = RenderOptions {
         color: context.color_stdout(),
         quiet: context.quiet,
+        width: render::stdout_width(),
     };
     let failed = summary.errors > 0 || (args.deny_warnings && summary.warnings > 0);
     let exit = if failed { Exit::Findings } else { Exit::Clean };

@@ -99,6 +99,7 @@ fn report_to_stderr(checked: Checked<'_>, why: &str, context: &Context) -> Comma
     let render_options = RenderOptions {
         color: context.color_stderr(),
         quiet: true,
+        ..RenderOptions::default()
     };
     render::render(
         Format::Concise,

@@ -95,6 +95,7 @@ fn errors_to_stderr(checked: &mut Checked<'_>) -> std::io::Result<()> {
     let findings_only = RenderOptions {
         color: false,
         quiet: true,
+        ..RenderOptions::default()
     };
     concise::render(
         &[FileReport::new(checked)],

@@ -13,11 +13,7 @@ pub fn new(header: &[&str]) -> Table {
         .load_preset(presets::UTF8_FULL_CONDENSED)
         .set_content_arrangement(ContentArrangement::Dynamic)
         .set_header(header.to_vec());
-    if let Some(width) = std::env::var("COLUMNS")
-        .ok()
-        .and_then(|value| value.trim().parse::<u16>().ok())
-        .filter(|&width| width >= 20)
-    {
+    if let Some(width) = crate::render::columns() {
         table.set_width(width);
     }
     table

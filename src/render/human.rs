@@ -28,9 +28,6 @@ use crate::parallel;
 use crate::source::Position;
 use crate::syntax::Span;
 
-/// Where messages and help wrap.
-const WIDTH: usize = 100;
-
 /// Lines shown before and after each underlined place.
 const CONTEXT_LINES: usize = 1;
 
@@ -52,7 +49,7 @@ pub fn render(
     out: &mut dyn Write,
     options: &RenderOptions,
 ) -> io::Result<()> {
-    let handlers = Handlers::new(options.color, WIDTH);
+    let handlers = Handlers::new(options.color, options.width);
     for report in reports.iter().filter(|r| !r.diagnostics.is_empty()) {
         let source = Source::new(report.checked.source.name(), report.checked.source.text());
         // Findings are cut from the file in order (each is located from the one before),
@@ -593,6 +590,9 @@ mod tests {
     use crate::model::build::Options;
     use crate::render::located::FileReport;
     use crate::source::SourceFile;
+
+    /// The width the tests draw at: that of output that is not a terminal.
+    const WIDTH: usize = crate::render::DEFAULT_WIDTH;
 
     fn human(name: &str, text: &str) -> String {
         let source = SourceFile::from_bytes(name, text.as_bytes().to_vec());

@@ -82,9 +82,45 @@ pub fn reader_note(reports: &[FileReport<'_>]) -> String {
 }
 
 /// How human-facing formats are written.
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Copy)]
 pub struct RenderOptions {
     pub color: bool,
     /// Leave out the closing summary.
     pub quiet: bool,
+    /// Where `--format human` wraps messages and help ([`output_width`]).
+    pub width: usize,
+}
+
+impl Default for RenderOptions {
+    fn default() -> RenderOptions {
+        RenderOptions {
+            color: false,
+            quiet: false,
+            width: DEFAULT_WIDTH,
+        }
+    }
+}
+
+/// Where human output wraps when it does not go to a terminal (a file, a pipe, a CI log).
+pub const DEFAULT_WIDTH: usize = 100;
+
+/// Human output never wraps narrower than this: below it, a finding's frame and indents
+/// leave no room for words.
+const MIN_WIDTH: usize = 40;
+
+/// The width to wrap standard output at: `COLUMNS` (which wins, as for other tools), else
+/// the terminal's, else [`DEFAULT_WIDTH`] (standard output is no terminal).
+pub fn stdout_width() -> usize {
+    let terminal = || terminal_size::terminal_size_of(std::io::stdout()).map(|(width, _)| width.0);
+    columns()
+        .or_else(terminal)
+        .map_or(DEFAULT_WIDTH, |width| usize::from(width).max(MIN_WIDTH))
+}
+
+/// `COLUMNS`, when it holds a width of at least 20.
+pub fn columns() -> Option<u16> {
+    std::env::var("COLUMNS")
+        .ok()
+        .and_then(|value| value.trim().parse::<u16>().ok())
+        .filter(|&width| width >= 20)
 }

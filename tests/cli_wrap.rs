@@ -1,0 +1,105 @@
+//! Human output wraps at the terminal's width, at `COLUMNS` when it is set, and at 100
+//! columns when standard output is no terminal (issue 13, item 4).
+
+use std::path::Path;
+use std::process::Command as Process;
+use std::time::Duration;
+
+use assert_cmd::Command;
+
+/// A location whose isiZulu and Kinyarwanda messages are placeholders: each finding's help
+/// quotes the long English message, which has to wrap.
+const FILE: &str = "\
+robotLocationDescription      1 Entrance
+robotLocation                 1 2.6 8.1 -90
+gestureTarget                 1 0.0 0.0 0.0
+preGestureMessageEnglish      1 Welcome to the robotics lab, where you will meet the robots we build and the people who teach them to guide visitors
+preGestureMessageIsiZulu      1 No message in isiZulu
+preGestureMessageKinyarwanda  1 No message in Kinyarwanda
+postGestureMessageEnglish     1 I hope you enjoy the tour of the lab and that you come back to see what the robots have learned by then
+postGestureMessageIsiZulu     1 No message in isiZulu
+postGestureMessageKinyarwanda 1 No message in Kinyarwanda
+tourSpecification 1 1
+";
+
+fn ekb(dir: &Path) -> Command {
+    let mut command = Command::cargo_bin("ekb").unwrap();
+    command
+        .current_dir(dir)
+        .env_remove("EKB_CONFIG")
+        .env_remove("EKB_READER")
+        .env_remove("COLUMNS")
+        .timeout(Duration::from_secs(60));
+    command
+}
+
+/// The lines of a human report that wrap: messages and helps (a snippet's lines are the
+/// file's, never wrapped).
+fn wrapping_lines(report: &str) -> Vec<&str> {
+    let starts = ["  help:", "        ", "  ⚠", "  ×", "  │", "  ☞"];
+    report
+        .lines()
+        .filter(|line| starts.iter().any(|start| line.starts_with(start)))
+        .collect()
+}
+
+/// The width of the widest of `lines`, in characters.
+fn widest(lines: &[&str]) -> usize {
+    lines.iter().map(|line| line.chars().count()).max().unwrap()
+}
+
+fn setup() -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("kb.dat"), FILE).unwrap();
+    dir
+}
+
+#[test]
+fn wraps_at_100_columns_when_not_a_terminal() {
+    let dir = setup();
+    let output = ekb(dir.path()).args(["check", "kb.dat"]).output().unwrap();
+    let report = String::from_utf8(output.stdout).unwrap();
+    let lines = wrapping_lines(&report);
+    assert!(lines.len() > 8, "{report}");
+    assert!((90..=100).contains(&widest(&lines)), "{report}");
+}
+
+#[test]
+fn wraps_at_columns_when_set() {
+    let dir = setup();
+    let output = ekb(dir.path())
+        .env("COLUMNS", "60")
+        .args(["check", "kb.dat"])
+        .output()
+        .unwrap();
+    let report = String::from_utf8(output.stdout).unwrap();
+    let lines = wrapping_lines(&report);
+    assert!((50..=60).contains(&widest(&lines)), "{report}");
+}
+
+#[test]
+fn wraps_at_the_terminals_width() {
+    // `script` (util-linux) runs ekb on a pseudo-terminal of 70 columns.
+    if Process::new("script").arg("--version").output().is_err() {
+        eprintln!("skipped: no `script` to make a terminal");
+        return;
+    }
+    let dir = setup();
+    let ekb = assert_cmd::cargo::cargo_bin("ekb");
+    let shell = format!(
+        "stty rows 40 cols 70; {} --color never check kb.dat",
+        ekb.display()
+    );
+    let output = Process::new("script")
+        .args(["-qec", &shell, "/dev/null"])
+        .current_dir(dir.path())
+        .env_remove("COLUMNS")
+        .env_remove("EKB_CONFIG")
+        .env_remove("EKB_READER")
+        .output()
+        .unwrap();
+    let report = String::from_utf8(output.stdout).unwrap().replace('\r', "");
+    let lines = wrapping_lines(&report);
+    assert!(lines.len() > 8, "{report}");
+    assert!((60..=70).contains(&widest(&lines)), "{report}");
+}
