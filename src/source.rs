@@ -31,6 +31,9 @@ const MIN_MAPPED_SIZE: u64 = 64 * 1024;
 #[derive(Debug, Clone)]
 pub struct SourceFile {
     name: String,
+    /// The path it was read from (not for standard input or text already in memory): its
+    /// bytes, where `name` has replaced what is not UTF-8.
+    path: Option<PathBuf>,
     text: Text,
     invalid_utf8: Vec<Span>,
     /// How many lines have invalid UTF-8 (`invalid_utf8` holds the first of them only).
@@ -59,6 +62,7 @@ impl SourceFile {
         match String::from_utf8(bytes) {
             Ok(text) => SourceFile {
                 name,
+                path: None,
                 text: Text::Owned(text),
                 invalid_utf8: Vec::new(),
                 invalid_utf8_lines: 0,
@@ -67,6 +71,7 @@ impl SourceFile {
                 let (text, invalid_utf8, invalid_utf8_lines) = sanitize(err.into_bytes());
                 SourceFile {
                     name,
+                    path: None,
                     text: Text::Owned(text),
                     invalid_utf8,
                     invalid_utf8_lines,
@@ -111,6 +116,7 @@ impl SourceFile {
                 if is_utf8(&map) {
                     return Ok(SourceFile {
                         name,
+                        path: Some(path.to_path_buf()),
                         text: Text::Mapped(map),
                         invalid_utf8: Vec::new(),
                         invalid_utf8_lines: 0,
@@ -123,11 +129,19 @@ impl SourceFile {
         // One allocation of the right size: the text is the largest thing ekb holds, so
         // growing it by doubling would cost up to twice the file in peak memory.
         let bytes = read_limited(file, metadata.len() as usize).map_err(fail)?;
-        Ok(SourceFile::from_bytes(name, bytes))
+        Ok(SourceFile {
+            path: Some(path.to_path_buf()),
+            ..SourceFile::from_bytes(name, bytes)
+        })
     }
 
     pub fn name(&self) -> &str {
         &self.name
+    }
+
+    /// The path it was read from, if it was read from a file.
+    pub fn path(&self) -> Option<&Path> {
+        self.path.as_deref()
     }
 
     pub fn text(&self) -> &str {

@@ -39,6 +39,13 @@ impl<'a> Document<'a> {
         let pose_key = kb.dialect.unwrap_or(Dialect::Current).pose_key();
         let mut seen: HashMap<u32, usize> = HashMap::new();
         let mut writer = Writer::default();
+        // Without a pose line, the file would not tell its dialect: declare it.
+        if let Some(dialect) = kb
+            .dialect
+            .filter(|_| kb.locations.iter().all(|l| l.pose.is_none()))
+        {
+            writer.header_comment(&dialect.declaration());
+        }
         for (index, location) in kb.locations.iter().enumerate() {
             let path = format!("locations[{index}]");
             check_id(location.id, &format!("{path}.id"))?;
@@ -81,9 +88,17 @@ impl Writer {
         Span::new(start, self.text.len())
     }
 
+    /// A comment at the top of the file, written before any entry.
+    fn header_comment(&mut self, comment: &str) {
+        let span = self.span(comment);
+        self.document.comments.push(span);
+        self.document.header += 1;
+    }
+
     fn entry(&mut self, key: Key, id: Option<Span>, value: &str) -> u32 {
         let entry = Entry {
-            comments_end: 0,
+            // No comments of its own: those before it are the header's.
+            comments_end: self.document.header,
             key: self.span(key.name()),
             id,
             value: self.span(value),

@@ -171,11 +171,12 @@ impl<'a> Document<'a> {
         start as usize..self.entries[index].comments_end as usize
     }
 
-    /// Where the footer starts in `comments`: after the last entry's comments.
+    /// Where the footer starts in `comments`: after the last entry's comments (after the
+    /// header's, when there is no entry).
     fn footer(&self) -> usize {
         self.entries
             .last()
-            .map_or(0, |entry| entry.comments_end as usize)
+            .map_or(self.header as usize, |entry| entry.comments_end as usize)
     }
 
     /// The canonical text.

@@ -589,13 +589,16 @@ impl<'a> Builder<'a> {
             }
             [Some(_), None] => Some(Dialect::Seed),
             [None, Some(_)] => Some(Dialect::Current),
+            // No pose line: a key of the current dialect tells it, else a declaration
+            // (`# ekb: dialect seed`, as `ekb import` writes for an export without poses).
             [None, None] => self
                 .runs
                 .iter()
                 .flatten()
                 .chain(&self.locations)
                 .any(|l| l.gesture_arm.is_some() || l.cultural_knowledge().is_some())
-                .then_some(Dialect::Current),
+                .then_some(Dialect::Current)
+                .or_else(|| Dialect::declared_in(self.text)),
         };
         let mut runs = self.runs;
         runs.push(self.locations);

@@ -45,7 +45,48 @@ impl Dialect {
             Dialect::Current => Key::RobotLocationPose,
         }
     }
+
+    /// The comment that declares this dialect in a file whose lines do not tell it (no pose,
+    /// no key of the current dialect): what `ekb import` writes for an export without poses,
+    /// so that exporting the file again gives the same dialect.
+    pub fn declaration(self) -> String {
+        format!("{DECLARATION}{}", self.name())
+    }
+
+    /// The dialect that a comment line of `text` declares ([`Dialect::declaration`], blanks
+    /// free around each part), the first if several do.
+    pub fn declared_in(text: &str) -> Option<Dialect> {
+        let declared = |line: &str| {
+            let rest = line.trim().strip_prefix('#')?.trim_start();
+            let rest = rest.strip_prefix("ekb:")?.trim_start();
+            match rest.strip_prefix("dialect")?.trim() {
+                "seed" => Some(Dialect::Seed),
+                "current" => Some(Dialect::Current),
+                _ => None,
+            }
+        };
+        // Looked for only where the lines tell no dialect, by memchr, a line at most once.
+        let bytes = text.as_bytes();
+        let mut from = 0;
+        while let Some(found) = memchr::memmem::find(&bytes[from..], b"ekb:") {
+            let at = from + found;
+            // `from` is always where a line starts.
+            let start = memchr::memrchr(b'\n', &bytes[from..at]).map_or(from, |i| from + i + 1);
+            let end = memchr::memchr(b'\n', &bytes[at..]).map_or(bytes.len(), |i| at + i);
+            if let Some(dialect) = declared(&text[start..end]) {
+                return Some(dialect);
+            }
+            from = end + 1;
+            if from >= bytes.len() {
+                break;
+            }
+        }
+        None
+    }
 }
+
+/// How a dialect's declaration begins ([`Dialect::declaration`]).
+const DECLARATION: &str = "# ekb: dialect ";
 
 /// The languages the robot speaks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -250,6 +291,32 @@ impl Key {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_comment_declares_a_dialect() {
+        for dialect in [Dialect::Seed, Dialect::Current] {
+            let text = format!(
+                "# header\n{}\nrobotLocationDescription 1 A\n",
+                dialect.declaration()
+            );
+            assert_eq!(Dialect::declared_in(&text), Some(dialect));
+        }
+        assert_eq!(
+            Dialect::declared_in("#ekb:dialect   seed  \n"),
+            Some(Dialect::Seed)
+        );
+        for text in [
+            "",
+            "# ekb: dialect\n",
+            "# ekb: dialect old\n",
+            "robotLocationDescription 1 ekb: dialect seed\n",
+            "# ekb: ignore[key-case] ekb: dialect seed\n",
+        ] {
+            assert_eq!(Dialect::declared_in(text), None, "{text:?}");
+        }
+        let many = "# ekb: x ".repeat(100_000) + "\n# ekb: dialect current";
+        assert_eq!(Dialect::declared_in(&many), Some(Dialect::Current));
+    }
 
     #[test]
     fn names_round_trip() {

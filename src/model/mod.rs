@@ -26,8 +26,10 @@ pub struct Value<T> {
     pub span: Span,
 }
 
-/// Where the robot stands: metres, metres, degrees.
+/// Where the robot stands: metres, metres, degrees. (An unknown field in the JSON of
+/// `ekb import` is refused, as everywhere in an export: it is a typo or another tool's.)
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
 pub struct Pose {
     pub x: f64,
     pub y: f64,
@@ -36,6 +38,7 @@ pub struct Pose {
 
 /// A point the robot gestures at, in metres. `0 0 0` means no gesture.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
 pub struct Point {
     pub x: f64,
     pub y: f64,

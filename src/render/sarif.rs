@@ -4,8 +4,9 @@
 //! The run lists the whole rule catalogue, so a result's `ruleIndex` is its rule's place in
 //! [`rules::ALL`]; columns count Unicode code points, as everywhere in `ekb`.
 
+use std::borrow::Cow;
 use std::io::{self, Write};
-use std::path::{Path, MAIN_SEPARATOR_STR};
+use std::path::{Path, MAIN_SEPARATOR};
 
 use serde::{Serialize, Serializer};
 use serde_json::{json, Value};
@@ -16,9 +17,6 @@ use crate::diagnostic::Severity;
 use crate::rules::{self, Rule};
 
 const SCHEMA: &str = "https://json.schemastore.org/sarif-2.1.0.json";
-
-/// What `ekb` calls standard input; kept as is rather than made into a file URI.
-const STDIN: &str = "<stdin>";
 
 pub fn render(reports: &[FileReport<'_>], out: &mut dyn Write) -> io::Result<()> {
     let mut driver = json!({
@@ -81,12 +79,12 @@ struct Results<'r, 'a>(&'r [FileReport<'a>]);
 
 impl Serialize for Results<'_, '_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        serializer.collect_seq(
-            self.0
-                .iter()
-                .flat_map(|report| &report.diagnostics)
-                .map(result),
-        )
+        serializer.collect_seq(self.0.iter().flat_map(|report| {
+            let source = report.checked.source;
+            let uri = artifact_uri(source.name(), source.path());
+            let results = report.diagnostics.iter();
+            results.map(move |diagnostic| result(diagnostic, &uri))
+        }))
     }
 }
 
@@ -103,8 +101,8 @@ fn descriptor(rule: &Rule) -> Value {
     })
 }
 
-fn result(diagnostic: &LocatedDiagnostic<'_>) -> Value {
-    let uri = artifact_uri(diagnostic.file);
+/// A result of a file whose `artifactLocation` is `uri`.
+fn result(diagnostic: &LocatedDiagnostic<'_>, uri: &str) -> Value {
     let mut result = json!({
         "ruleId": diagnostic.rule,
         "ruleIndex": rules::ALL.iter().position(|rule| std::ptr::eq(*rule, diagnostic.diagnostic.rule)),
@@ -158,30 +156,53 @@ fn section<'a>(markdown: &'a str, title: &str) -> Option<&'a str> {
     Some(rest[..end].trim())
 }
 
-/// A file name as a URI reference: relative paths stay relative (code scanning resolves them
-/// against the repository), with forward slashes, no leading `./`, and percent-encoding;
-/// absolute paths become `file:` URIs.
-fn artifact_uri(file: &str) -> String {
-    if file == STDIN {
-        return file.to_string();
-    }
-    let slashed = file.replace(MAIN_SEPARATOR_STR, "/");
-    let mut relative = slashed.as_str();
-    while let Some(rest) = relative.strip_prefix("./") {
-        relative = rest.trim_start_matches('/');
+/// A file as a URI reference (RFC 3986, the schema's `uri-reference`): relative paths stay
+/// relative (code scanning resolves them against the repository), with forward slashes, no
+/// leading `./`, and every byte but the unreserved characters and `/` percent-encoded — the
+/// path's own bytes, so a name that is not UTF-8 keeps them; absolute paths become `file:`
+/// URIs. Standard input, which has no path, is its name encoded (`%3Cstdin%3E`).
+fn artifact_uri(name: &str, path: Option<&Path>) -> String {
+    let bytes = path.map_or(Cow::Borrowed(name.as_bytes()), path_bytes);
+    let slashed: Vec<u8> = bytes
+        .iter()
+        .map(|&byte| match byte {
+            b'\\' if MAIN_SEPARATOR == '\\' => b'/',
+            byte => byte,
+        })
+        .collect();
+    let mut relative = slashed.as_slice();
+    while let Some(rest) = relative.strip_prefix(b"./") {
+        relative = trim_slashes(rest);
     }
     let encoded = percent_encode(relative);
-    match Path::new(file).is_absolute() {
+    match path.is_some_and(Path::is_absolute) {
         true if encoded.starts_with('/') => format!("file://{encoded}"),
         true => format!("file:///{encoded}"),
         false => encoded,
     }
 }
 
+/// The bytes of a path as the file system has them (on Unix), else its text.
+fn path_bytes(path: &Path) -> Cow<'_, [u8]> {
+    #[cfg(unix)]
+    {
+        Cow::Borrowed(std::os::unix::ffi::OsStrExt::as_bytes(path.as_os_str()))
+    }
+    #[cfg(not(unix))]
+    {
+        Cow::Owned(path.to_string_lossy().into_owned().into_bytes())
+    }
+}
+
+fn trim_slashes(bytes: &[u8]) -> &[u8] {
+    let slashes = bytes.iter().take_while(|&&byte| byte == b'/').count();
+    &bytes[slashes..]
+}
+
 /// Percent-encodes every byte but the URI's unreserved characters and `/`.
-fn percent_encode(path: &str) -> String {
+fn percent_encode(path: &[u8]) -> String {
     let mut out = String::with_capacity(path.len());
-    for byte in path.bytes() {
+    for &byte in path {
         match byte {
             b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' | b'/' => {
                 out.push(byte as char)
@@ -196,15 +217,33 @@ fn percent_encode(path: &str) -> String {
 mod tests {
     use super::*;
 
+    /// [`artifact_uri`] of a file read from `path`.
+    fn uri(path: &str) -> String {
+        artifact_uri(path, Some(Path::new(path)))
+    }
+
     #[test]
     fn uris_are_relative_slashed_and_encoded() {
-        assert_eq!(artifact_uri("./data/kb.dat"), "data/kb.dat");
-        assert_eq!(artifact_uri("data/my kb%.dat"), "data/my%20kb%25.dat");
-        assert_eq!(artifact_uri("data/Ùmuntu.dat"), "data/%C3%99muntu.dat");
-        assert_eq!(artifact_uri("<stdin>"), "<stdin>");
+        assert_eq!(uri("./data/kb.dat"), "data/kb.dat");
+        assert_eq!(uri("data/my kb%.dat"), "data/my%20kb%25.dat");
+        assert_eq!(uri("data/Ùmuntu.dat"), "data/%C3%99muntu.dat");
         if cfg!(unix) {
-            assert_eq!(artifact_uri("/srv/kb.dat"), "file:///srv/kb.dat");
+            assert_eq!(uri("/srv/kb.dat"), "file:///srv/kb.dat");
         }
+    }
+
+    #[test]
+    fn standard_input_is_a_uri_reference_too() {
+        assert_eq!(artifact_uri("<stdin>", None), "%3Cstdin%3E");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_name_that_is_not_utf8_keeps_its_bytes() {
+        use std::os::unix::ffi::OsStrExt;
+        let path = Path::new(std::ffi::OsStr::from_bytes(b"data/k\xffb.dat"));
+        let name = path.display().to_string();
+        assert_eq!(artifact_uri(&name, Some(path)), "data/k%FFb.dat");
     }
 
     #[test]
