@@ -148,8 +148,8 @@ fn human(diff: &Diff<'_>, old_name: &str, new_name: &str, style: Style) -> Strin
     if let Some(tour) = &diff.tour {
         let side = |side: &Option<TourSide>, which: &str| match side {
             Some(side) => {
-                let stops: Vec<String> = side.stops.iter().map(u32::to_string).collect();
-                format!("{} ({which} line {})", stops.join(" → "), side.line)
+                let stops = present::listed(side.stops.iter(), " → ");
+                format!("{stops} ({which} line {})", side.line)
             }
             None => "no tour".to_string(),
         };
@@ -159,12 +159,7 @@ fn human(diff: &Diff<'_>, old_name: &str, new_name: &str, style: Style) -> Strin
             side(&tour.new, "new")
         ));
         let mut details = Vec::new();
-        let ids = |ids: &[u32]| {
-            ids.iter()
-                .map(u32::to_string)
-                .collect::<Vec<_>>()
-                .join(", ")
-        };
+        let ids = |ids: &[u32]| present::listed(ids.iter(), ", ");
         if !tour.added.is_empty() {
             details.push(format!("stops added: {}", ids(&tour.added)));
         }

@@ -130,19 +130,17 @@ fn message_marks(location: &Location<'_>) -> String {
     marks
 }
 
-/// `1 (start)`, `2, 5` or `—` (not on the tour).
+/// `1 (start)`, `2, 5` or `—` (not on the tour); the first positions of a location that a
+/// long tour visits over and over, then how many more.
 fn tour_cell(positions: &[usize]) -> String {
     if positions.is_empty() {
         return "—".to_string();
     }
-    positions
-        .iter()
-        .map(|&position| match position {
-            1 => "1 (start)".to_string(),
-            n => n.to_string(),
-        })
-        .collect::<Vec<_>>()
-        .join(", ")
+    let positions = positions.iter().map(|&position| match position {
+        1 => "1 (start)".to_string(),
+        n => n.to_string(),
+    });
+    present::listed(positions, ", ")
 }
 
 /// `ekb locations --format json`.

@@ -105,9 +105,9 @@ fn render(checked: &Checked<'_>, location: &Location<'_>) -> String {
         table.add_row([line, key.name().to_string(), value]);
     }
     out.push_str(&format!("{table}\n"));
+    // As `check` shows them: the first findings of each rule, then how many more.
     let findings: Vec<_> = checked
-        .diagnostics
-        .iter()
+        .shown()
         .filter(|d| d.location_id == Some(location.id))
         .collect();
     if !findings.is_empty() {
@@ -134,6 +134,10 @@ fn tour_sentence(checked: &Checked<'_>, id: u32) -> String {
     let mut sentence = match positions {
         [] => return "not on the tour".to_string(),
         [one] => format!("stop {one} of {total} on the tour"),
+        many if many.len() > present::MAX_LISTED => format!(
+            "stops {} of {total} on the tour",
+            present::listed(many.iter(), ", ")
+        ),
         [init @ .., last] => {
             let init: Vec<String> = init.iter().map(usize::to_string).collect();
             format!(

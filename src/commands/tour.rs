@@ -56,15 +56,27 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         eprintln!("ekb: the tour of {file} has no stops");
         return Ok(Exit::Findings);
     }
-    let tour = Tour::new(&checked, args.lang);
+    // The text shows the first stops, as `check` shows the first findings of a rule; the
+    // JSON has them all.
+    let shown = match args.format {
+        TourFormat::Text => MAX_STOPS_SHOWN,
+        TourFormat::Json => usize::MAX,
+    };
+    let tour = Tour::new(&checked, args.lang, shown);
     let mut stdout = std::io::stdout().lock();
     match args.format {
-        TourFormat::Text => stdout.write_all(tour.text(&file).as_bytes())?,
+        TourFormat::Text => {
+            let order = checked.kb.tour_stops();
+            stdout.write_all(tour.text(&file, order).as_bytes())?
+        }
         TourFormat::Json => json::write(&tour, &mut stdout)?,
     }
     stdout.flush()?;
     Ok(Exit::Clean)
 }
+
+/// The most stops `ekb tour` shows as text (the robot's reader holds 20).
+const MAX_STOPS_SHOWN: usize = 1000;
 
 /// The tour as the robot will perform it in one language.
 #[derive(Serialize)]
@@ -81,6 +93,14 @@ struct Tour<'a> {
     translated: usize,
     /// Messages the tour says: two per stop.
     messages: usize,
+    /// How many of the messages are placeholders, and how many missing.
+    #[serde(skip)]
+    placeholders: usize,
+    #[serde(skip)]
+    missing: usize,
+    /// How many stops the tour has (`stops` may hold only the first).
+    #[serde(skip)]
+    total: usize,
 }
 
 #[derive(Serialize)]
@@ -134,7 +154,8 @@ fn serialize_language<S: serde::Serializer>(language: &Language, s: S) -> Result
 }
 
 impl<'a> Tour<'a> {
-    fn new(checked: &'a Checked<'a>, language: Language) -> Tour<'a> {
+    /// The tour of `checked` in `language`, with the first `shown` stops in full.
+    fn new(checked: &'a Checked<'a>, language: Language, shown: usize) -> Tour<'a> {
         let lines = Lines::new(checked.source.text());
         let text = checked.source.text().as_bytes();
         let loaded = reader::load(text, checked.reader);
@@ -142,6 +163,7 @@ impl<'a> Tour<'a> {
         let stops: Vec<Stop> = checked
             .kb
             .tour_stops()
+            .take(shown)
             .enumerate()
             .map(|(index, id)| {
                 let location = checked.kb.location(id);
@@ -190,11 +212,19 @@ impl<'a> Tour<'a> {
                 }
             })
             .collect();
-        let translated = stops
-            .iter()
-            .flat_map(|stop| [&stop.before, &stop.after])
-            .filter(|said| matches!(said.message, Message::Written(_)))
-            .count();
+        // Every stop's messages counted, shown or not.
+        let (mut translated, mut placeholders, mut missing, mut total) = (0, 0, 0, 0);
+        for id in checked.kb.tour_stops() {
+            total += 1;
+            let location = checked.kb.location(id);
+            for phase in Phase::ALL {
+                match location.map_or(Message::Missing, |l| Message::of(l, phase, language)) {
+                    Message::Written(_) => translated += 1,
+                    Message::Placeholder(_) => placeholders += 1,
+                    Message::Missing => missing += 1,
+                }
+            }
+        }
         let written_tour: Vec<Option<i32>> = checked
             .kb
             .tour_stops()
@@ -208,30 +238,31 @@ impl<'a> Tour<'a> {
             language,
             reader: checked.reader.name(),
             robot_tour: (robot_tour != written_tour).then_some(robot_tour),
-            messages: stops.len() * 2,
+            messages: total * 2,
             stops,
             translated,
+            placeholders,
+            missing,
+            total,
         }
     }
 
-    fn text(&self, file: &str) -> String {
-        let order: Vec<String> = self.stops.iter().map(|s| s.id.to_string()).collect();
-        let count = self.stops.len();
+    fn text(&self, file: &str, order: impl Iterator<Item = u32>) -> String {
+        let count = self.total;
         let mut out = format!(
             "Tour of {file} in {}: {count} stop{} ({}), as reader {} loads it\n",
             self.language.name(),
             if count == 1 { "" } else { "s" },
-            order.join(" → "),
+            present::listed(order, " → "),
             self.reader
         );
         if let Some(robot_tour) = &self.robot_tour {
-            let stops: Vec<String> = robot_tour
+            let stops = robot_tour
                 .iter()
-                .map(|stop| stop.map_or("?".to_string(), |id| id.to_string()))
-                .collect();
-            let stops = match stops.is_empty() {
+                .map(|stop| stop.map_or("?".to_string(), |id| id.to_string()));
+            let stops = match robot_tour.is_empty() {
                 true => "no tour at all".to_string(),
-                false => stops.join(" → "),
+                false => present::listed(stops, " → "),
             };
             out.push_str(&format!(
                 "The robot's reader loads another tour: {stops} (`ekb check` says why)\n"
@@ -240,6 +271,13 @@ impl<'a> Tour<'a> {
         for stop in &self.stops {
             out.push('\n');
             out.push_str(&stop.text(self.language));
+        }
+        if self.total > self.stops.len() {
+            out.push_str(&format!(
+                "\n… and {} more stops, not shown (ekb shows the first {}; `ekb tour --format json` lists them all)\n",
+                self.total - self.stops.len(),
+                self.stops.len()
+            ));
         }
         out.push('\n');
         out.push_str(&self.closing());
@@ -252,16 +290,11 @@ impl<'a> Tour<'a> {
             Language::English => "written",
             _ => "translated",
         };
-        let count = |status| {
-            self.stops
-                .iter()
-                .flat_map(|stop| [&stop.before, &stop.after])
-                .filter(|said| said.status == status)
-                .count()
-        };
         let mut parts = Vec::new();
-        for (status, word) in [("placeholder", "placeholder"), ("missing", "missing")] {
-            let n = count(status);
+        for (n, word) in [
+            (self.placeholders, "placeholder"),
+            (self.missing, "missing"),
+        ] {
             if n > 0 {
                 let plural = if n > 1 && word == "placeholder" {
                     "s"

@@ -5,7 +5,6 @@ use serde::ser::{Serialize, SerializeSeq, Serializer};
 
 use super::{point, pose};
 use crate::model::{words, Arm, Dialect, Key, Language, Location, Phase, Point, Pose};
-use crate::render::escape::escape;
 use crate::syntax::Span;
 
 /// One field of a location. The pose is one field whichever dialect's key holds it.
@@ -100,15 +99,16 @@ pub enum FieldValue<'a> {
 }
 
 impl FieldValue<'_> {
-    /// The value for a person, escaped; text in double quotes when `quote` is set.
+    /// The value for a person, escaped and cut after a few hundred characters; text in
+    /// double quotes when `quote` is set.
     pub fn human(&self, quote: bool) -> String {
         match self {
             FieldValue::Text(text) if quote => super::quoted(text),
-            FieldValue::Text(text) => escape(text).into_owned(),
+            FieldValue::Text(text) => super::text(text).into_owned(),
             FieldValue::Pose(value) => pose(value),
             FieldValue::Point(value) => point(value),
             FieldValue::Arm(arm) => arm.name().to_string(),
-            FieldValue::Words(list) => escape(&list.join(" ")).into_owned(),
+            FieldValue::Words(list) => super::text(&list.join(" ")).into_owned(),
         }
     }
 }

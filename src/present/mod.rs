@@ -17,6 +17,7 @@ use crate::check::Checked;
 use crate::model::{
     is_placeholder, Arm, KnowledgeBase, Language, Location, Phase, Point, Pose, Value,
 };
+use crate::render::clip;
 use crate::render::escape::escape;
 use crate::source::LineIndex;
 use crate::syntax::Span;
@@ -137,14 +138,35 @@ impl<'a> Message<'a> {
 pub const MESSAGE_LEGEND: &str =
     "messages: ✓ written  ~ placeholder, untranslated  ✗ missing (the robot says nothing)";
 
-/// A text value from the file, escaped and in double quotes.
+/// A text value from the file, escaped and in double quotes, cut after a few hundred
+/// characters ([`clip`]).
 pub fn quoted(text: &str) -> String {
-    format!("\"{}\"", escape(text))
+    clip::quoted(text)
 }
 
-/// A text value from the file, escaped.
+/// A text value from the file, escaped, cut after a few hundred characters ([`clip`]).
 pub fn text(text: &str) -> Cow<'_, str> {
-    escape(text)
+    clip::shown(text)
+}
+
+/// The most items (tour stops, positions on the tour) that one line lists.
+pub const MAX_LISTED: usize = 100;
+
+/// `items` joined by `separator`, at most [`MAX_LISTED`] of them, then `… and N more` (a
+/// million-stop tour is one line of a file, and must not be a megabyte line of output).
+pub fn listed<T: std::fmt::Display>(mut items: impl Iterator<Item = T>, separator: &str) -> String {
+    let mut out = String::new();
+    for (index, item) in items.by_ref().take(MAX_LISTED).enumerate() {
+        if index > 0 {
+            out.push_str(separator);
+        }
+        out.push_str(&item.to_string());
+    }
+    let more = items.count();
+    if more > 0 {
+        out.push_str(&format!(" … and {more} more"));
+    }
+    out
 }
 
 /// The 1-based line numbers of spans in one file.
@@ -239,6 +261,18 @@ mod tests {
             }),
             "2.6, 8.1, -90.0°"
         );
+    }
+
+    #[test]
+    fn long_lists_are_cut() {
+        assert_eq!(listed([1, 2, 3].iter(), " → "), "1 → 2 → 3");
+        let many = listed(0..MAX_LISTED + 7, ", ");
+        assert!(many.starts_with("0, 1, 2"));
+        assert!(many.ends_with(&format!(
+            "{}, {} … and 7 more",
+            MAX_LISTED - 2,
+            MAX_LISTED - 1
+        )));
     }
 
     #[test]

@@ -5,7 +5,6 @@ use super::field::{Field, FieldValue};
 use crate::model::{Point, Pose};
 use crate::reader::view::{self, Held};
 use crate::reader::Reader;
-use crate::render::escape::escape;
 
 /// What the robot holds of a field the file gives as `written`, and, where that is not
 /// what the file says, what the file says.
@@ -52,7 +51,7 @@ pub fn shown(field: Field, held: &Held) -> String {
         Held::Nothing if matches!(field, Field::Pose | Field::GestureTarget) => numbers([0.0; 3]),
         Held::Nothing => "nothing".to_string(),
         Held::Text(text) => super::quoted(text),
-        Held::Words(words) => escape(&words.join(" ")).into_owned(),
+        Held::Words(words) => super::text(&words.join(" ")).into_owned(),
         Held::Numbers(loaded) => numbers(loaded.map(view::shortest)),
         Held::Undefined => "undefined".to_string(),
         Held::NotRead => "not read".to_string(),

@@ -3,6 +3,7 @@
 //! Every format works from [`FileReport`]s: a file's diagnostics with positions already
 //! converted to lines and columns ([`located`]).
 
+pub mod clip;
 pub mod concise;
 pub mod escape;
 pub mod github;

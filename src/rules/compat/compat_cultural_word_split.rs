@@ -3,6 +3,7 @@ use crate::diagnostic::Diagnostic;
 use crate::model::Location;
 use crate::reader::line::word_pieces;
 use crate::reader::Reader;
+use crate::render::clip;
 use crate::rules::declare_rule;
 use crate::syntax;
 
@@ -90,12 +91,13 @@ pub fn check(location: &Location<'_>, reader: Reader, out: &mut Diagnostics) {
                 &COMPAT_CULTURAL_WORD_SPLIT,
                 *span,
                 format!(
-                    "the robot's reader splits `{word}` at each character that is not a letter or digit and loads {}: {}.{consequence}",
+                    "the robot's reader splits `{}` at each character that is not a letter or digit and loads {}: {}.{consequence}",
+                    clip::shown(word),
                     match pieces.len() {
                         1 => "1 word".to_string(),
                         n => format!("{n} words"),
                     },
-                    if listed.is_empty() { "nothing".to_string() } else { listed.join(", ") }
+                    if listed.is_empty() { "nothing".to_string() } else { clip::shown(&listed.join(", ")).into_owned() }
                 ),
             )
             .at_location(Some(location.id))

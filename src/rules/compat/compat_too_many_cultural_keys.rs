@@ -1,6 +1,7 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::Location;
+use crate::render::clip;
 use crate::rules::declare_rule;
 use crate::syntax::{self, Span};
 
@@ -45,7 +46,7 @@ pub fn check(location: &Location<'_>, out: &mut Diagnostics) {
                 "location {} has {} culturalKnowledge words, but the robot keeps only {MAX_CULTURAL_KEYS}: it ignores {}",
                 location.id,
                 words.len(),
-                names.join(", ")
+                clip::shown(&names.join(", "))
             ),
         )
         .at_location(Some(location.id))

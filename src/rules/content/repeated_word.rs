@@ -1,6 +1,7 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::{Language, Location, Phase};
+use crate::render::clip;
 use crate::rules::declare_rule;
 use crate::syntax::{self, Span};
 
@@ -41,11 +42,15 @@ pub fn check(location: &Location<'_>, out: &mut Diagnostics) {
                 Diagnostic::new(
                     &REPEATED_WORD,
                     first.cover(second),
-                    format!("\"{word}\" is repeated: the robot would say it twice"),
+                    format!(
+                        "{} is repeated: the robot would say it twice",
+                        clip::quoted(word)
+                    ),
                 )
                 .at_location(Some(location.id))
                 .with_help(format!(
-                    "delete one \"{word}\", or write the word that was meant"
+                    "delete one {}, or write the word that was meant",
+                    clip::quoted(word)
                 ))
             });
         }

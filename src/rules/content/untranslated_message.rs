@@ -1,6 +1,7 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::{is_placeholder, Language, Location, Phase, Value};
+use crate::render::clip;
 use crate::rules::declare_rule;
 
 declare_rule! {
@@ -54,18 +55,18 @@ fn report(
             .filter(|english| !is_placeholder(english.value));
         let help = match english {
             Some(english) if language != Language::English => format!(
-                "translate the English message into {}: \"{}\"",
+                "translate the English message into {}: {}",
                 language.name(),
-                english.value
+                clip::quoted(english.value)
             ),
             _ => format!("write the message in {}", language.name()),
         };
         let message_text = format!(
-            "the {} message {} the gesture at location {} is a placeholder: the robot would say \"{}\"",
+            "the {} message {} the gesture at location {} is a placeholder: the robot would say {}",
             language.name(),
             phase.name(),
             location.id,
-            message.value
+            clip::quoted(message.value)
         );
         Diagnostic::new(&UNTRANSLATED_MESSAGE, message.span, message_text)
             .at_location(Some(location.id))

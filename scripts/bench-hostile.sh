@@ -1,0 +1,119 @@
+#!/usr/bin/env bash
+# Time and peak memory of every command on the red-team's hostile inputs (issue 12, item 5),
+# each against `ekb check` of the same file, measured back to back.
+#
+#   scripts/bench-hostile.sh [WORKDIR]
+#
+# Generates, in WORKDIR (default: a new folder under /tmp; nothing is committed):
+#   msg-1mb.dat      the real file with location 1's first English message 1 MB long
+#   msg-50mb.dat     the same, 50 MB
+#   desc-50mb.dat    the real file with location 1's description 50 MB long
+#   tour-1m.dat      the real file with a tour of 1,000,000 stops (2 MB on one line)
+#   lines-528mb.dat  528 MB of 88 million short lines (`k 1 v`: an entry each, all of
+#                    location 1; 6 bytes a line)
+# Then, for each command on the inputs of the issue, runs `ekb check FILE` and the command
+# one after the other RUNS times (default 3; hyperfine -N, output to /dev/null) and takes
+# each one's median wall time, and measures each one's peak resident memory with
+# /usr/bin/time -v. It prints the command's time as a ratio to the check's (target ≤ 10×)
+# and its peak as a ratio to the file's size (target ≤ 3×). Commands that write (`fmt`)
+# write a copy of the file, made before each run.
+# Needs hyperfine (Debian: apt-get install hyperfine).
+set -euo pipefail
+
+root="$(cd "$(dirname "$0")/.." && pwd)"
+work="${1:-$(mktemp -d /tmp/ekb-hostile.XXXXXX)}"
+mkdir -p "$work"
+runs="${RUNS:-3}"
+
+cargo build --release --quiet --manifest-path "$root/Cargo.toml" --bin ekb
+ekb="$root/target/release/ekb"
+base="$root/data/environmentKnowledgeBaseInput.dat"
+
+# The real file with the value of the first line of `key` and id 1 replaced by `bytes`
+# bytes of words.
+with_long_value() { # key bytes out
+  python3 - "$base" "$1" "$2" "$3" <<'EOF'
+import re, sys
+base, key, size, out = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
+text = open(base).read()
+words = ("the robot greets every visitor " * (size // 31 + 1))[:size].rstrip()
+line = re.compile(r"^(" + key + r" +1 ).*$", re.M)
+open(out, "w").write(line.sub(lambda m: m.group(1) + words, text, count=1))
+EOF
+}
+
+[ -f "$work/msg-1mb.dat" ] || with_long_value preGestureMessageEnglish 1000000 "$work/msg-1mb.dat"
+[ -f "$work/msg-50mb.dat" ] || with_long_value preGestureMessageEnglish 50000000 "$work/msg-50mb.dat"
+[ -f "$work/desc-50mb.dat" ] || with_long_value robotLocationDescription 50000000 "$work/desc-50mb.dat"
+if [ ! -f "$work/tour-1m.dat" ]; then
+  { grep -v '^tourSpecification' "$base"
+    printf 'tourSpecification 1000000'
+    # Ids 1 to 5 (the file's five locations) over and over.
+    yes ' 1 2 3 4 5' | head -n 200000 | tr -d '\n'
+    printf '\n'
+  } > "$work/tour-1m.dat"
+fi
+if [ ! -f "$work/lines-528mb.dat" ]; then
+  yes 'k 1 v' | head -n 88000000 > "$work/lines-528mb.dat"
+fi
+
+# name|file|command (the file is appended)
+cases=(
+  "show 1|msg-1mb.dat|show 1"
+  "show 1|msg-50mb.dat|show 1"
+  "locations|msg-50mb.dat|locations"
+  "show 1|desc-50mb.dat|show 1"
+  "locations|desc-50mb.dat|locations"
+  "tour|desc-50mb.dat|tour"
+  "locations|tour-1m.dat|locations"
+  "tour|tour-1m.dat|tour"
+  "show 1|tour-1m.dat|show 1"
+  "diff A A|tour-1m.dat|diff FILE"
+  "fmt|lines-528mb.dat|fmt"
+  "fmt --check|lines-528mb.dat|fmt --check"
+)
+
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
+echo "date:    $(date -u '+%Y-%m-%d %H:%M UTC'), load average: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "ekb:     $("$ekb" --version), commit $(git -C "$root" rev-parse --short HEAD)"
+echo
+
+peak_kb() { # the command (findings and refusals are not failures here)
+  { /usr/bin/time -v "$@" 2>&1 >/dev/null || true; } |
+    awk -F: '/Maximum resident set size/ { gsub(/ /, "", $2); print $2 }'
+}
+
+# The command line of a case on `file`; `fmt` works on a copy.
+command_line() { # command file
+  local command="$1" file="$2"
+  case "$command" in
+    "diff FILE") echo "$ekb diff $file $file" ;;
+    fmt) echo "$ekb fmt $work/copy.dat" ;;
+    *) echo "$ekb $command $file" ;;
+  esac
+}
+
+printf '| command | file | size | check | command | / check | check peak | peak | / size |\n'
+printf '|---|---|---:|---:|---:|---:|---:|---:|---:|\n'
+for entry in "${cases[@]}"; do
+  IFS='|' read -r name file command <<< "$entry"
+  path="$work/$file"
+  size=$(stat -c %s "$path")
+  line=$(command_line "$command" "$path")
+  prepare=()
+  [ "$command" = fmt ] && prepare=(--prepare "cp $path $work/copy.dat")
+  # Back to back, in one hyperfine run; -i: findings exit 1.
+  hyperfine -N -i --runs "$runs" --export-csv "$work/case.csv" \
+    "$ekb check $path" "${prepare[@]}" "$line" > /dev/null 2>&1
+  read -r check_s < <(awk -F, 'NR == 2 { print $4 }' "$work/case.csv")
+  read -r command_s < <(awk -F, 'NR == 3 { print $4 }' "$work/case.csv")
+  check_peak=$(peak_kb "$ekb" check "$path")
+  [ "$command" = fmt ] && cp "$path" "$work/copy.dat"
+  # shellcheck disable=SC2086 # the command is split into its words on purpose
+  peak=$(peak_kb $line)
+  awk -v n="$name" -v f="$file" -v s="$size" -v c="$check_s" -v t="$command_s" \
+      -v cp="$check_peak" -v p="$peak" 'BEGIN {
+    printf "| `%s` | %s | %.1f MB | %.3f s | %.3f s | %.1f× | %.0f MB | %.0f MB | %.2f× |\n",
+      n, f, s / 1e6, c, t, t / c, cp * 1024 / 1e6, p * 1024 / 1e6, p * 1024 / s }'
+done
+rm -f "$work/copy.dat" "$work/case.csv"
