@@ -11,7 +11,7 @@ use crate::commands::{CommandError, Exit};
 use crate::render::escape::escape;
 use crate::rules::structure::not_a_knowledge_base;
 use crate::source::{LineIndex, SourceFile};
-use crate::write::write_atomically;
+use crate::write::{write_atomically, write_atomically_with};
 
 /// What to do with a file's new text.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -74,6 +74,22 @@ pub fn deliver(
     Ok(changed)
 }
 
+/// Writes the new text of the file at `path`, made by `fill` as it is written, in place of
+/// the file (standard output for `-`): for a text too large to hold whole. If `fill` fails,
+/// the file is left as it was.
+pub fn write_new(
+    path: &Path,
+    fill: impl FnOnce(&mut dyn Write) -> io::Result<()>,
+) -> Result<(), CommandError> {
+    if path == Path::new("-") {
+        let mut stdout = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
+        fill(&mut stdout)?;
+        stdout.flush()?;
+        return Ok(());
+    }
+    Ok(write_atomically_with(path, fill)?)
+}
+
 /// Runs `each` on every path, going on after a failure (reported on standard error), and
 /// returns the worst exit.
 pub fn for_each_file(
@@ -97,7 +113,7 @@ pub fn for_each_file(
 const DIFF_TIMEOUT: Duration = Duration::from_secs(2);
 
 /// How many lines a refusal names before it says "and N more".
-const NAMED_LINES: usize = 5;
+pub const NAMED_LINES: usize = 5;
 
 /// `line 4 (`gestureArm`), line 11 (`culturalKnowledge`) and 3 more`: the lines a refusal is
 /// about, each with a short description.

@@ -34,6 +34,16 @@ impl std::error::Error for WriteError {}
 /// Replaces (or creates) `path` with `contents`, atomically. A symbolic link is followed, so
 /// the file it points at is replaced and the link stays a link.
 pub fn write_atomically(path: &Path, contents: &[u8]) -> Result<(), WriteError> {
+    write_atomically_with(path, |out| out.write_all(contents))
+}
+
+/// [`write_atomically`], the contents written by `fill` as they are made (a formatted file
+/// several times the size of the original is never held whole). If `fill` fails, `path` is
+/// left as it was.
+pub fn write_atomically_with(
+    path: &Path,
+    fill: impl FnOnce(&mut dyn Write) -> io::Result<()>,
+) -> Result<(), WriteError> {
     let fail = |reason: String| WriteError {
         path: path.to_path_buf(),
         reason,
@@ -69,7 +79,10 @@ pub fn write_atomically(path: &Path, contents: &[u8]) -> Result<(), WriteError> 
             describe(&err)
         ))
     })?;
-    let written = temp.write_all(contents).and_then(|()| {
+    let mut buffered = io::BufWriter::with_capacity(1 << 16, temp.as_file_mut());
+    let filled = fill(&mut buffered).and_then(|()| buffered.flush());
+    drop(buffered);
+    let written = filled.and_then(|()| {
         if let Some(metadata) = &existing {
             temp.as_file().set_permissions(metadata.permissions())?;
         }

@@ -13,11 +13,8 @@ impl Document<'_> {
             Vec::with_capacity(self.block_ends.len());
         let mut start = 0;
         for &end in &self.block_ends {
-            let first = &self.entries[self.order[start as usize] as usize];
-            let id = first
-                .id
-                .and_then(|id| parse_id(self.str(id)))
-                .map_or(0, |id| id as i32);
+            let first = self.entry_at(self.order[start as usize], false);
+            let id = first.id.and_then(parse_id).map_or(0, |id| id as i32);
             blocks.push((id, start as usize..end as usize));
             start = end;
         }

@@ -8,10 +8,10 @@ use std::borrow::Cow;
 use std::collections::HashMap;
 use std::fmt;
 
-use super::{Document, Entry};
+use super::Document;
 use crate::model::export::{ExportedKnowledgeBase, ExportedLocation, ExportedMessages};
 use crate::model::{Dialect, Key, Language, Phase};
-use crate::syntax::{is_blank, Span};
+use crate::syntax::is_blank;
 
 /// Numbers whose plain decimal form is longer than this are written with an exponent.
 const LONGEST_PLAIN_NUMBER: usize = 24;
@@ -32,19 +32,23 @@ impl fmt::Display for ImportError {
 
 impl std::error::Error for ImportError {}
 
-impl<'a> Document<'a> {
+impl Document<'static> {
     /// The canonical file of an export. A pose is written with the key of the export's
     /// dialect (`robotLocationPose` when it has none, as the current robot reads).
-    pub fn from_export(kb: &'a ExportedKnowledgeBase) -> Result<Document<'a>, ImportError> {
+    ///
+    /// The export's lines are written plainly, in canonical order, and laid out as `ekb fmt`
+    /// lays out a file: one layout for both.
+    pub fn from_export(kb: &ExportedKnowledgeBase) -> Result<Document<'static>, ImportError> {
         let pose_key = kb.dialect.unwrap_or(Dialect::Current).pose_key();
         let mut seen: HashMap<u32, usize> = HashMap::new();
-        let mut writer = Writer::default();
+        let mut text = String::new();
         // Without a pose line, the file would not tell its dialect: declare it.
         if let Some(dialect) = kb
             .dialect
             .filter(|_| kb.locations.iter().all(|l| l.pose.is_none()))
         {
-            writer.header_comment(&dialect.declaration());
+            text.push_str(&dialect.declaration());
+            text.push_str("\n\n");
         }
         for (index, location) in kb.locations.iter().enumerate() {
             let path = format!("locations[{index}]");
@@ -58,7 +62,9 @@ impl<'a> Document<'a> {
                     ),
                 ));
             }
-            writer.block(location.id, &values(location, pose_key, &path)?);
+            for (key, value) in values(location, pose_key, &path)? {
+                text.push_str(&format!("{} {} {value}\n", key.name(), location.id));
+            }
         }
         if let Some(stops) = &kb.tour {
             for (index, &id) in stops.iter().enumerate() {
@@ -68,69 +74,11 @@ impl<'a> Document<'a> {
                 .chain(stops.iter().copied())
                 .map(|n| n.to_string())
                 .collect();
-            writer.tour(&items.join(" "));
+            let key = Key::TourSpecification.name();
+            text.push_str(&format!("{key} {}\n", items.join(" ")));
         }
-        Ok(writer.into())
-    }
-}
-
-/// Builds a [`Document`] of its own text: every key, id and value written once, as a span.
-#[derive(Default)]
-struct Writer {
-    document: Document<'static>,
-    text: String,
-}
-
-impl Writer {
-    fn span(&mut self, part: &str) -> Span {
-        let start = self.text.len();
-        self.text.push_str(part);
-        Span::new(start, self.text.len())
-    }
-
-    /// A comment at the top of the file, written before any entry.
-    fn header_comment(&mut self, comment: &str) {
-        let span = self.span(comment);
-        self.document.comments.push(span);
-        self.document.header += 1;
-    }
-
-    fn entry(&mut self, key: Key, id: Option<Span>, value: &str) -> u32 {
-        let entry = Entry {
-            // No comments of its own: those before it are the header's.
-            comments_end: self.document.header,
-            key: self.span(key.name()),
-            id,
-            value: self.span(value),
-        };
-        self.document.entries.push(entry);
-        self.document.entries.len() as u32 - 1
-    }
-
-    /// A location's block, its lines in canonical order.
-    fn block(&mut self, id: u32, values: &[(Key, Cow<'_, str>)]) {
-        let id = Some(self.span(&id.to_string()));
-        for (key, value) in values {
-            let index = self.entry(*key, id, value);
-            self.document.order.push(index);
-        }
-        self.document
-            .block_ends
-            .push(self.document.order.len() as u32);
-    }
-
-    fn tour(&mut self, value: &str) {
-        let index = self.entry(Key::TourSpecification, None, value);
-        self.document.tour.push(index);
-    }
-}
-
-impl From<Writer> for Document<'static> {
-    fn from(writer: Writer) -> Document<'static> {
-        Document {
-            text: Cow::Owned(writer.text),
-            ..writer.document
-        }
+        // Every value was checked to fit on its line, so each line reads as written.
+        Ok(Document::parse_text(Cow::Owned(text)).expect("no stray carriage return"))
     }
 }
 

@@ -7,32 +7,39 @@
 //! cannot be written before an LF without turning into a CRLF line ending.
 
 use std::borrow::Cow;
-use std::collections::HashMap;
 use std::fmt;
 
-use super::{known_key, slot, Document, Entry, Written};
+use super::{known_key, slot, Document, Written, UNKNOWN_SLOT};
 use crate::model::build::{parse_id, tour_items};
-use crate::model::{Key, ValueKind};
+use crate::model::{IdMap, Key, ValueKind};
 use crate::render::escape::escape;
-use crate::rewrite::name_lines;
+use crate::rewrite::{name_lines, NAMED_LINES};
 use crate::syntax::{self, Body, Line, Span};
 
 /// Lines ending in a carriage return that is not part of a CRLF: written before the
 /// layout's LF, it would turn into a line ending and vanish from the value.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct Unformattable {
-    /// Each line's number and text (escaped, shortened).
+    /// The first few such lines: each one's number and text (escaped, shortened).
     pub lines: Vec<(u32, String)>,
+    /// How many such lines there are in all.
+    pub count: usize,
 }
 
 impl fmt::Display for Unformattable {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let more = self.count - self.lines.len();
         write!(
             f,
-            "{} {} in a stray carriage return, which the layout's line ending would swallow; \
+            "{}{} {} in a stray carriage return, which the layout's line ending would swallow; \
              remove it (see `ekb check`) and run again",
             name_lines(&self.lines),
-            if self.lines.len() == 1 { "ends" } else { "end" },
+            if more > 0 {
+                format!(" and {more} more")
+            } else {
+                String::new()
+            },
+            if self.count == 1 { "ends" } else { "end" },
         )
     }
 }
@@ -42,126 +49,225 @@ impl std::error::Error for Unformattable {}
 impl<'a> Document<'a> {
     /// Lays out the lines of `text` canonically.
     pub fn parse(text: &'a str) -> Result<Document<'a>, Unformattable> {
-        let mut document = Document {
-            text: Cow::Borrowed(text),
-            ..Document::default()
-        };
-        let mut blocks: HashMap<u32, u32> = HashMap::new();
-        let mut located: Vec<Located> = Vec::new();
+        Document::parse_text(Cow::Borrowed(text))
+    }
+
+    /// Lays out the lines of `text`, which the document keeps.
+    ///
+    /// Memory is what matters on a huge file: the lines are read twice rather than each
+    /// line's block kept. The first reading counts the lines of each block, the second puts
+    /// each line's start in its place, block after block; then each block is put in key
+    /// order where it is not already, by reading its lines a third time.
+    pub(super) fn parse_text(text: Cow<'a, str>) -> Result<Document<'a>, Unformattable> {
+        let layout = Layout::read(&text)?;
+        let (order, block_ends) = arrange(&text, layout.blocks, layout.located);
+        Ok(Document {
+            text,
+            header_end: layout.header_end,
+            footer_start: layout.footer_start,
+            unplaced: layout.unplaced,
+            order,
+            block_ends,
+            tour: layout.tour,
+        })
+    }
+}
+
+/// What the first reading of a file finds.
+#[derive(Default)]
+struct Layout {
+    header_end: u32,
+    footer_start: u32,
+    unplaced: Vec<u32>,
+    tour: Vec<u32>,
+    /// The located entries' blocks, and how many lines each has.
+    blocks: Blocks,
+    located: usize,
+}
+
+impl Layout {
+    fn read(text: &str) -> Result<Layout, Unformattable> {
+        let mut layout = Layout::default();
         let mut seen_entry = false;
-        let mut stray_returns = Vec::new();
+        let mut stray_returns = Unformattable::default();
         for line in syntax::lines(text) {
             if ends_in_stray_return(text, &line) {
-                let content: String = line
-                    .content()
-                    .text(text)
-                    .trim_matches([' ', '\t'])
-                    .chars()
-                    .take(40)
-                    .collect();
-                stray_returns.push((line.number, escape(&content).into_owned()));
+                stray_returns.count += 1;
+                if stray_returns.lines.len() < NAMED_LINES {
+                    let content: String = line
+                        .content()
+                        .text(text)
+                        .trim_matches([' ', '\t'])
+                        .chars()
+                        .take(40)
+                        .collect();
+                    stray_returns
+                        .lines
+                        .push((line.number, escape(&content).into_owned()));
+                }
                 continue;
             }
             let (key, args) = match line.body {
-                Body::Blank => {
-                    if !seen_entry {
-                        document.header = document.comments.len() as u32;
-                    }
+                Body::Blank if !seen_entry => {
+                    layout.header_end = line.span.end;
                     continue;
                 }
-                Body::Comment(comment) => {
-                    document.comments.push(comment);
-                    continue;
-                }
+                Body::Blank | Body::Comment(_) => continue,
                 Body::Entry { key, args } => (key, args),
             };
             seen_entry = true;
-            let index = document.entries.len() as u32;
-            let read = read(text, key, args);
-            let (id, value) = match read.place {
-                Place::Tour(value) => {
-                    document.tour.push(index);
-                    (None, value)
+            layout.footer_start = line.span.end;
+            match placement(text, key, args) {
+                Placement::Tour => layout.tour.push(line.span.start),
+                Placement::Unplaced => layout.unplaced.push(line.span.start),
+                Placement::Located { id, .. } => {
+                    layout.blocks.count(id);
+                    layout.located += 1;
                 }
-                Place::Unplaced(value) => {
-                    document.unplaced.push(index);
-                    (None, value.into())
-                }
-                Place::Located { id, id_text, value } => {
-                    let next = blocks.len() as u32;
-                    let block = *blocks.entry(id).or_insert(next);
-                    located.push(Located {
-                        entry: index,
-                        block,
-                        slot: slot(read.known),
-                    });
-                    (Some(Span::of(id_text, text)), value)
-                }
-            };
-            let value = document.span_of(value);
-            document.entries.push(Entry {
-                comments_end: document.comments.len() as u32,
-                key,
-                id,
-                value,
-            });
+            }
         }
-        if !stray_returns.is_empty() {
-            return Err(Unformattable {
-                lines: stray_returns,
-            });
+        if stray_returns.count > 0 {
+            return Err(stray_returns);
         }
         if !seen_entry {
             // Without entries there is nothing to set a header apart from: it is all footer.
-            document.header = 0;
+            layout.header_end = 0;
         }
-        (document.order, document.block_ends) = arrange(&located, blocks.len());
-        Ok(document)
+        Ok(layout)
     }
 }
 
-/// A line that goes to a location's block.
-struct Located {
-    /// Its index in the document's entries.
-    entry: u32,
-    /// Its block, numbered in order of first appearance.
-    block: u32,
-    /// Where it goes inside the block.
-    slot: u8,
+/// The blocks of a file, numbered in order of first appearance, with how many lines each
+/// has; the block of an id found without a map while the ids of new blocks ascend (as in
+/// nearly every file), by a map once they do not.
+#[derive(Default)]
+struct Blocks {
+    /// The ids of the first blocks, ascending.
+    ascending: Vec<u32>,
+    /// The block of each id after those.
+    others: IdMap<u32>,
+    /// The lines of each block.
+    lines: Vec<u32>,
+    /// The last id and its block: a block's lines usually follow one another.
+    last: Option<(u32, u32)>,
 }
 
-/// The located entries in canonical order, and where each block ends in it: grouped by block
-/// by a counting sort (linear), then each block in key order, keeping the order of equal
-/// keys (a block is usually in order already, and small).
-fn arrange(located: &[Located], block_count: usize) -> (Vec<u32>, Vec<u32>) {
-    let mut starts = vec![0u32; block_count + 1];
-    for line in located {
-        starts[line.block as usize + 1] += 1;
+impl Blocks {
+    /// The block of `id`, if it has one yet.
+    fn find(&mut self, id: u32) -> Option<u32> {
+        if let Some((last, block)) = self.last.filter(|&(last, _)| last == id) {
+            debug_assert_eq!(last, id);
+            return Some(block);
+        }
+        let block = match self.ascending.binary_search(&id) {
+            Ok(block) => Some(block as u32),
+            Err(_) => self.others.get(&id).copied(),
+        }?;
+        self.last = Some((id, block));
+        Some(block)
     }
-    for block in 0..block_count {
-        starts[block + 1] += starts[block];
+
+    /// Counts a line of `id`'s block, made if it is new.
+    fn count(&mut self, id: u32) {
+        let block = self.find(id).unwrap_or_else(|| {
+            let block = self.lines.len() as u32;
+            self.lines.push(0);
+            if self.others.is_empty() && self.ascending.last().is_none_or(|&last| last < id) {
+                self.ascending.push(id);
+            } else {
+                self.others.insert(id, block);
+            }
+            self.last = Some((id, block));
+            block
+        });
+        self.lines[block as usize] += 1;
     }
-    let ends = starts[1..].to_vec();
-    // Positions in `located` first, to sort by slot; entries once sorted.
-    let mut order = vec![0u32; located.len()];
-    for (position, line) in located.iter().enumerate() {
-        let at = &mut starts[line.block as usize];
-        order[*at as usize] = position as u32;
-        *at += 1;
+}
+
+/// The located entries' line starts in canonical order, and where each block ends: read
+/// again and put in place by block (a counting sort, linear), then each block put in key
+/// order, keeping the order of equal keys (a block is usually in order already).
+fn arrange(text: &str, mut blocks: Blocks, located: usize) -> (Vec<u32>, Vec<u32>) {
+    // Each block's count becomes where its next line goes; once all are placed, where the
+    // block ends.
+    let mut next = std::mem::take(&mut blocks.lines);
+    let mut sum = 0;
+    for count in &mut next {
+        (*count, sum) = (sum, sum + *count);
     }
+    let mut order = vec![0u32; located];
+    for line in syntax::lines(text) {
+        let Body::Entry { key, args } = line.body else {
+            continue;
+        };
+        if let Placement::Located { id } = placement(text, key, args) {
+            let block = blocks.find(id).expect("counted in the first reading") as usize;
+            order[next[block] as usize] = line.span.start;
+            next[block] += 1;
+        }
+    }
+    drop(blocks);
     let mut start = 0;
-    for &end in &ends {
-        let block = &mut order[start as usize..end as usize];
-        let slot = |&position: &u32| located[position as usize].slot;
-        if !block.is_sorted_by_key(slot) {
-            block.sort_by_key(slot);
-        }
+    for &end in &next {
+        sort_by_slot(text, &mut order[start as usize..end as usize]);
         start = end;
     }
-    order
-        .iter_mut()
-        .for_each(|position| *position = located[*position as usize].entry);
-    (order, ends)
+    (order, next)
+}
+
+/// Puts the lines starting at `block` in key order ([`slot`]), keeping the order of lines of
+/// the same slot: a counting sort over the few slots, when they are not in order already.
+fn sort_by_slot(text: &str, block: &mut [u32]) {
+    let slot_at = |start: u32| {
+        let line = syntax::lines_from(text, start as usize).next();
+        match line.map(|line| line.body) {
+            Some(Body::Entry { key, .. }) => slot(known_key(key.text(text))),
+            _ => unreachable!("an entry line starts there"),
+        }
+    };
+    let mut previous = 0;
+    let in_order = block.iter().all(|&start| {
+        let slot = slot_at(start);
+        let in_order = slot >= previous;
+        previous = slot;
+        in_order
+    });
+    if in_order {
+        return;
+    }
+    let slots: Vec<u8> = block.iter().map(|&start| slot_at(start)).collect();
+    let mut next = [0usize; UNKNOWN_SLOT as usize + 2];
+    for &slot in &slots {
+        next[slot as usize + 1] += 1;
+    }
+    for slot in 1..next.len() {
+        next[slot] += next[slot - 1];
+    }
+    let mut sorted = vec![0u32; block.len()];
+    for (&start, &slot) in block.iter().zip(&slots) {
+        sorted[next[slot as usize]] = start;
+        next[slot as usize] += 1;
+    }
+    block.copy_from_slice(&sorted);
+}
+
+/// Where an entry line goes: with the tour, first as written (no valid id), or in the block
+/// of its location.
+enum Placement {
+    Tour,
+    Unplaced,
+    Located { id: u32 },
+}
+
+/// Where the entry line `key args` of `text` goes ([`read`] without making its value).
+fn placement(text: &str, key: Span, args: Span) -> Placement {
+    if known_key(key.text(text)) == Some(Key::TourSpecification) {
+        return Placement::Tour;
+    }
+    match split_id(args.text(text)) {
+        Some((id, _, _)) => Placement::Located { id },
+        None => Placement::Unplaced,
+    }
 }
 
 /// Whether a line that is not blank ends in a carriage return that is not part of a CRLF.
@@ -169,18 +275,13 @@ pub(super) fn ends_in_stray_return(text: &str, line: &Line) -> bool {
     line.body != Body::Blank && text.as_bytes()[line.trailing.start as usize - 1] == b'\r'
 }
 
-/// How an entry line reads: its key, and where it goes with what value.
-pub(super) struct Read<'t> {
-    known: Option<Key>,
-    place: Place<'t>,
-}
-
+/// Where an entry line goes, with what value.
 pub(super) enum Place<'t> {
     /// A `tourSpecification` line, its items single-spaced.
     Tour(Cow<'t, str>),
-    /// A line of location `id`, written `id_text`, with its value as the layout writes it.
+    /// A line of a location whose id is written `id_text`, with its value as the layout
+    /// writes it.
     Located {
-        id: u32,
         id_text: &'t str,
         value: Cow<'t, str>,
     },
@@ -188,39 +289,38 @@ pub(super) enum Place<'t> {
     Unplaced(&'t str),
 }
 
-impl Read<'_> {
+impl Place<'_> {
     /// Whether this is the line `written`.
-    pub(super) fn is(&self, written: Written<'_>) -> bool {
-        match &self.place {
-            Place::Tour(value) => written.tour && written.id.is_none() && value == written.value,
-            Place::Located { id_text, value, .. } => {
-                !written.tour && written.id == Some(id_text) && value == written.value
+    pub(super) fn is(&self, written: &Written<'_>) -> bool {
+        match self {
+            Place::Tour(value) => written.tour && written.id.is_none() && *value == written.value,
+            Place::Located { id_text, value } => {
+                !written.tour && written.id == Some(id_text) && *value == written.value
             }
             Place::Unplaced(value) => {
-                !written.tour && written.id.is_none() && *value == written.value
+                !written.tour && written.id.is_none() && written.value == *value
             }
         }
     }
 }
 
 /// Reads the entry line `key args` of `text`.
-pub(super) fn read(text: &str, key: Span, args: Span) -> Read<'_> {
+pub(super) fn read(text: &str, key: Span, args: Span) -> Place<'_> {
     let known = known_key(key.text(text));
     let args = args.text(text);
-    let place = if known == Some(Key::TourSpecification) {
+    if known == Some(Key::TourSpecification) {
         Place::Tour(single_spaced(args, || tour_items(args, 0)))
-    } else if let Some((id, id_text, value)) = split_id(args) {
+    } else if let Some((_, id_text, value)) = split_id(args) {
         let value = match known.map(Key::value_kind) {
             Some(ValueKind::Pose | ValueKind::Point) => {
                 single_spaced(value, || syntax::tokens(value, 0))
             }
             _ => value.into(),
         };
-        Place::Located { id, id_text, value }
+        Place::Located { id_text, value }
     } else {
         Place::Unplaced(args)
-    };
-    Read { known, place }
+    }
 }
 
 /// The id of a location line's arguments, its text, and the value after it (possibly empty).

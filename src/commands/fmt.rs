@@ -1,9 +1,10 @@
 //! `ekb fmt [FILE...] [--check]`: rewrite files in the canonical layout ([`crate::canonical`]).
 
+use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
 use super::{CommandError, CommandResult, Context, Exit};
-use crate::canonical::Document;
+use crate::canonical::{Document, WriteError};
 use crate::render::escape::escape;
 use crate::rewrite::{self, DiffStyle, Mode};
 
@@ -59,15 +60,42 @@ fn format_file(
         // Already canonical: reading it back is reading the file again, which gave `document`.
         return rewrite::deliver(path, &source, source.text(), mode, style);
     }
-    let formatted = document.render();
-    // The layout keeps every line and value: reading the result must give the same document
-    // (checked line by line, without reading a second one).
-    if !document.reads_back_from(&formatted) {
-        return Err(cannot(
+    // The layout keeps every line and value: each line written must read back as the line
+    // meant (checked as it is written, without reading a second document).
+    let mut read_back = true;
+    let mut write_checked = |mut out: &mut dyn Write| {
+        document
+            .write_checked(&mut out)
+            .map_err(|error| match error {
+                WriteError::Io(error) => error,
+                WriteError::NotReadBack => {
+                    read_back = false;
+                    io::Error::other("a line does not read back")
+                }
+            })
+    };
+    let written = match mode {
+        Mode::Diff => {
+            let mut formatted = Vec::with_capacity(source.text().len() * 5 / 4);
+            write_checked(&mut formatted)
+                .map(|()| formatted)
+                .map_err(CommandError::from)
+        }
+        // A formatted file can be several times the original (every id padded to column
+        // 31): it is written as it is made, never held whole.
+        Mode::Write => rewrite::write_new(path, write_checked).map(|()| Vec::new()),
+    };
+    match written {
+        _ if !read_back => Err(cannot(
             "the canonical layout would change its content (a bug in ekb; please report it)".into(),
-        ));
+        )),
+        Ok(formatted) if mode == Mode::Diff => {
+            let formatted = String::from_utf8(formatted).expect("the layout writes text");
+            rewrite::deliver(path, &source, &formatted, mode, style)
+        }
+        Ok(_) => Ok(true),
+        Err(error) => Err(error),
     }
-    rewrite::deliver(path, &source, &formatted, mode, style)
 }
 
 /// `1 file reformatted, 2 files left unchanged` (or `would be`, with `--check`).
