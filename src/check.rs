@@ -49,6 +49,8 @@ pub struct Checked<'a> {
     pub omitted: Vec<Diagnostic>,
     /// How many findings of each rule were reported, kept or not.
     counts: RuleCounts,
+    /// Whether every finding of a fixable rule was kept ([`check_for_fix`]).
+    keeps_every_fix: bool,
 }
 
 impl Checked<'_> {
@@ -60,7 +62,11 @@ impl Checked<'_> {
         };
         self.diagnostics.iter().for_each(|d| summary.add(d));
         for (rule, count) in &self.counts.0 {
-            let dropped = count.saturating_sub(kept_at_most(rule));
+            let dropped = count.saturating_sub(cap(rule, self.keeps_every_fix));
+            if rule.fixable {
+                // Each one `ekb fix` fixes, kept here or not.
+                summary.fixable += dropped;
+            }
             match rule.severity {
                 crate::Severity::Error => summary.errors += dropped,
                 crate::Severity::Warning => summary.warnings += dropped,
@@ -123,7 +129,28 @@ impl Checked<'_> {
 
 /// Builds the model of `source` and runs every rule on it.
 pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
-    let mut out = Diagnostics::default();
+    check_keeping(source, options, Diagnostics::default())
+}
+
+/// [`check`], keeping every finding of a fixable rule, not the first [`MAX_KEPT_PER_RULE`]:
+/// for `ekb fix`, which then applies every fix in one pass over the file, however many
+/// there are (a pass for each ten thousand made a million fixes quadratic). The memory it
+/// takes grows with the number of fixes, as the edits do.
+pub fn check_for_fix<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
+    let out = Diagnostics {
+        keep_every_fix: true,
+        ..Diagnostics::default()
+    };
+    check_keeping(source, options, out)
+}
+
+/// [`check`], reporting into `out` (which says what it keeps).
+fn check_keeping<'a>(
+    source: &'a SourceFile,
+    options: &Options,
+    mut out: Diagnostics,
+) -> Checked<'a> {
+    let keeps_every_fix = out.keep_every_fix;
     structure::invalid_utf8::check(source, &mut out);
     compat::compat_bom::check(source.text(), &mut out);
     // The source keeps the first invalid range of a bounded number of lines only.
@@ -135,9 +162,11 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
         let Diagnostics {
             kept: mut diagnostics,
             counts,
+            ..
         } = out;
         sort_by_position(&mut diagnostics);
         return Checked {
+            keeps_every_fix,
             source,
             kb: KnowledgeBase::default(),
             reader: options
@@ -156,10 +185,12 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
     let Diagnostics {
         kept: mut diagnostics,
         counts,
+        ..
     } = out;
     sort_by_position(&mut diagnostics);
     let omitted = omitted_notes(&diagnostics, &counts);
     Checked {
+        keeps_every_fix,
         source,
         kb,
         reader,
@@ -179,19 +210,39 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
 pub struct Diagnostics {
     kept: Vec<Diagnostic>,
     counts: RuleCounts,
+    /// Keep every finding of a fixable rule ([`check_for_fix`]).
+    keep_every_fix: bool,
+}
+
+/// How many findings of `rule` are kept: [`kept_at_most`], or all of a fixable rule's when
+/// `every_fix`.
+fn cap(rule: &Rule, every_fix: bool) -> usize {
+    match every_fix && rule.fixable {
+        true => usize::MAX,
+        false => kept_at_most(rule),
+    }
 }
 
 impl Diagnostics {
+    /// Where the findings of a part of the file (or of its locations) are reported, to be
+    /// [appended](Diagnostics::append) here: kept as these are.
+    pub fn part(&self) -> Diagnostics {
+        Diagnostics {
+            keep_every_fix: self.keep_every_fix,
+            ..Diagnostics::default()
+        }
+    }
+
     /// Reports a finding.
     pub fn push(&mut self, diagnostic: Diagnostic) {
-        if self.counts.bump(diagnostic.rule) <= kept_at_most(diagnostic.rule) {
+        if self.counts.bump(diagnostic.rule) <= cap(diagnostic.rule, self.keep_every_fix) {
             self.kept.push(diagnostic);
         }
     }
 
     /// Reports a finding of `rule`, made by `make` only if it is kept.
     pub fn push_with(&mut self, rule: &'static Rule, make: impl FnOnce() -> Diagnostic) {
-        if self.counts.bump(rule) <= kept_at_most(rule) {
+        if self.counts.bump(rule) <= cap(rule, self.keep_every_fix) {
             let diagnostic = make();
             debug_assert!(std::ptr::eq(diagnostic.rule, rule), "{}", rule.name);
             self.kept.push(diagnostic);
@@ -205,7 +256,7 @@ impl Diagnostics {
         let mut taken = RuleCounts::default();
         for diagnostic in later.kept {
             let rule = diagnostic.rule;
-            if self.counts.get(rule) + taken.bump(rule) <= kept_at_most(rule) {
+            if self.counts.get(rule) + taken.bump(rule) <= cap(rule, self.keep_every_fix) {
                 self.kept.push(diagnostic);
             }
         }
@@ -325,6 +376,28 @@ impl RuleCounts {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_check_for_fix_keeps_every_finding_of_a_fixable_rule() {
+        let lines = 2 * MAX_KEPT_PER_RULE + 1;
+        let text = "robotLocationDescription 1 x \n".repeat(lines);
+        let source = SourceFile::from_bytes("t", text.into_bytes());
+        let kept = |checked: &Checked<'_>, rule: &str| {
+            let of_rule = checked.diagnostics.iter().filter(|d| d.rule.name == rule);
+            of_rule.count()
+        };
+        let checked = check(&source, &Options::default());
+        let for_fix = check_for_fix(&source, &Options::default());
+        assert_eq!(kept(&checked, "trailing-whitespace"), MAX_KEPT_PER_RULE);
+        assert_eq!(kept(&for_fix, "trailing-whitespace"), lines);
+        // Rules without a fix are kept as they always are, and the counts are the same.
+        assert_eq!(
+            kept(&for_fix, "duplicate-key"),
+            kept(&checked, "duplicate-key")
+        );
+        assert_eq!(kept(&checked, "duplicate-key"), MAX_SHOWN_PER_RULE + 1);
+        assert_eq!(for_fix.summary(), checked.summary());
+    }
 
     #[test]
     fn findings_beyond_what_is_kept_are_only_counted() {

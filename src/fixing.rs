@@ -7,23 +7,21 @@
 //! `ekb fmt` stays aligned. The passes stop when nothing is left to fix, or after
 //! [`MAX_PASSES`] (no rule's fix undoes another's, so this bound is never reached in practice).
 //!
-//! `check` keeps at most [`MAX_KEPT_PER_RULE`] findings of a rule; a file with more of one
-//! fixable rule (200,000 lines with trailing blanks) needs a pass per ten thousand. Such a
-//! pass, which saw only some of a rule's findings and fixed them, does not count towards
-//! [`MAX_PASSES`]: one run of `ekb fix` fixes them all, as it fixes everything else.
+//! Each pass checks with [`check_for_fix`], which keeps every finding of a fixable rule
+//! (`check` keeps the first [`MAX_KEPT_PER_RULE`](crate::check::MAX_KEPT_PER_RULE)): a file with a million lines to fix is
+//! fixed in one pass, in time linear in the file and the fixes.
 
 use std::collections::{BTreeMap, BTreeSet};
 
 use crate::canonical::Document;
-use crate::check::{check, MAX_KEPT_PER_RULE};
+use crate::check::check_for_fix;
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::model::build::Options;
 use crate::rules::compat::compat_reader_crash::COMPAT_READER_CRASH;
 use crate::source::SourceFile;
 use crate::syntax::Span;
 
-/// The most passes [`fix`] makes, not counting those that a rule's cap of findings made
-/// necessary (see the module documentation).
+/// The most passes [`fix`] makes.
 pub const MAX_PASSES: usize = 10;
 
 /// The outcome of [`fix`].
@@ -53,19 +51,16 @@ pub fn fix_unless_clean(
     let mut fixed: Option<String> = None;
     let mut counts = BTreeMap::new();
     let mut options = *options;
-    let mut passes = 0;
-    // Each pass past MAX_PASSES fixed MAX_KEPT_PER_RULE findings of one rule, and a file has
-    // fewer findings of a rule than bytes; the bound only guards against fixes that would
-    // make each other again, which no rule's do.
-    let most_capped_passes = source.text().len() / MAX_KEPT_PER_RULE + 1;
     // Whether the order of ids crashes the reader: no edit changes that order.
     let mut crashes_reader = false;
-    for _ in 0..MAX_PASSES + most_capped_passes {
+    // The bound only guards against fixes that would make each other again, which no
+    // rule's do.
+    for _ in 0..MAX_PASSES {
         let file = fixed
             .as_ref()
             .map(|text| SourceFile::from_bytes(source.name(), text.clone().into_bytes()));
         let file = file.as_ref().unwrap_or(source);
-        let checked = check(file, &options);
+        let checked = check_for_fix(file, &options);
         crashes_reader = checked
             .diagnostics
             .iter()
@@ -79,12 +74,6 @@ pub fn fix_unless_clean(
             *counts.entry(rule).or_insert(0) += 1;
         }
         fixed = Some(new);
-        if !saw_only_some(&checked.diagnostics) {
-            passes += 1;
-            if passes == MAX_PASSES {
-                break;
-            }
-        }
     }
     if crashes_reader {
         // The one fix that is no edit: the location blocks in a balanced order, which
@@ -97,20 +86,6 @@ pub fn fix_unless_clean(
         }
     }
     (fixed, counts)
-}
-
-/// Whether a fixable rule has as many findings as `check` keeps: it may have more, which the
-/// next pass will see.
-fn saw_only_some(diagnostics: &[Diagnostic]) -> bool {
-    let mut counts: BTreeMap<&str, usize> = BTreeMap::new();
-    diagnostics
-        .iter()
-        .filter(|diagnostic| diagnostic.rule.fixable)
-        .any(|diagnostic| {
-            let count = counts.entry(diagnostic.rule.name).or_insert(0);
-            *count += 1;
-            *count == MAX_KEPT_PER_RULE
-        })
 }
 
 /// Applies the fixes of `diagnostics` to `text`, each whole or not at all, skipping a fix
@@ -262,6 +237,7 @@ mod tests {
 
     #[test]
     fn more_findings_of_a_rule_than_check_keeps_are_all_fixed_in_one_run() {
+        use crate::check::MAX_KEPT_PER_RULE;
         // One more finding than MAX_PASSES passes of MAX_KEPT_PER_RULE could fix.
         let lines = MAX_PASSES * MAX_KEPT_PER_RULE + 1;
         let result = fixed(&" \n".repeat(lines));

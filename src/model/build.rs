@@ -39,8 +39,9 @@ pub trait Findings {
     /// What is found in the lines of one part of the text.
     type Part: LineFindings + Send;
 
-    /// Starts the findings of the lines in `range` (whole lines) of `text`.
-    fn part(text: &str, range: Range<usize>) -> Self::Part;
+    /// Starts the findings of the lines in `range` (whole lines) of `text`, to be added
+    /// here (so made as these are).
+    fn part(&self, text: &str, range: Range<usize>) -> Self::Part;
 
     /// Adds the findings of the whole text, read in one part or in several joined in order
     /// ([`LineFindings::append`]) and finished ([`LineFindings::finish`]), after those
@@ -94,7 +95,11 @@ pub trait LineFindings {
 /// A large file is read in parts, one per core, and the parts joined; when a location or
 /// the tour is written in more than one part in a way that only reading in order can
 /// settle (a key given in both, say), the file is read again in one part.
-pub fn build<'a, F: Findings>(text: &'a str, options: &Options, out: &mut F) -> KnowledgeBase<'a> {
+pub fn build<'a, F: Findings + Sync>(
+    text: &'a str,
+    options: &Options,
+    out: &mut F,
+) -> KnowledgeBase<'a> {
     // Verbose output lists the lines in order, which only one reader can do.
     let parts = if options.verbose {
         1
@@ -105,7 +110,7 @@ pub fn build<'a, F: Findings>(text: &'a str, options: &Options, out: &mut F) -> 
 }
 
 /// [`build`], reading `text` in at most `parts` parts.
-pub(crate) fn build_in_parts<'a, F: Findings>(
+pub(crate) fn build_in_parts<'a, F: Findings + Sync>(
     text: &'a str,
     options: &Options,
     parts: usize,
@@ -115,10 +120,11 @@ pub(crate) fn build_in_parts<'a, F: Findings>(
     let ranges = parallel::line_ranges(bytes, parts);
     if ranges.len() > 1 {
         let cut = |rest: Range<usize>| cut_lines(bytes, rest);
+        let parent = &*out;
         let mut read = parallel::map_shared(ranges, cut, |share| {
             // (The builder reads no further than this, perhaps less if another thread
             // takes part of the lines.)
-            let mut found = F::part(text, share.start()..share.end(share.start()));
+            let mut found = parent.part(text, share.start()..share.end(share.start()));
             let builder = Builder::read_shared(text, options, share, &mut found);
             (builder, found)
         })
@@ -133,7 +139,7 @@ pub(crate) fn build_in_parts<'a, F: Findings>(
             return kb;
         }
     }
-    let mut found = F::part(text, 0..text.len());
+    let mut found = out.part(text, 0..text.len());
     let kb = Builder::read(text, options, 0..text.len(), &mut found).finish(&mut found);
     out.add_part(found);
     kb
@@ -771,7 +777,7 @@ mod tests {
     impl Findings for Trace {
         type Part = Trace;
 
-        fn part(_: &str, _: Range<usize>) -> Trace {
+        fn part(&self, _: &str, _: Range<usize>) -> Trace {
             Trace::default()
         }
 

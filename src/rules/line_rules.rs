@@ -28,9 +28,9 @@ pub struct LineRules {
 impl Findings for Diagnostics {
     type Part = LineRules;
 
-    fn part(text: &str, range: Range<usize>) -> LineRules {
+    fn part(&self, text: &str, range: Range<usize>) -> LineRules {
         LineRules {
-            found: Diagnostics::default(),
+            found: self.part(),
             crlf_endings: Vec::new(),
             controls_possible: structure::control_character::possible_in(&text[range]),
         }

@@ -187,8 +187,9 @@ fn check_locations(
 ) {
     let all = || runs.iter().flatten();
     let cut = |rest: Range<usize>| crate::parallel::cut_in_middle(rest, MIN_LOCATIONS_PER_PART);
+    let parent = &*out;
     for part in crate::parallel::map_shared(ranges, cut, |share| {
-        let mut found = Diagnostics::default();
+        let mut found = parent.part();
         let start = share.start();
         for location in share.take(all().skip(start)) {
             check_location(location, context, &mut found);
