@@ -9,14 +9,17 @@
 #   msg-50mb.dat     the same, 50 MB
 #   desc-50mb.dat    the real file with location 1's description 50 MB long
 #   tour-1m.dat      the real file with a tour of 1,000,000 stops (2 MB on one line)
-#   lines-528mb.dat  528 MB of 88 million short lines (`k 1 v`: an entry each, all of
-#                    location 1; 6 bytes a line)
+#   lines-528mb.dat  the real file, then 88 million short lines (`k 1 v`, 6 bytes: an
+#                    entry of location 1 each, with an unknown key): 528 MB
+#   miscased-1m.dat  1,000,000 lines `robotlocationdescription 1 Roomba` (a miscased key
+#                    each, for `fix`) and a tour: 34 MB
 # Then, for each command on the inputs of the issue, runs `ekb check FILE` and the command
-# one after the other RUNS times (default 3; hyperfine -N, output to /dev/null) and takes
-# each one's median wall time, and measures each one's peak resident memory with
-# /usr/bin/time -v. It prints the command's time as a ratio to the check's (target ≤ 10×)
-# and its peak as a ratio to the file's size (target ≤ 3×). Commands that write (`fmt`)
-# write a copy of the file, made before each run.
+# one after the other RUNS times (default 3; hyperfine -N, output to /dev/null), and takes
+# each one's median wall time and mean CPU time (user + system: less moved by other work on
+# the machine); and measures each one's peak resident memory with /usr/bin/time -v. It
+# prints the command's times as ratios to the check's (target ≤ 10×) and its peak as a
+# ratio to the file's size (target ≤ 3×). Commands that write (`fmt`, `fix`) write a copy
+# of the file, made before each run (hyperfine --prepare; not timed).
 # Needs hyperfine (Debian: apt-get install hyperfine).
 set -euo pipefail
 
@@ -54,7 +57,12 @@ if [ ! -f "$work/tour-1m.dat" ]; then
   } > "$work/tour-1m.dat"
 fi
 if [ ! -f "$work/lines-528mb.dat" ]; then
-  yes 'k 1 v' | head -n 88000000 > "$work/lines-528mb.dat"
+  { cat "$base"; yes 'k 1 v' | head -n 88000000; } > "$work/lines-528mb.dat"
+fi
+if [ ! -f "$work/miscased-1m.dat" ]; then
+  { yes 'robotlocationdescription 1 Roomba' | head -n 1000000
+    echo 'tourSpecification 1 1'
+  } > "$work/miscased-1m.dat"
 fi
 
 # name|file|command (the file is appended)
@@ -70,7 +78,7 @@ cases=(
   "show 1|tour-1m.dat|show 1"
   "diff A A|tour-1m.dat|diff FILE"
   "fmt|lines-528mb.dat|fmt"
-  "fmt --check|lines-528mb.dat|fmt --check"
+  "fix|miscased-1m.dat|fix"
 )
 
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
@@ -83,17 +91,17 @@ peak_kb() { # the command (findings and refusals are not failures here)
     awk -F: '/Maximum resident set size/ { gsub(/ /, "", $2); print $2 }'
 }
 
-# The command line of a case on `file`; `fmt` works on a copy.
+# The command line of a case on `file`; `fmt` and `fix` work on a copy.
 command_line() { # command file
   local command="$1" file="$2"
   case "$command" in
     "diff FILE") echo "$ekb diff $file $file" ;;
-    fmt) echo "$ekb fmt $work/copy.dat" ;;
+    fmt | fix) echo "$ekb $command $work/copy.dat" ;;
     *) echo "$ekb $command $file" ;;
   esac
 }
 
-printf '| command | file | size | check | command | / check | check peak | peak | / size |\n'
+printf '| command | file | size | check: median, CPU | command: median, CPU | / check: wall, CPU | check peak | peak | / size |\n'
 printf '|---|---|---:|---:|---:|---:|---:|---:|---:|\n'
 for entry in "${cases[@]}"; do
   IFS='|' read -r name file command <<< "$entry"
@@ -101,19 +109,20 @@ for entry in "${cases[@]}"; do
   size=$(stat -c %s "$path")
   line=$(command_line "$command" "$path")
   prepare=()
-  [ "$command" = fmt ] && prepare=(--prepare "cp $path $work/copy.dat")
+  case "$command" in fmt | fix) prepare=(--prepare "cp $path $work/copy.dat") ;; esac
   # Back to back, in one hyperfine run; -i: findings exit 1.
-  hyperfine -N -i --runs "$runs" --export-csv "$work/case.csv" \
-    "$ekb check $path" "${prepare[@]}" "$line" > /dev/null 2>&1
-  read -r check_s < <(awk -F, 'NR == 2 { print $4 }' "$work/case.csv")
-  read -r command_s < <(awk -F, 'NR == 3 { print $4 }' "$work/case.csv")
+  hyperfine -N -i --runs "$runs" --export-csv "$work/case.csv" "${prepare[@]}" \
+    "$ekb check $path" "$line" > /dev/null 2>&1
+  # hyperfine's CSV: command,mean,stddev,median,user,system,min,max.
+  read -r check_s check_cpu < <(awk -F, 'NR == 2 { print $4, $5 + $6 }' "$work/case.csv")
+  read -r command_s command_cpu < <(awk -F, 'NR == 3 { print $4, $5 + $6 }' "$work/case.csv")
   check_peak=$(peak_kb "$ekb" check "$path")
-  [ "$command" = fmt ] && cp "$path" "$work/copy.dat"
+  case "$command" in fmt | fix) cp "$path" "$work/copy.dat" ;; esac
   # shellcheck disable=SC2086 # the command is split into its words on purpose
   peak=$(peak_kb $line)
-  awk -v n="$name" -v f="$file" -v s="$size" -v c="$check_s" -v t="$command_s" \
-      -v cp="$check_peak" -v p="$peak" 'BEGIN {
-    printf "| `%s` | %s | %.1f MB | %.3f s | %.3f s | %.1f× | %.0f MB | %.0f MB | %.2f× |\n",
-      n, f, s / 1e6, c, t, t / c, cp * 1024 / 1e6, p * 1024 / 1e6, p * 1024 / s }'
+  awk -v n="$name" -v f="$file" -v s="$size" -v c="$check_s" -v cc="$check_cpu" \
+      -v t="$command_s" -v tc="$command_cpu" -v cp="$check_peak" -v p="$peak" 'BEGIN {
+    printf "| `%s` | %s | %.1f MB | %.2f s, %.2f s | %.2f s, %.2f s | %.1f×, %.1f× | %.0f MB | %.0f MB | %.2f× |\n",
+      n, f, s / 1e6, c, cc, t, tc, t / c, tc / cc, cp * 1024 / 1e6, p * 1024 / 1e6, p * 1024 / s }'
 done
 rm -f "$work/copy.dat" "$work/case.csv"

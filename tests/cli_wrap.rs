@@ -1,11 +1,10 @@
 //! Human output wraps at the terminal's width, at `COLUMNS` when it is set, and at 100
 //! columns when standard output is no terminal (issue 13, item 4).
 
-use std::path::Path;
-use std::process::Command as Process;
-use std::time::Duration;
+mod output_support;
 
-use assert_cmd::Command;
+use output_support::ekb;
+use std::process::Command as Process;
 
 /// A location whose isiZulu and Kinyarwanda messages are placeholders: each finding's help
 /// quotes the long English message, which has to wrap.
@@ -21,17 +20,6 @@ postGestureMessageIsiZulu     1 No message in isiZulu
 postGestureMessageKinyarwanda 1 No message in Kinyarwanda
 tourSpecification 1 1
 ";
-
-fn ekb(dir: &Path) -> Command {
-    let mut command = Command::cargo_bin("ekb").unwrap();
-    command
-        .current_dir(dir)
-        .env_remove("EKB_CONFIG")
-        .env_remove("EKB_READER")
-        .env_remove("COLUMNS")
-        .timeout(Duration::from_secs(60));
-    command
-}
 
 /// The lines of a human report that wrap: messages and helps (a snippet's lines are the
 /// file's, never wrapped).

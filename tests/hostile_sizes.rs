@@ -3,22 +3,12 @@
 //! `check` shows the first findings of a rule. Output stays small whatever the file, which is
 //! what keeps every command linear (the times are in BENCHMARKS.md, never in tests).
 
+mod output_support;
+
 use std::path::Path;
-use std::time::Duration;
 
-use assert_cmd::Command;
 use ekb::render::clip::SHOWN_CHARS;
-
-fn ekb(dir: &Path) -> Command {
-    let mut command = Command::cargo_bin("ekb").unwrap();
-    command
-        .current_dir(dir)
-        .env_remove("EKB_CONFIG")
-        .env_remove("EKB_READER")
-        .env_remove("COLUMNS")
-        .timeout(Duration::from_secs(60));
-    command
-}
+use output_support::ekb;
 
 /// Two locations, location 1's English message before the gesture and its description
 /// `long` and `description`, and a tour of `tour` stops alternating between them.

@@ -4,25 +4,19 @@
 //! obeys both), or holds a raw control, bidirectional or invisible character; only
 //! `--format github`'s own commands begin with `::`. Lookalikes are escaped and named.
 
+mod output_support;
+
 use std::ffi::OsString;
 use std::path::Path;
-use std::time::Duration;
 
 use assert_cmd::Command;
 use ekb::render::escape::is_hidden;
 use proptest::prelude::*;
 
-/// `ekb` run in `dir` (no configuration there), without colour or a width from the
-/// environment, with a time limit so that a hang fails the test.
+/// `ekb` run in `dir`, without colour.
 fn ekb(dir: &Path) -> Command {
-    let mut command = Command::cargo_bin("ekb").unwrap();
-    command
-        .current_dir(dir)
-        .env_remove("EKB_CONFIG")
-        .env_remove("EKB_READER")
-        .env_remove("COLUMNS")
-        .arg("--color=never")
-        .timeout(Duration::from_secs(60));
+    let mut command = output_support::ekb(dir);
+    command.arg("--color=never");
     command
 }
 

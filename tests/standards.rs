@@ -3,21 +3,12 @@
 //! refuses an unknown field anywhere, naming its JSON path; and export → import → export
 //! keeps the dialect even when no location has a pose to tell it.
 
+mod output_support;
+
 use std::path::Path;
-use std::time::Duration;
 
-use assert_cmd::Command;
+use output_support::ekb;
 use serde_json::Value;
-
-fn ekb(dir: &Path) -> Command {
-    let mut command = Command::cargo_bin("ekb").unwrap();
-    command
-        .current_dir(dir)
-        .env_remove("EKB_CONFIG")
-        .env_remove("EKB_READER")
-        .timeout(Duration::from_secs(60));
-    command
-}
 
 /// A file with findings (a repeated word, a placeholder), in the seed dialect.
 const FILE: &str = "\
