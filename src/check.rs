@@ -134,8 +134,9 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
 
 /// [`check`], keeping every finding of a fixable rule, not the first [`MAX_KEPT_PER_RULE`]:
 /// for `ekb fix`, which then applies every fix in one pass over the file, however many
-/// there are (a pass for each ten thousand made a million fixes quadratic). The memory it
-/// takes grows with the number of fixes, as the edits do.
+/// there are (a pass for each ten thousand made a million fixes quadratic). Past the first
+/// [`MAX_KEPT_PER_RULE`], a finding keeps its fix and no words (its message, help and
+/// labels are empty): the memory it takes grows with the number of fixes, as the edits do.
 pub fn check_for_fix<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
     let out = Diagnostics {
         keep_every_fix: true,
@@ -235,18 +236,35 @@ impl Diagnostics {
 
     /// Reports a finding.
     pub fn push(&mut self, diagnostic: Diagnostic) {
-        if self.counts.bump(diagnostic.rule) <= cap(diagnostic.rule, self.keep_every_fix) {
-            self.kept.push(diagnostic);
+        let count = self.counts.bump(diagnostic.rule);
+        if count <= cap(diagnostic.rule, self.keep_every_fix) {
+            self.keep(diagnostic, count);
         }
     }
 
     /// Reports a finding of `rule`, made by `make` only if it is kept.
     pub fn push_with(&mut self, rule: &'static Rule, make: impl FnOnce() -> Diagnostic) {
-        if self.counts.bump(rule) <= cap(rule, self.keep_every_fix) {
+        let count = self.counts.bump(rule);
+        if count <= cap(rule, self.keep_every_fix) {
             let diagnostic = make();
             debug_assert!(std::ptr::eq(diagnostic.rule, rule), "{}", rule.name);
-            self.kept.push(diagnostic);
+            self.keep(diagnostic, count);
         }
+    }
+
+    /// Keeps `diagnostic`, the `count`th of its rule. Past what [`check`] keeps, only its
+    /// fix is kept ([`check_for_fix`]): the words of a million findings that nobody reads
+    /// would take a gigabyte.
+    fn keep(&mut self, mut diagnostic: Diagnostic, count: usize) {
+        if count > kept_at_most(diagnostic.rule) {
+            diagnostic.message = String::new();
+            diagnostic.help = None;
+            diagnostic.labels = Vec::new();
+            if let Some(fix) = &mut diagnostic.fix {
+                fix.message = String::new();
+            }
+        }
+        self.kept.push(diagnostic);
     }
 
     /// Adds the findings of `later`, made over a later part of the file (or of its
@@ -390,6 +408,17 @@ mod tests {
         let for_fix = check_for_fix(&source, &Options::default());
         assert_eq!(kept(&checked, "trailing-whitespace"), MAX_KEPT_PER_RULE);
         assert_eq!(kept(&for_fix, "trailing-whitespace"), lines);
+        // Past what `check` keeps, a finding keeps its fix and no words.
+        let trailing = || {
+            let all = for_fix.diagnostics.iter();
+            all.filter(|d| d.rule.name == "trailing-whitespace")
+        };
+        assert!(trailing()
+            .take(MAX_KEPT_PER_RULE)
+            .all(|d| !d.message.is_empty()));
+        assert!(trailing()
+            .skip(MAX_KEPT_PER_RULE)
+            .all(|d| d.message.is_empty() && d.fix.is_some()));
         // Rules without a fix are kept as they always are, and the counts are the same.
         assert_eq!(
             kept(&for_fix, "duplicate-key"),

@@ -11,6 +11,7 @@
 //! (`check` keeps the first [`MAX_KEPT_PER_RULE`](crate::check::MAX_KEPT_PER_RULE)): a file with a million lines to fix is
 //! fixed in one pass, in time linear in the file and the fixes.
 
+use std::borrow::Cow;
 use std::collections::{BTreeMap, BTreeSet};
 
 use crate::canonical::Document;
@@ -91,22 +92,23 @@ pub fn fix_unless_clean(
 /// Applies the fixes of `diagnostics` to `text`, each whole or not at all, skipping a fix
 /// whose edits clash with those of one taken before it. Returns the new text and the rule
 /// of each fix applied, or `None` if there was none to apply.
-pub fn apply(text: &str, diagnostics: &[Diagnostic]) -> Option<(String, Vec<&'static str>)> {
-    let fixes: Vec<(&'static str, Vec<Edit>)> = diagnostics
-        .iter()
-        .filter_map(|diagnostic| {
-            let edits = &diagnostic.fix.as_ref()?.edits;
-            let edits = edits.iter().map(|edit| keeping_id_column(text, edit));
-            Some((diagnostic.rule.name, edits.collect()))
-        })
-        .collect();
+pub fn apply<'d>(text: &str, diagnostics: &'d [Diagnostic]) -> Option<(String, Vec<&'static str>)> {
     let mut accepted = Edits::default();
     let mut applied = Vec::new();
-    for (rule, edits) in &fixes {
-        let fits = edits.iter().all(|edit| !accepted.clashes(edit.span)) && !clash_among(edits);
+    // One fix's edits at a time: a million fixes are never copied all at once.
+    for diagnostic in diagnostics {
+        let Some(fix) = &diagnostic.fix else {
+            continue;
+        };
+        let edits: Vec<Cow<'d, Edit>> = fix
+            .edits
+            .iter()
+            .map(|edit| keeping_id_column(text, edit))
+            .collect();
+        let fits = edits.iter().all(|edit| !accepted.clashes(edit.span)) && !clash_among(&edits);
         if fits {
-            edits.iter().for_each(|edit| accepted.add(edit));
-            applied.push(*rule);
+            edits.into_iter().for_each(|edit| accepted.add(edit));
+            applied.push(diagnostic.rule.name);
         }
     }
     (!applied.is_empty()).then(|| (accepted.apply(text), applied))
@@ -116,7 +118,7 @@ pub fn apply(text: &str, diagnostics: &[Diagnostic]) -> Option<(String, Vec<&'st
 /// padded with spaces up to the id (as `ekb fmt` writes): `robotLocation` becoming
 /// `robotLocationPose` takes four of its spaces, and the reverse gives them back. Any other
 /// edit is left as it is.
-fn keeping_id_column(text: &str, edit: &Edit) -> Edit {
+fn keeping_id_column<'d>(text: &str, edit: &'d Edit) -> Cow<'d, Edit> {
     let (start, end) = (edit.span.start as usize, edit.span.end as usize);
     let old_key = &text[start..end];
     let new_key = edit.replacement.as_str();
@@ -136,21 +138,21 @@ fn keeping_id_column(text: &str, edit: &Edit) -> Edit {
         || padding < 2
         || !id_follows
     {
-        return edit.clone();
+        return Cow::Borrowed(edit);
     }
     let column = old_key.chars().count() + padding;
     let new_padding = column.saturating_sub(new_key.chars().count()).max(1);
-    Edit::replace(
+    Cow::Owned(Edit::replace(
         Span::new(start, end + padding),
         format!("{new_key}{}", " ".repeat(new_padding)),
-    )
+    ))
 }
 
 /// Non-clashing edits, by `(start, end)`. Since none overlap, their ends grow with their
 /// starts, so the one just before a span is the only one that could reach into it.
 #[derive(Debug, Default)]
 struct Edits<'a> {
-    by_span: BTreeMap<(u32, u32), &'a str>,
+    by_span: BTreeMap<(u32, u32), Cow<'a, str>>,
 }
 
 impl<'a> Edits<'a> {
@@ -161,9 +163,13 @@ impl<'a> Edits<'a> {
         reaches_in || (span.is_empty() && self.by_span.contains_key(&(span.start, span.end)))
     }
 
-    fn add(&mut self, edit: &'a Edit) {
-        self.by_span
-            .insert((edit.span.start, edit.span.end), &edit.replacement);
+    fn add(&mut self, edit: Cow<'a, Edit>) {
+        let span = (edit.span.start, edit.span.end);
+        let replacement = match edit {
+            Cow::Borrowed(edit) => Cow::Borrowed(edit.replacement.as_str()),
+            Cow::Owned(edit) => Cow::Owned(edit.replacement),
+        };
+        self.by_span.insert(span, replacement);
     }
 
     fn apply(&self, text: &str) -> String {
@@ -180,13 +186,13 @@ impl<'a> Edits<'a> {
 }
 
 /// Whether the edits of one fix clash among themselves (a rule's bug; the fix is skipped).
-fn clash_among(edits: &[Edit]) -> bool {
+fn clash_among(edits: &[Cow<'_, Edit>]) -> bool {
     let mut seen = Edits::default();
     let spans: BTreeSet<(u32, u32)> = edits.iter().map(|e| (e.span.start, e.span.end)).collect();
     spans.len() != edits.len()
         || edits.iter().any(|edit| {
             let clash = seen.clashes(edit.span);
-            seen.add(edit);
+            seen.add(Cow::Borrowed(edit));
             clash
         })
 }
@@ -279,7 +285,7 @@ mod tests {
     fn clashing_edits_wait_for_the_next_pass() {
         let mut edits = Edits::default();
         let insert = Edit::insert(3, "x");
-        edits.add(&insert);
+        edits.add(Cow::Borrowed(&insert));
         assert!(edits.clashes(Span::new(3, 3)));
         assert!(!edits.clashes(Span::new(3, 5)), "delete after an insertion");
         assert!(
@@ -287,7 +293,7 @@ mod tests {
             "delete before an insertion"
         );
         let delete = Edit::delete(Span::new(5, 9));
-        edits.add(&delete);
+        edits.add(Cow::Borrowed(&delete));
         assert!(edits.clashes(Span::new(8, 10)));
         assert!(edits.clashes(Span::new(6, 6)));
         assert!(edits.clashes(Span::new(4, 6)));

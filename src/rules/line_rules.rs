@@ -76,41 +76,48 @@ impl LineFindings for LineRules {
             });
     }
 
+    // Each of these can be found on every line of a file: made only if kept.
+
     fn missing_id(&mut self, key_span: Span, key: Key) {
+        use structure::missing_id::{diagnostic, MISSING_ID};
         self.found
-            .push(structure::missing_id::diagnostic(key_span, key));
+            .push_with(&MISSING_ID, || diagnostic(key_span, key));
     }
 
     fn invalid_id(&mut self, span: Span, token: &str, key: Key) {
+        use structure::invalid_id::{diagnostic, INVALID_ID};
         self.found
-            .push(structure::invalid_id::diagnostic(span, token, key));
+            .push_with(&INVALID_ID, || diagnostic(span, token, key));
     }
 
     fn duplicate_key(&mut self, key: Key, id: u32, later: Span, earlier: Span) {
-        self.found.push(structure::duplicate_key::diagnostic(
-            key, id, later, earlier,
-        ));
+        use structure::duplicate_key::{diagnostic, DUPLICATE_KEY};
+        self.found
+            .push_with(&DUPLICATE_KEY, || diagnostic(key, id, later, earlier));
     }
 
     fn wrong_arity(&mut self, key: Key, id: u32, span: Span, expected: usize, found: usize) {
-        self.found.push(structure::wrong_arity::diagnostic(
-            key, id, span, expected, found,
-        ));
+        use structure::wrong_arity::{diagnostic, WRONG_ARITY};
+        self.found
+            .push_with(&WRONG_ARITY, || diagnostic(key, id, span, expected, found));
     }
 
     fn empty_value(&mut self, key_span: Span, key: Key, id: u32) {
+        use structure::empty_value::{diagnostic, EMPTY_VALUE};
         self.found
-            .push(structure::empty_value::diagnostic(key_span, key, id));
+            .push_with(&EMPTY_VALUE, || diagnostic(key_span, key, id));
     }
 
     fn invalid_value(&mut self, key: Key, id: u32, span: Span, text: &str) {
+        use structure::invalid_value::{diagnostic, INVALID_VALUE};
         self.found
-            .push(structure::invalid_value::diagnostic(key, id, span, text));
+            .push_with(&INVALID_VALUE, || diagnostic(key, id, span, text));
     }
 
     fn invalid_number(&mut self, key: Key, id: Option<u32>, span: Span, token: &str) {
+        use structure::invalid_number::{diagnostic, INVALID_NUMBER};
         self.found
-            .push(structure::invalid_number::diagnostic(key, id, span, token));
+            .push_with(&INVALID_NUMBER, || diagnostic(key, id, span, token));
     }
 
     fn duplicate_tour(&mut self, later: Span, earlier: Span) {
