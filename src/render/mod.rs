@@ -88,7 +88,7 @@ pub struct RenderOptions {
     pub color: bool,
     /// Leave out the closing summary.
     pub quiet: bool,
-    /// Where `--format human` wraps messages and help ([`output_width`]).
+    /// Where `--format human` wraps messages and help ([`stdout_width`]).
     pub width: usize,
 }
 
