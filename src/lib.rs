@@ -16,7 +16,11 @@
 //! - [`generate`]: synthetic knowledge bases of any size, for benchmarks and tests;
 //! - [`config`] (the robot's INI) and [`settings`] (`ekb.toml`): where the file is and how
 //!   to check it;
-//! - [`cli`]: the `ekb` command line, one module per command under `commands`.
+//! - [`cli`]: the `ekb` command line, one module per command under `commands`; [`streams`]:
+//!   standard output and error, written without a panic.
+
+// Output goes through `streams`, which never panics on a closed stream.
+#![deny(clippy::print_stdout, clippy::print_stderr)]
 
 pub mod canonical;
 pub mod check;
@@ -36,6 +40,7 @@ pub mod rewrite;
 pub mod rules;
 pub mod settings;
 pub mod source;
+pub mod streams;
 pub mod syntax;
 pub mod write;
 

@@ -11,6 +11,8 @@ use crate::commands::{CommandError, Exit};
 use crate::render::escape::escape;
 use crate::rules::structure::not_a_knowledge_base;
 use crate::source::{LineIndex, SourceFile};
+use crate::stderr_line;
+use crate::streams;
 use crate::write::write_atomically;
 
 /// What to do with a file's new text.
@@ -74,8 +76,8 @@ pub fn deliver(
     Ok(changed)
 }
 
-/// Runs `each` on every path, going on after a failure (reported on standard error), and
-/// returns the worst exit.
+/// Runs `each` on every path, going on after a failure (reported on standard error; a
+/// closed standard output is told once, at the end), and returns the worst exit.
 pub fn for_each_file(
     paths: &[std::path::PathBuf],
     mut each: impl FnMut(&Path) -> Result<Exit, CommandError>,
@@ -83,7 +85,12 @@ pub fn for_each_file(
     let mut worst = Exit::Clean;
     for path in paths {
         let exit = each(path).unwrap_or_else(|error| {
-            eprintln!("ekb: error: {error}");
+            match error {
+                CommandError::OutputClosed => streams::stdout_failed(),
+                CommandError::Failed(message) => {
+                    stderr_line!("ekb: error: {}", escape(&message));
+                }
+            }
             Exit::Failure
         });
         if exit as u8 > worst as u8 {

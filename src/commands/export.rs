@@ -9,6 +9,7 @@ use crate::model::export::{ExportView, ExportedKnowledgeBase};
 use crate::reader::{self, export::LoadedExport};
 use crate::render::safe_json as json;
 use crate::render::{self, escape::escape, Format, RenderOptions};
+use crate::streams;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -95,7 +96,7 @@ fn export_as_loaded(args: &Args, context: &Context, mut checked: Checked<'_>) ->
 /// Shows `checked`'s findings on standard error, concisely, then `why`: exit 1.
 fn report_to_stderr(checked: Checked<'_>, why: &str, context: &Context) -> CommandResult {
     let summary = checked.summary();
-    let mut stderr = std::io::stderr().lock();
+    let mut stderr = streams::stderr();
     let render_options = RenderOptions {
         color: context.color_stderr(),
         quiet: true,

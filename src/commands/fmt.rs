@@ -6,6 +6,7 @@ use super::{CommandError, CommandResult, Context, Exit};
 use crate::canonical::Document;
 use crate::render::escape::escape;
 use crate::rewrite::{self, DiffStyle, Mode};
+use crate::stderr_line;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -37,7 +38,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         })
     });
     if !context.quiet && done > 0 {
-        eprintln!("{}", summary(mode, changed, done));
+        stderr_line!("{}", summary(mode, changed, done));
     }
     Ok(worst)
 }

@@ -30,6 +30,8 @@ use crate::render::escape::escape;
 use crate::render::{concise, FileReport, RenderOptions};
 use crate::settings::Settings;
 use crate::source::SourceFile;
+use crate::stderr_line;
+use crate::streams;
 
 /// The exit codes of SPEC §5.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -80,7 +82,7 @@ pub type CommandResult = Result<Exit, CommandError>;
 
 /// Lists the errors of `checked` on standard error, a concise line each, and drops its
 /// other findings (for commands that write a file and tell what a person must still do).
-fn errors_to_stderr(checked: &mut Checked<'_>) -> std::io::Result<()> {
+fn errors_to_stderr(checked: &mut Checked<'_>) {
     checked
         .diagnostics
         .retain(|diagnostic| diagnostic.severity() == Severity::Error);
@@ -88,12 +90,13 @@ fn errors_to_stderr(checked: &mut Checked<'_>) -> std::io::Result<()> {
         color: false,
         quiet: true,
     };
-    concise::render(
+    // Standard error never fails (streams::stderr); a failure is remembered there.
+    let _ = concise::render(
         &[FileReport::new(checked)],
         &Summary::default(),
-        &mut std::io::stderr().lock(),
+        &mut streams::stderr(),
         &findings_only,
-    )
+    );
 }
 
 /// What every command may need: the global options and the configuration (read once, and
@@ -141,7 +144,7 @@ impl Context {
         }
         let config = Config::discover(self.config_path.as_deref())?;
         for warning in &config.warnings {
-            eprintln!("ekb: warning: {}", escape(warning));
+            stderr_line!("ekb: warning: {}", escape(warning));
         }
         Ok(self.config.get_or_init(|| config))
     }
@@ -191,7 +194,7 @@ impl Context {
     /// Reads a knowledge base (`-` is standard input).
     pub fn read(&self, path: &Path) -> Result<SourceFile, CommandError> {
         if self.verbose || self.config()?.verbose {
-            eprintln!("ekb: reading {}", escape(&path.display().to_string()));
+            stderr_line!("ekb: reading {}", escape(&path.display().to_string()));
         }
         Ok(SourceFile::read(path)?)
     }
