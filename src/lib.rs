@@ -1,7 +1,8 @@
 //! `ekb`: author and validate the environment knowledge base of a tour-guide robot.
 //!
 //! The layers, from the bytes up:
-//! - [`source`]: a file read from disk (always valid UTF-8 text, invalid bytes recorded);
+//! - [`source`]: a file read from disk (always valid UTF-8 text, invalid bytes recorded;
+//!   UTF-16 and UTF-32, which [`encoding`] recognises, refused);
 //! - [`syntax`]: the lossless line syntax, every byte in a span;
 //! - [`model`]: the typed knowledge base, as written; its builder reports what is wrong
 //!   with a line as facts, through a trait the rules implement, and names no rule;
@@ -29,6 +30,7 @@ pub mod commands;
 pub mod config;
 pub mod diagnostic;
 pub mod diff;
+pub mod encoding;
 pub mod fixing;
 pub mod generate;
 pub mod model;

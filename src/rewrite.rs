@@ -1,5 +1,8 @@
 //! What `ekb fmt` and `ekb fix` share once they know a file's new text: show it as a diff,
 //! write it in place, or send it to standard output; and the refusals that come before.
+//!
+//! [`deliver`] writes through [`crate::write::rewrite`]: refused if the file changed since
+//! it was read, and every other guard of [`crate::write`].
 
 use std::io::{self, IsTerminal, Write};
 use std::path::Path;
@@ -13,7 +16,7 @@ use crate::rules::structure::not_a_knowledge_base;
 use crate::source::{LineIndex, SourceFile};
 use crate::stderr_line;
 use crate::streams;
-use crate::write::write_atomically;
+use crate::write;
 
 /// What to do with a file's new text.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -70,7 +73,10 @@ pub fn deliver(
         Mode::Diff if changed => print_diff(source.name(), old, new, style)?,
         Mode::Diff => {}
         Mode::Write if stdin => io::stdout().lock().write_all(new.as_bytes())?,
-        Mode::Write if changed => write_atomically(path, new.as_bytes())?,
+        Mode::Write if changed => match source.stamp() {
+            Some(read_as) => write::rewrite(path, new.as_bytes(), read_as)?,
+            None => write::write_atomically(path, new.as_bytes())?,
+        },
         Mode::Write => {}
     }
     Ok(changed)
