@@ -1,8 +1,13 @@
 //! What `ekb fmt` and `ekb fix` share once they know a file's new text: show it as a diff,
 //! write it in place, or send it to standard output; and the refusals that come before.
 //!
-//! [`deliver`] writes through [`crate::write::rewrite`]: refused if the file changed since
-//! it was read, and every other guard of [`crate::write`].
+//! A command that rewrites a knowledge base (`fix`, `fmt`, and `set` or `import --po` to
+//! come) takes its files from [`crate::commands::Context::files_to_rewrite`] (which will
+//! not rewrite a configured file outside the configuration's project unless it is named),
+//! reads each with [`crate::commands::Context::read`], calls [`ensure_rewritable`], then
+//! [`deliver`], which writes through [`crate::write::rewrite`]: refused if the file changed
+//! since it was read, and every other guard of [`crate::write`]. [`for_each_file`] goes
+//! on after a file that failed.
 
 use std::io::{self, IsTerminal, Write};
 use std::path::Path;

@@ -32,7 +32,7 @@ pub struct Args {
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
-    let paths = context.inputs(&args.files)?;
+    let paths = context.files_to_rewrite(&args.files)?;
     Ok(rewrite::for_each_file(&paths, |path| {
         let mut options = context.read_options(path)?;
         if let Some(target) = args.dialect {

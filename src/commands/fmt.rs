@@ -24,7 +24,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let style = DiffStyle {
         color: context.color_stdout(),
     };
-    let paths = context.inputs(&args.files)?;
+    let paths = context.files_to_rewrite(&args.files)?;
     let (mut changed, mut done) = (0, 0);
     let worst = rewrite::for_each_file(&paths, |path| {
         let did_change = format_file(path, context, mode, style)?;

@@ -180,20 +180,77 @@ impl Context {
         if !files.is_empty() {
             return Ok(files.to_vec());
         }
-        Ok(vec![self.config()?.knowledge_base()?.to_path_buf()])
+        Ok(vec![self.configured_knowledge_base()?])
     }
 
     /// The one file to work on: the one given, else the configured knowledge base.
     pub fn input(&self, file: Option<&Path>) -> Result<PathBuf, CommandError> {
         match file {
             Some(file) => Ok(file.to_path_buf()),
-            None => Ok(self.config()?.knowledge_base()?.to_path_buf()),
+            None => self.configured_knowledge_base(),
         }
+    }
+
+    /// The files a command may rewrite in place: [`Context::inputs`], but a configured
+    /// knowledge base outside the configuration's project folder (`knowledgeBase
+    /// /etc/passwd`, or `../../..`) is refused: such a file is rewritten only when named on
+    /// the command line.
+    pub fn files_to_rewrite(&self, files: &[PathBuf]) -> Result<Vec<PathBuf>, CommandError> {
+        let paths = self.inputs(files)?;
+        if !files.is_empty() {
+            return Ok(paths);
+        }
+        let config = self.config()?;
+        match config.locate_knowledge_base() {
+            Some(location) if !location.inside => Err(CommandError::Failed(format!(
+                "the knowledgeBase of configuration {} is {}, outside the configuration's \
+                 project folder {}: ekb rewrites a file outside the project only when you \
+                 name it on the command line",
+                config.path.as_deref().unwrap_or(Path::new("")).display(),
+                location.file.display(),
+                location.project.display()
+            ))),
+            _ => Ok(paths),
+        }
+    }
+
+    /// The configured knowledge base; with `-v`, where it really points.
+    fn configured_knowledge_base(&self) -> Result<PathBuf, CommandError> {
+        let config = self.config()?;
+        let path = config.knowledge_base()?.to_path_buf();
+        if let (true, Some(location)) = (self.verbose(), config.locate_knowledge_base()) {
+            let outside = if location.inside {
+                String::new()
+            } else {
+                format!(
+                    ", outside its project folder {}",
+                    escape(&location.project.display().to_string())
+                )
+            };
+            stderr_line!(
+                "ekb: the knowledgeBase of configuration {} is {}{outside}",
+                escape(
+                    &config
+                        .path
+                        .as_deref()
+                        .unwrap_or(Path::new(""))
+                        .display()
+                        .to_string()
+                ),
+                escape(&location.file.display().to_string())
+            );
+        }
+        Ok(path)
+    }
+
+    /// Whether to tell what is read: `-v` or the configuration's `verboseMode`.
+    fn verbose(&self) -> bool {
+        self.verbose || self.config().is_ok_and(|config| config.verbose)
     }
 
     /// Reads a knowledge base (`-` is standard input).
     pub fn read(&self, path: &Path) -> Result<SourceFile, CommandError> {
-        if self.verbose || self.config()?.verbose {
+        if self.verbose() {
             stderr_line!("ekb: reading {}", escape(&path.display().to_string()));
         }
         Ok(SourceFile::read(path)?)
