@@ -10,6 +10,8 @@ use clap::{Parser, Subcommand, ValueEnum};
 
 use crate::commands::{self, Context};
 use crate::render::escape::escape;
+use crate::stderr_line;
+use crate::streams;
 
 /// Author and validate the environment knowledge base of a tour-guide robot.
 #[derive(Debug, Parser)]
@@ -102,13 +104,28 @@ pub fn main() -> ExitCode {
         Command::Completions(args) => commands::completions::run(args, &context),
         Command::Man(args) => commands::man::run(args, &context),
     };
-    match outcome {
-        Ok(exit) => exit.into(),
-        Err(commands::CommandError::OutputClosed) => commands::Exit::Clean.into(),
+    let exit = match outcome {
+        Ok(exit) => exit,
+        Err(commands::CommandError::OutputClosed) => {
+            streams::stdout_failed();
+            commands::Exit::Failure
+        }
         Err(error) => {
             // Errors quote file names and file text: never let them drive the terminal.
-            eprintln!("ekb: error: {}", escape(&error.to_string()));
+            stderr_line!("ekb: error: {}", escape(&error.to_string()));
+            commands::Exit::Failure
+        }
+    };
+    // A stream that could not be written (`ekb export | head -c1`): what it should have
+    // carried is lost, so the command failed, whatever else it did.
+    match streams::failure() {
+        Some(stream) => {
+            stderr_line!(
+                "ekb: error: cannot write to {stream}: it was closed before ekb finished \
+                 (whoever read it stopped reading)"
+            );
             commands::Exit::Failure.into()
         }
+        None => exit.into(),
     }
 }

@@ -701,20 +701,25 @@ fn compat_crlf_fix() {
 }
 
 #[test]
-fn blanks_within_a_crlf_ending_are_its_own_to_remove() {
-    // Found by the proptest: `\r \r\n` is one ending, so trailing-whitespace must not also
-    // remove its blank, or the two fixes overlap.
+fn a_carriage_return_before_a_crlf_ending_is_left_to_a_person() {
+    // Issue 12: in `\r \r\n` the first `\r` is part of the line's text, not of its ending.
+    // compat-crlf reports the line without a fix (converting the ending would make the `\r`
+    // the next one, removed unreported by the next pass), and the blank is trailing
+    // whitespace, whose fix does not overlap the ending.
     for text in ["\r \r\n", "robotLocationDescription 1 Roomba\r\t\r \r\n"] {
         let source = SourceFile::from_bytes("crlf", text.as_bytes().to_vec());
         let all = findings_of(&source, Options::default());
+        let crlf = of_rule(&all, "compat-crlf");
+        assert_eq!(crlf.len(), 1, "{text:?}:\n{}", show(&all));
+        assert!(crlf[0].diagnostic.fix.is_none(), "{text:?}");
         assert_eq!(
-            of_rule(&all, "compat-crlf").len(),
-            1,
-            "{text:?}:\n{}",
-            show(&all)
+            crlf[0].column as usize,
+            text.rfind("\r ").unwrap() + 1,
+            "{text:?}"
         );
-        assert!(
-            of_rule(&all, "trailing-whitespace").is_empty(),
+        assert_eq!(
+            of_rule(&all, "trailing-whitespace").len(),
+            1,
             "{text:?}:\n{}",
             show(&all)
         );
@@ -723,7 +728,7 @@ fn blanks_within_a_crlf_ending_are_its_own_to_remove() {
             .filter_map(|f| f.diagnostic.fix.as_ref())
             .flat_map(|fix| &fix.edits)
             .collect();
-        assert!(apply(text, &edits).ends_with('\n'));
+        assert_eq!(apply(text, &edits), text.replace(" \r\n", "\r\n"));
     }
 }
 

@@ -6,9 +6,9 @@ use std::path::PathBuf;
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::diagnostic::Summary;
-use crate::model::build::Options;
+use crate::render::escape::escape;
 use crate::render::{self, Format, RenderOptions};
-use crate::source::SourceFile;
+use crate::stderr_line;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -27,14 +27,31 @@ pub struct Args {
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
     let paths = context.inputs(&args.files)?;
-    let options = paths
-        .iter()
-        .map(|path| context.read_options(path))
-        .collect::<Result<Vec<Options>, _>>()?;
-    let sources = paths
-        .iter()
-        .map(|path| context.read(path))
-        .collect::<Result<Vec<SourceFile>, _>>()?;
+    // A bad configuration fails every file alike: once, here.
+    context.config()?;
+    // A file that cannot be read is told at once and the others are checked all the same;
+    // the exit is 2 then. If none can be read, there is no report.
+    let mut unreadable = false;
+    let mut sources = Vec::with_capacity(paths.len());
+    let mut options = Vec::with_capacity(paths.len());
+    for path in &paths {
+        match context
+            .read_options(path)
+            .and_then(|read_options| Ok((read_options, context.read(path)?)))
+        {
+            Ok((read_options, source)) => {
+                options.push(read_options);
+                sources.push(source);
+            }
+            Err(error) => {
+                stderr_line!("ekb: error: {}", escape(&error.to_string()));
+                unreadable = true;
+            }
+        }
+    }
+    if sources.is_empty() {
+        return Ok(Exit::Failure);
+    }
     let checked: Vec<Checked> = sources
         .iter()
         .zip(&options)
@@ -55,7 +72,11 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         quiet: context.quiet,
     };
     let failed = summary.errors > 0 || (args.deny_warnings && summary.warnings > 0);
-    let exit = if failed { Exit::Findings } else { Exit::Clean };
+    let exit = match (unreadable, failed) {
+        (true, _) => Exit::Failure,
+        (false, true) => Exit::Findings,
+        (false, false) => Exit::Clean,
+    };
     // Buffered: a large file can have hundreds of thousands of findings, one line each.
     let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
     let written = render::render(
@@ -67,8 +88,9 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     )
     .and_then(|()| stdout.flush());
     match written {
-        // A reader that stops early (`ekb check | head`) is not a failure of the check.
-        Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => Ok(exit),
+        Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => {
+            Err(CommandError::OutputClosed)
+        }
         Err(error) => Err(CommandError::Failed(format!(
             "cannot write the report: {error}"
         ))),
