@@ -27,6 +27,7 @@ pub mod diagnostic;
 pub mod diff;
 pub mod fixing;
 pub mod generate;
+pub mod mission;
 pub mod model;
 mod parallel;
 pub mod present;

@@ -4,8 +4,9 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use super::{CommandError, CommandResult, Context, Exit};
-use crate::check::{check, Checked};
+use crate::check::Checked;
 use crate::diagnostic::Summary;
+use crate::mission::check::check_file;
 use crate::model::build::Options;
 use crate::render::{self, Format, RenderOptions};
 use crate::source::SourceFile;
@@ -35,14 +36,26 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         .iter()
         .map(|path| context.read(path))
         .collect::<Result<Vec<SourceFile>, _>>()?;
+    // A mission or a culture file is recognised by its content and checked alone.
     let checked: Vec<Checked> = sources
         .iter()
         .zip(&options)
-        .map(|(source, options)| check(source, options))
+        .map(|(source, options)| check_file(source, options))
         .collect();
+    report(&checked, args.format, args.deny_warnings, context)
+}
+
+/// Renders the findings of `checked` in `format` on standard output, and gives the exit
+/// code of SPEC §5.
+pub fn report(
+    checked: &[Checked<'_>],
+    format: Format,
+    deny_warnings: bool,
+    context: &Context,
+) -> CommandResult {
     // Checked::summary also counts the findings past the cap of each rule (check.rs).
     let mut summary = Summary::default();
-    for file in &checked {
+    for file in checked {
         let one = file.summary();
         summary.files += one.files;
         summary.errors += one.errors;
@@ -54,18 +67,12 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         color: context.color_stdout(),
         quiet: context.quiet,
     };
-    let failed = summary.errors > 0 || (args.deny_warnings && summary.warnings > 0);
+    let failed = summary.errors > 0 || (deny_warnings && summary.warnings > 0);
     let exit = if failed { Exit::Findings } else { Exit::Clean };
     // Buffered: a large file can have hundreds of thousands of findings, one line each.
     let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
-    let written = render::render(
-        args.format,
-        &checked,
-        &summary,
-        &mut stdout,
-        &render_options,
-    )
-    .and_then(|()| stdout.flush());
+    let written = render::render(format, checked, &summary, &mut stdout, &render_options)
+        .and_then(|()| stdout.flush());
     match written {
         // A reader that stops early (`ekb check | head`) is not a failure of the check.
         Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => Ok(exit),
