@@ -47,7 +47,7 @@ pub fn check_together<'s>(sources: &MissionSources<'s>) -> Vec<Checked<'s>> {
         let types = ValueTypes::parse(source.text());
         culture_unknown_type::check(&types, &mut types_out);
         culture_duplicate_key::check(&types.entries, Wins::Earlier, &mut types_out);
-        culture_line_too_long::check(&types.entries, source.text(), &mut types_out);
+        culture_line_too_long::check(source.text(), &mut types_out);
         types
     });
 
@@ -59,7 +59,7 @@ pub fn check_together<'s>(sources: &MissionSources<'s>) -> Vec<Checked<'s>> {
     if let (Some(source), Some(culture)) = (sources.culture_kb, &culture) {
         invalid_utf8::check(source, &mut culture_out);
         culture_duplicate_key::check(&culture.entries, Wins::Later, &mut culture_out);
-        culture_line_too_long::check(&culture.entries, source.text(), &mut culture_out);
+        culture_line_too_long::check(source.text(), &mut culture_out);
         culture_crlf::check(source.text(), &mut culture_out);
         if let Some(types) = &types {
             culture_unknown_key::check(culture, types, &mut culture_out);

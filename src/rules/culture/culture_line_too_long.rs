@@ -1,6 +1,7 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::mission::culture::{Entry, LINE_BUFFER};
+use crate::mission::culture::LINE_BUFFER;
+use crate::reader::chunks;
 use crate::rules::declare_rule;
 use crate::syntax::Span;
 
@@ -25,28 +26,38 @@ declare_rule! {
     };
 }
 
-pub fn check(entries: &[Entry<'_>], text: &str, out: &mut Diagnostics) {
-    for (entry, next) in entries.iter().zip(entries.iter().skip(1)) {
-        if !next.continuation {
+pub fn check(text: &str, out: &mut Diagnostics) {
+    let mut pieces = chunks(text.as_bytes(), LINE_BUFFER).peekable();
+    while let Some((start, piece)) = pieces.next() {
+        if piece.ends_with(b"\n") || pieces.peek().is_none() {
             continue;
         }
-        let cut = entry.span.end as usize;
+        let cut = start + piece.len();
         let line_end = text[cut..].find('\n').map_or(text.len(), |at| cut + at);
-        let lost = text[cut..line_end].trim_end_matches('\r');
+        let rest = text[cut..line_end].trim_end_matches('\r');
+        // Point at what is cut off, or at the last character kept if only the newline is.
+        let span = match rest.is_empty() {
+            false => Span::new(cut, cut + rest.len()),
+            true => {
+                let last = text[..cut].chars().next_back().map_or(0, char::len_utf8);
+                Span::new(cut - last, cut)
+            }
+        };
+        let key = text[start..cut].split_whitespace().next().unwrap_or("");
         out.push(
             Diagnostic::new(
                 &CULTURE_LINE_TOO_LONG,
-                Span::new(cut, cut + lost.len()),
+                span,
                 format!(
-                    "the line of `{}` is {} bytes or more: the robot cuts it after {} bytes, \
-                     and reads \"{}\" as a line of its own",
-                    entry.key,
-                    LINE_BUFFER,
+                    "the line of `{}` is {LINE_BUFFER} bytes or more: the robot cuts it after \
+                     {} bytes, reads the rest ({} bytes) as a line of its own, and a PHRASE \
+                     loses its last character",
+                    crate::rules::excerpt(key),
                     LINE_BUFFER - 1,
-                    crate::rules::excerpt(lost)
+                    line_end + 1 - cut.min(line_end + 1),
                 ),
             )
-            .with_help("shorten the value to fit in 199 bytes with its key"),
+            .with_help("shorten the value to fit in 199 bytes with its key and newline"),
         );
     }
 }
