@@ -341,3 +341,70 @@ fn each_kind_of_tree_that_behaviortree_cpp_refuses_is_an_error() {
         assert_eq!(found, [*rule], "{xml}:\n{}", show(&all));
     }
 }
+
+// ---------------------------------------------------------------------------------------
+// Any input: a finding, never a panic or a hang
+
+mod any_input {
+    use super::*;
+    use ekb::mission::culture::PhraseBook;
+    use ekb::mission::{outline, walk};
+    use proptest::prelude::*;
+
+    /// Pieces of missions and culture files, mixed with noise.
+    fn piece() -> impl Strategy<Value = String> {
+        prop_oneof![
+            Just("<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">".to_string()),
+            Just("<BehaviorTree ID=\"A\">".to_string()),
+            Just("</BehaviorTree>".to_string()),
+            Just("<Sequence>".to_string()),
+            Just("</Sequence>".to_string()),
+            Just("<KeepRunningUntilFailure>".to_string()),
+            Just("<SubTree ID=\"A\"/>".to_string()),
+            Just("<SayText name=\"4\"/>".to_string()),
+            Just("<SelectExhibit/>".to_string()),
+            Just("</root>".to_string()),
+            Just("phraseLanguage English\n".to_string()),
+            Just("utilityPhraseEnglish4 PHRASE\n".to_string()),
+            Just("utilityPhraseEnglish4 \"Hello\"\r\n".to_string()),
+            "[ -~\\t\\r\\n\u{e9}\u{feff}]{0,30}",
+        ]
+    }
+
+    fn file() -> impl Strategy<Value = String> {
+        prop::collection::vec(piece(), 0..12).prop_map(|pieces| pieces.concat())
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(200))]
+        #[test]
+        fn checking_showing_and_walking_never_panic(
+            mission in file(), culture in file(), types in file()
+        ) {
+            let files = [
+                SourceFile::from_bytes(MISSION, mission.into_bytes()),
+                SourceFile::from_bytes(CULTURE, culture.into_bytes()),
+                SourceFile::from_bytes(TYPES, types.into_bytes()),
+                set_up(None)[3].clone(),
+            ];
+            check_set(&files);
+            for source in &files[..3] {
+                ekb::mission::check::check_file(source, &Options::default());
+            }
+            let Ok(mission) = ekb::mission::check::read_mission(files[0].text()) else {
+                return Ok(());
+            };
+            let kb = ekb::check(&files[3], &Options::default());
+            let culture = ekb::mission::culture::CultureKnowledgeBase::parse(files[1].text());
+            let types = ekb::mission::culture::ValueTypes::parse(files[2].text());
+            let phrases = PhraseBook {
+                culture: Some((&culture, &types)),
+                language: Some(ekb::model::Language::English),
+            };
+            outline::outline(&mission, files[0].text(), &phrases);
+            let world = walk::World { kb: &kb.kb, phrases, asr_enabled: true };
+            let walked = walk::walk(&mission, files[0].text(), &world);
+            prop_assert!(walked.ticks <= walk::MAX_TICKS + 1);
+        }
+    }
+}

@@ -28,9 +28,9 @@ pub enum MissionCommand {
     /// Check the mission, the culture knowledge base and the environment knowledge base together
     Check(CheckArgs),
     /// Print the mission's trees, with each node's parameter and the phrase each SayText says
-    Tree(TreeArgs),
+    Tree(ShowArgs),
     /// A dry run of the mission on the happy path: the steps the robot takes, in order
-    Walk(WalkArgs),
+    Walk(ShowArgs),
 }
 
 /// Where the mission's files are.
@@ -67,20 +67,9 @@ pub struct CheckArgs {
     pub deny_warnings: bool,
 }
 
+/// The arguments of `tree` and `walk`, which show the mission in one language.
 #[derive(Debug, clap::Args)]
-pub struct TreeArgs {
-    #[command(flatten)]
-    pub files: Files,
-    /// The language of the phrases shown [default: the culture knowledge base's phraseLanguage]
-    #[arg(long, value_name = "L", ignore_case = true, value_parser = language::parser())]
-    pub lang: Option<Language>,
-    /// Output format
-    #[arg(long, value_enum, default_value_t = TextOrJson::Text)]
-    pub format: TextOrJson,
-}
-
-#[derive(Debug, clap::Args)]
-pub struct WalkArgs {
+pub struct ShowArgs {
     #[command(flatten)]
     pub files: Files,
     /// The language the robot speaks [default: the culture knowledge base's phraseLanguage]
@@ -111,8 +100,8 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
 /// The robot's configuration folder: `--config-dir`, else `from_settings`, the
 /// `[mission] config-dir` of `ekb.toml` resolved against that file's folder.
 ///
-/// Hook for the settings: `src/settings.rs` is being rewritten, so every caller passes
-/// `None` for now; wire `[mission] config-dir` here, in [`paths`].
+/// Hook for the settings: `src/settings.rs` is being rewritten, so the one caller (`paths`,
+/// below) passes `None` for now; pass `[mission] config-dir` there.
 pub fn config_dir(flag: Option<&Path>, from_settings: Option<PathBuf>) -> Option<PathBuf> {
     flag.map(Path::to_path_buf).or(from_settings)
 }
@@ -240,7 +229,7 @@ impl<'s> Culture<'s> {
     }
 }
 
-fn run_tree(args: &TreeArgs, context: &Context) -> CommandResult {
+fn run_tree(args: &ShowArgs, context: &Context) -> CommandResult {
     let read = Read::all(&args.files, context)?;
     let mission = read.mission()?;
     let culture = Culture::of(&read);
@@ -255,7 +244,7 @@ fn run_tree(args: &TreeArgs, context: &Context) -> CommandResult {
     Ok(Exit::Clean)
 }
 
-fn run_walk(args: &WalkArgs, context: &Context) -> CommandResult {
+fn run_walk(args: &ShowArgs, context: &Context) -> CommandResult {
     let read = Read::all(&args.files, context)?;
     let mission = read.mission()?;
     let paths = &read.paths;

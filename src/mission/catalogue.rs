@@ -277,6 +277,14 @@ mod tests {
     }
 
     #[test]
+    fn the_explanation_of_unknown_nodes_lists_the_robots_nodes() {
+        let doc = crate::rules::mission::mission_unknown_node::MISSION_UNKNOWN_NODE.doc;
+        for model in ROBOT {
+            assert!(doc.contains(&format!("`{}`", model.id)), "{}", model.id);
+        }
+    }
+
+    #[test]
     fn near_misses_are_suggested() {
         assert_eq!(nearest("Saytext"), Some("SayText"));
         assert_eq!(nearest("SayTxt"), Some("SayText"));

@@ -13,7 +13,7 @@ use serde::Serialize;
 use super::culture::PhraseBook;
 use super::tree::{self, Mission};
 use super::xml::Element;
-use crate::model::{Arm, KnowledgeBase, Language, Phase};
+use crate::model::{Arm, KnowledgeBase, Phase};
 use crate::source::LineIndex;
 use crate::syntax::Span;
 
@@ -478,7 +478,7 @@ impl Walker<'_, '_> {
             text: message.map(|m| m.value.to_string()),
             source: format!(
                 "location {id}'s {} message {} the gesture",
-                language_name(language),
+                language.name(),
                 phase.name()
             ),
             problem,
@@ -506,10 +506,6 @@ impl Walker<'_, '_> {
         });
         Status::Success
     }
-}
-
-fn language_name(language: Language) -> &'static str {
-    language.name()
 }
 
 fn node_name(node: &Element) -> String {

@@ -11,6 +11,16 @@ declare_rule! {
     /// robot registers, with the nearest known name; and an `<Action>`, `<Condition>`,
     /// `<Control>` or `<Decorator>` without the `ID` that names its node.
     ///
+    /// The robot's nodes: `StartOfTree`, `DescribeExhibitSpeech`, `GetVisitorResponse`,
+    /// `HandleFallBack`, `HasVisitorResponded`, `IsASREnabled`, `IsListWithExhibit`,
+    /// `IsMutualGazeDiscovered`, `IsVisitorDiscovered`, `IsVisitorPresent`,
+    /// `IsVisitorResponseYes`, `Navigate`, `PerformDeicticGesture`, `PerformIconicGesture`,
+    /// `PressYesNoDialogue`, `RetrieveInitialLocation`, `RetrieveListOfExhibits`, `SayText`,
+    /// `SelectExhibit`, `SetAnimateBehavior`, `SetOvertAttentionMode`, `SetRobotPose`,
+    /// `SetSpeechEvent`. The built-in ones include `Sequence`, `Fallback`, `Inverter`,
+    /// `KeepRunningUntilFailure`, `ForceFailure`, `RetryUntilSuccessful`, `Delay` and
+    /// `SubTree`.
+    ///
     /// ## Why it matters
     /// BehaviorTree.CPP refuses the whole file ("Node not recognized"): the robot stops
     /// before the tour begins. Node names are case-sensitive.
@@ -54,8 +64,8 @@ pub fn check(mission: &Mission, node: &Element, out: &mut Diagnostics) {
     } else if let Some(near) = catalogue::nearest(id) {
         format!("did you mean `{near}`? Node names are case-sensitive")
     } else {
-        "use one of the nodes of `ekb explain mission-unknown-node`, or register the node in \
-         the robot's behaviour controller"
+        "use one of the nodes `ekb explain mission-unknown-node` lists, or register the node \
+         in the robot's behaviour controller"
             .to_string()
     };
     out.push(
