@@ -104,12 +104,7 @@ pub fn check_together<'s>(sources: &MissionSources<'s>) -> Vec<Checked<'s>> {
             (None, Some(culture)) => Some(culture.entries.iter().map(|e| e.key).collect()),
             (None, None) => None,
         };
-        kb.extend(against_the_tour(
-            &kb,
-            source.text(),
-            language,
-            keys.as_deref(),
-        ));
+        kb.extend(against_the_tour(&kb, language, keys.as_deref()));
         checked.push(kb);
     }
     checked
@@ -119,7 +114,6 @@ pub fn check_together<'s>(sources: &MissionSources<'s>) -> Vec<Checked<'s>> {
 /// tour in the mission's language, and the culturalKnowledge words.
 fn against_the_tour(
     kb: &Checked<'_>,
-    text: &str,
     language: Option<Language>,
     culture_keys: Option<&[&str]>,
 ) -> Vec<crate::Diagnostic> {
@@ -128,7 +122,7 @@ fn against_the_tour(
         mission_untranslated_tour::check(&kb.kb, language, &mut out);
     }
     if let Some(keys) = culture_keys {
-        cultural_knowledge_unknown_key::check(&kb.kb, text, keys, &mut out);
+        cultural_knowledge_unknown_key::check(&kb.kb, keys, &mut out);
     }
     out.to_vec()
 }

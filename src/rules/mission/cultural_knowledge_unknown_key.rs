@@ -29,7 +29,7 @@ declare_rule! {
 }
 
 /// `keys` are the culture knowledge base's keys (those its types file declares).
-pub fn check(kb: &KnowledgeBase<'_>, source: &str, keys: &[&str], out: &mut Diagnostics) {
+pub fn check(kb: &KnowledgeBase<'_>, keys: &[&str], out: &mut Diagnostics) {
     for location in kb.locations().iter() {
         let Some(words) = location.cultural_knowledge() else {
             continue;
@@ -38,7 +38,11 @@ pub fn check(kb: &KnowledgeBase<'_>, source: &str, keys: &[&str], out: &mut Diag
             if keys.contains(&word) {
                 continue;
             }
-            let span = Span::of(word, source);
+            let within = Span::of(word, words.value);
+            let span = Span::new(
+                words.span.start as usize + within.start as usize,
+                words.span.start as usize + within.end as usize,
+            );
             let same_but_case = keys.iter().find(|key| key.eq_ignore_ascii_case(word));
             let (message, help) = match same_but_case {
                 Some(key) => (
