@@ -294,7 +294,7 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('--culture-kb', '--culture-kb', [CompletionResultType]::ParameterName, 'The culture knowledge base [default: from the configuration folder]')
             [CompletionResult]::new('--culture-types', '--culture-types', [CompletionResultType]::ParameterName, 'The culture knowledge base''s types file [default: from the configuration folder]')
             [CompletionResult]::new('--kb', '--kb', [CompletionResultType]::ParameterName, 'The environment knowledge base [default: from the configuration folder]')
-            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'The language of the phrases shown [default: the culture knowledge base''s phraseLanguage]')
+            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'The language the robot speaks [default: the culture knowledge base''s phraseLanguage]')
             [CompletionResult]::new('--format', '--format', [CompletionResultType]::ParameterName, 'Output format')
             [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
             [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')

@@ -275,7 +275,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand --culture-kb 'The culture knowledge base [default: from the configuration folder]'
             cand --culture-types 'The culture knowledge base''s types file [default: from the configuration folder]'
             cand --kb 'The environment knowledge base [default: from the configuration folder]'
-            cand --lang 'The language of the phrases shown [default: the culture knowledge base''s phraseLanguage]'
+            cand --lang 'The language the robot speaks [default: the culture knowledge base''s phraseLanguage]'
             cand --format 'Output format'
             cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
             cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'

@@ -297,7 +297,7 @@ complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcomm
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l culture-kb -d 'The culture knowledge base [default: from the configuration folder]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l culture-types -d 'The culture knowledge base\'s types file [default: from the configuration folder]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l kb -d 'The environment knowledge base [default: from the configuration folder]' -r -F
-complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l lang -d 'The language of the phrases shown [default: the culture knowledge base\'s phraseLanguage]' -r -f -a "english\t''
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l lang -d 'The language the robot speaks [default: the culture knowledge base\'s phraseLanguage]' -r -f -a "english\t''
 isizulu\t''
 kinyarwanda\t''
 en\t''

@@ -160,20 +160,12 @@ impl Read {
 
     /// The mission, which `tree` and `walk` need, parsed.
     fn mission(&self) -> Result<Mission, CommandError> {
-        let paths = &self.paths;
-        let what = "mission";
-        paths
-            .need(
-                &paths.mission,
-                what,
-                "--mission",
-                setup::BEHAVIOR_CONTROLLER_INI,
-            )
-            .map_err(CommandError::Failed)?;
-        let source = self
-            .mission
-            .as_ref()
-            .ok_or_else(|| CommandError::Failed(what.into()))?;
+        let source = self.mission.as_ref().ok_or_else(|| {
+            let why = self
+                .paths
+                .missing("mission", "--mission", setup::BEHAVIOR_CONTROLLER_INI);
+            CommandError::Failed(why)
+        })?;
         read_mission(source.text()).map_err(|finding| {
             CommandError::Failed(format!(
                 "{} cannot be read: {} (run `ekb mission check`)",
@@ -248,38 +240,22 @@ fn run_walk(args: &ShowArgs, context: &Context) -> CommandResult {
     let read = Read::all(&args.files, context)?;
     let mission = read.mission()?;
     let paths = &read.paths;
-    let need = |path: &Option<PathBuf>, what: &str, flag: &str, ini: &str| {
-        paths
-            .need(path, what, flag, ini)
-            .map_err(CommandError::Failed)
-            .map(|_| ())
-    };
-    need(
-        &paths.kb,
-        "environment knowledge base",
-        "--kb",
-        setup::ENVIRONMENT_INI,
-    )?;
-    need(
-        &paths.culture_kb,
-        "culture knowledge base",
-        "--culture-kb",
-        setup::CULTURE_INI,
-    )?;
-    need(
-        &paths.culture_types,
-        "culture types file",
-        "--culture-types",
-        setup::CULTURE_INI,
-    )?;
-    let culture = Culture::of(&read);
-    let phrases = Culture::phrases(culture.as_ref(), args.lang);
-    let Some((kb_source, options)) = &read.kb else {
-        return Err(CommandError::Failed("no environment knowledge base".into()));
-    };
+    let (kb_source, options) = read.kb.as_ref().ok_or_else(|| {
+        let why = paths.missing("environment knowledge base", "--kb", setup::ENVIRONMENT_INI);
+        CommandError::Failed(why)
+    })?;
+    let culture = Culture::of(&read).ok_or_else(|| {
+        let what = "culture knowledge base and types file";
+        CommandError::Failed(paths.missing(
+            what,
+            "--culture-kb and --culture-types",
+            setup::CULTURE_INI,
+        ))
+    })?;
+    let phrases = Culture::phrases(Some(&culture), args.lang);
     let kb = crate::check::check(kb_source, options);
     crate::present::note_errors(&kb, context.quiet);
-    if let (None, Some(culture)) = (phrases.language, &culture) {
+    if phrases.language.is_none() {
         if let Held::Text(word, _) = culture.kb.held(&culture.types, LANGUAGE_KEY) {
             eprintln!(
                 "ekb: warning: the mission's language `{}` is not one the robot accepts; \

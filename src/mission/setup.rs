@@ -77,21 +77,15 @@ impl MissionPaths {
         }
     }
 
-    /// The path of a file a command needs, or what to give for it.
-    pub fn need<'p>(
-        &self,
-        path: &'p Option<PathBuf>,
-        what: &str,
-        flag: &str,
-        ini: &str,
-    ) -> Result<&'p Path, String> {
-        path.as_deref().ok_or_else(|| match &self.config_dir {
+    /// Why a file a command needs is not known, and what to give for it.
+    pub fn missing(&self, what: &str, flag: &str, ini: &str) -> String {
+        match &self.config_dir {
             Some(dir) => format!(
                 "no {what}: {} names none (is {ini} there?); give {flag}",
                 dir.display()
             ),
             None => format!("no {what}: give {flag}, or --config-dir with the robot's {ini}"),
-        })
+        }
     }
 }
 
@@ -163,13 +157,11 @@ mod tests {
         assert_eq!(paths.culture_types, Some(data.join("t.dat")));
         assert_eq!(paths.kb, None);
         assert_eq!(paths.asr_enabled, Some(false));
-        let error = paths.need(
-            &paths.kb,
-            "environment knowledge base",
-            "--kb",
-            ENVIRONMENT_INI,
+        let error = paths.missing("environment knowledge base", "--kb", ENVIRONMENT_INI);
+        assert!(
+            error.contains("--kb") && error.contains("config"),
+            "{error}"
         );
-        assert!(error.unwrap_err().contains("--kb"));
         assert!(MissionPaths::from_config_dir(&data).is_err());
     }
 }
