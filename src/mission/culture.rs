@@ -265,13 +265,19 @@ pub struct PhraseBook<'a> {
     pub language: Option<crate::model::Language>,
 }
 
-impl PhraseBook<'_> {
+impl<'a> PhraseBook<'a> {
+    /// What the robot holds for `key`; `None` without a culture knowledge base.
+    pub fn held(&self, key: &str) -> Option<Held<'a>> {
+        let (culture, types) = self.culture?;
+        Some(culture.held(types, key))
+    }
+
     /// The text the robot holds for `key`, or why it holds none.
     pub fn phrase(&self, key: &str) -> Result<String, String> {
-        let Some((culture, types)) = self.culture else {
+        let Some(held) = self.held(key) else {
             return Err("(no culture knowledge base given)".to_string());
         };
-        match culture.held(types, key) {
+        match held {
             Held::Text(text, _) => Ok(text.into_owned()),
             Held::Number(number, _) => Ok(number.to_string()),
             Held::NotDeclared => Err("is not declared in the types file".to_string()),

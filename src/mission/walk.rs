@@ -10,7 +10,7 @@
 
 use serde::Serialize;
 
-use super::culture::PhraseBook;
+use super::culture::{Held, PhraseBook};
 use super::tree::{self, Mission};
 use super::xml::Element;
 use crate::model::{Arm, KnowledgeBase, Phase};
@@ -428,8 +428,11 @@ impl Walker<'_, '_> {
             return;
         };
         let key = super::phrase_key(number, language);
-        let step = match self.world.phrases.phrase(&key) {
-            Ok(text) => {
+        let step = match (
+            self.world.phrases.phrase(&key),
+            self.world.phrases.held(&key),
+        ) {
+            (Ok(text), _) => {
                 self.last_phrase = Some(text.clone());
                 Step::Say {
                     text: Some(text),
@@ -437,14 +440,18 @@ impl Walker<'_, '_> {
                     problem: None,
                 }
             }
-            Err(problem) => Step::Say {
+            // Not found, the robot's lookup leaves what it found last.
+            (Err(problem), Some(Held::NotDeclared)) => Step::Say {
+                text: self.last_phrase.clone(),
+                problem: Some(format!(
+                    "{key} {problem}: the robot says the phrase it looked up last"
+                )),
+                source: key,
+            },
+            (Err(problem), _) => Step::Say {
                 text: None,
                 problem: Some(format!(
-                    "{key} {problem}: the robot says {}",
-                    match &self.last_phrase {
-                        Some(_) if problem.contains("not declared") => "what it last looked up",
-                        _ => "an undefined value",
-                    }
+                    "{key} {problem}: the robot says an undefined value"
                 )),
                 source: key,
             },

@@ -384,3 +384,23 @@ fn an_endless_loop_is_reported_not_run_forever() {
     assert_eq!(walked.code, 1);
     assert!(walked.stdout.contains("never ends"), "{}", walked.stdout);
 }
+
+#[test]
+fn a_phrase_the_types_file_does_not_declare_repeats_the_last_one_said() {
+    let walked = run(&[
+        "mission",
+        "walk",
+        "--config-dir",
+        CONFIG,
+        "--mission",
+        "tests/fixtures/mission/rules/mission-missing-phrase/bad/labTour.xml",
+    ]);
+    assert_eq!(walked.code, 0, "{}", walked.stderr);
+    assert_eq!(
+        walked.stdout.lines().nth(2),
+        Some(
+            "3. say \"Please follow me as I move around.\" — utilityPhraseEnglish8 is not \
+             declared in the types file: the robot says the phrase it looked up last"
+        )
+    );
+}
