@@ -83,6 +83,8 @@ pub enum Command {
     Completions(commands::completions::Args),
     /// Print the man page
     Man(commands::man::Args),
+    /// The behaviour-tree mission with both knowledge bases: check, tree, walk
+    Mission(commands::mission::Args),
 }
 
 /// Parses the command line, runs the command and turns the outcome into an exit code.
@@ -103,6 +105,7 @@ pub fn main() -> ExitCode {
         Command::Explain(args) => commands::explain::run(args, &context),
         Command::Completions(args) => commands::completions::run(args, &context),
         Command::Man(args) => commands::man::run(args, &context),
+        Command::Mission(args) => commands::mission::run(args, &context),
     };
     let exit = match outcome {
         Ok(exit) => exit,

@@ -33,6 +33,7 @@ pub mod diff;
 pub mod encoding;
 pub mod fixing;
 pub mod generate;
+pub mod mission;
 pub mod model;
 mod parallel;
 pub mod present;

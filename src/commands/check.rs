@@ -4,8 +4,9 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use super::{CommandError, CommandResult, Context, Exit};
-use crate::check::{check, Checked};
+use crate::check::Checked;
 use crate::diagnostic::Summary;
+use crate::mission::check::check_file;
 use crate::render::escape::escape;
 use crate::render::{self, Format, RenderOptions};
 use crate::stderr_line;
@@ -52,14 +53,27 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     if sources.is_empty() {
         return Ok(Exit::Failure);
     }
+    // A mission or a culture file is recognised by its content and checked alone.
     let checked: Vec<Checked> = sources
         .iter()
         .zip(&options)
-        .map(|(source, options)| check(source, options))
+        .map(|(source, options)| check_file(source, options))
         .collect();
+    let exit = report(&checked, args.format, args.deny_warnings, context)?;
+    Ok(if unreadable { Exit::Failure } else { exit })
+}
+
+/// Renders the findings of `checked` in `format` on standard output, and gives the exit
+/// code of SPEC §5.
+pub fn report(
+    checked: &[Checked<'_>],
+    format: Format,
+    deny_warnings: bool,
+    context: &Context,
+) -> CommandResult {
     // Checked::summary also counts the findings past the cap of each rule (check.rs).
     let mut summary = Summary::default();
-    for file in &checked {
+    for file in checked {
         let one = file.summary();
         summary.files += one.files;
         summary.errors += one.errors;
@@ -71,22 +85,12 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         color: context.color_stdout(),
         quiet: context.quiet,
     };
-    let failed = summary.errors > 0 || (args.deny_warnings && summary.warnings > 0);
-    let exit = match (unreadable, failed) {
-        (true, _) => Exit::Failure,
-        (false, true) => Exit::Findings,
-        (false, false) => Exit::Clean,
-    };
+    let failed = summary.errors > 0 || (deny_warnings && summary.warnings > 0);
+    let exit = if failed { Exit::Findings } else { Exit::Clean };
     // Buffered: a large file can have hundreds of thousands of findings, one line each.
     let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
-    let written = render::render(
-        args.format,
-        &checked,
-        &summary,
-        &mut stdout,
-        &render_options,
-    )
-    .and_then(|()| stdout.flush());
+    let written = render::render(format, checked, &summary, &mut stdout, &render_options)
+        .and_then(|()| stdout.flush());
     match written {
         Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => {
             Err(CommandError::OutputClosed)
