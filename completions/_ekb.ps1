@@ -94,7 +94,7 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             break
         }
         'ekb;tour' {
-            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'The language the robot speaks: english, isizulu, kinyarwanda (any case), or en, zu, rw')
+            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'The language the robot speaks: english, isizulu (zulu), kinyarwanda, or an ISO 639 code: en/eng, zu/zul, rw/kin (any case)')
             [CompletionResult]::new('--format', '--format', [CompletionResultType]::ParameterName, 'Output format')
             [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
             [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')

@@ -698,7 +698,7 @@ _ekb() {
             fi
             case "${prev}" in
                 --lang)
-                    COMPREPLY=($(compgen -W "english isizulu kinyarwanda en zu rw" -- "${cur}"))
+                    COMPREPLY=($(compgen -W "english isizulu kinyarwanda zulu ikinyarwanda en zu rw eng zul kin" -- "${cur}"))
                     return 0
                     ;;
                 --format)

@@ -87,7 +87,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand --version 'Print version'
         }
         &'ekb;tour'= {
-            cand --lang 'The language the robot speaks: english, isizulu, kinyarwanda (any case), or en, zu, rw'
+            cand --lang 'The language the robot speaks: english, isizulu (zulu), kinyarwanda, or an ISO 639 code: en/eng, zu/zul, rw/kin (any case)'
             cand --format 'Output format'
             cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
             cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'

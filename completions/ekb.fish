@@ -99,12 +99,17 @@ complete -c ekb -n "__fish_ekb_using_subcommand show" -s v -l verbose -d 'Print 
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s V -l version -d 'Print version'
-complete -c ekb -n "__fish_ekb_using_subcommand tour" -l lang -d 'The language the robot speaks: english, isizulu, kinyarwanda (any case), or en, zu, rw' -r -f -a "english\t''
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l lang -d 'The language the robot speaks: english, isizulu (zulu), kinyarwanda, or an ISO 639 code: en/eng, zu/zul, rw/kin (any case)' -r -f -a "english\t''
 isizulu\t''
 kinyarwanda\t''
+zulu\t''
+ikinyarwanda\t''
 en\t''
 zu\t''
-rw\t''"
+rw\t''
+eng\t''
+zul\t''
+kin\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l format -d 'Output format' -r -f -a "text\t'The tour as a script to read'
 json\t'One JSON object'"
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
