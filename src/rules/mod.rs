@@ -22,6 +22,7 @@ pub mod content;
 pub mod line_rules;
 pub mod structure;
 pub mod tour;
+pub mod translation;
 
 /// A rule's identity and documentation.
 #[derive(Debug, PartialEq, Eq)]
@@ -57,6 +58,7 @@ pub enum Category {
     Tour,
     Content,
     Compat,
+    Translation,
 }
 
 impl Category {
@@ -66,6 +68,7 @@ impl Category {
             Category::Tour => "Tour",
             Category::Content => "Content",
             Category::Compat => "Reference-reader compatibility",
+            Category::Translation => "Translation",
         }
     }
 }
@@ -137,6 +140,14 @@ pub static ALL: &[&Rule] = &[
     &compat::compat_reader_crash::COMPAT_READER_CRASH,
     &compat::compat_slow_load::COMPAT_SLOW_LOAD,
     &compat::compat_ignored_key::COMPAT_IGNORED_KEY,
+    &translation::same_as_source::SAME_AS_SOURCE,
+    &translation::end_punctuation_mismatch::END_PUNCTUATION_MISMATCH,
+    &translation::double_space::DOUBLE_SPACE,
+    &translation::space_before_punctuation::SPACE_BEFORE_PUNCTUATION,
+    &translation::repeated_punctuation::REPEATED_PUNCTUATION,
+    &translation::unbalanced_delimiters::UNBALANCED_DELIMITERS,
+    &translation::wrong_language::WRONG_LANGUAGE,
+    &translation::length_mismatch::LENGTH_MISMATCH,
 ];
 
 /// `text` from the file, cut to a length that fits in a one-line message.
@@ -232,6 +243,7 @@ fn check_location(location: &Location<'_>, context: &LocationContext<'_>, out: &
     content::gesture_behind_robot::check(location, out);
     compat::compat_too_many_cultural_keys::check(location, out);
     compat::compat_cultural_word_split::check(location, context.reader, out);
+    translation::check(location, out);
 }
 
 #[cfg(test)]
