@@ -37,6 +37,7 @@ pub mod rules;
 pub mod settings;
 pub mod source;
 pub mod syntax;
+pub mod translations;
 pub mod write;
 
 pub use check::{check, Checked};

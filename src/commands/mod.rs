@@ -13,6 +13,7 @@ pub mod man;
 pub mod rules;
 pub mod show;
 pub mod tour;
+pub mod translations;
 
 use std::cell::OnceCell;
 
