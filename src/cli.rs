@@ -83,6 +83,8 @@ pub enum Command {
     Man(commands::man::Args),
     /// How far each language is translated, message by message
     Translations(commands::translations::Args),
+    /// Edit one value in place, losslessly
+    Set(commands::set::Args),
 }
 
 /// Parses the command line, runs the command and turns the outcome into an exit code.
@@ -104,6 +106,7 @@ pub fn main() -> ExitCode {
         Command::Completions(args) => commands::completions::run(args, &context),
         Command::Man(args) => commands::man::run(args, &context),
         Command::Translations(args) => commands::translations::run(args, &context),
+        Command::Set(args) => commands::set::run(args, &context),
     };
     match outcome {
         Ok(exit) => exit.into(),

@@ -25,6 +25,7 @@ pub mod commands;
 pub mod config;
 pub mod diagnostic;
 pub mod diff;
+pub mod edit;
 pub mod fixing;
 pub mod generate;
 pub mod model;

@@ -11,6 +11,7 @@ pub mod import;
 pub mod locations;
 pub mod man;
 pub mod rules;
+pub mod set;
 pub mod show;
 pub mod tour;
 pub mod translations;

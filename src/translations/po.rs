@@ -208,6 +208,222 @@ fn said(unit: &Unit<'_>) -> String {
     comment
 }
 
+/// A PO file as `ekb import --po` reads it.
+#[derive(Debug, Default, PartialEq)]
+pub struct PoFile {
+    /// The header's `Language:` field, if it has one.
+    pub language: Option<String>,
+    /// The entries, obsolete ones (`#~`) left out, in file order.
+    pub entries: Vec<Entry>,
+}
+
+/// One entry of a PO file.
+#[derive(Debug, Default, Clone, PartialEq)]
+pub struct Entry {
+    /// The line of its first keyword (`msgctxt`, else `msgid`), 1-based.
+    pub line: u32,
+    pub msgctxt: Option<String>,
+    pub msgid: String,
+    /// The translation (the first form, for an entry with plural forms).
+    pub msgstr: String,
+    /// `#, fuzzy`: a translation to review, not to use.
+    pub fuzzy: bool,
+}
+
+/// Why a PO file could not be read: the line and what is wrong there.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ParseError {
+    pub line: u32,
+    pub message: String,
+}
+
+/// The field a string continuation line adds to.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Field {
+    Context,
+    Id,
+    IdPlural,
+    Str,
+    /// A form of `msgstr[N]` other than the first, which is not kept.
+    OtherForm,
+}
+
+/// An entry being read.
+#[derive(Debug, Default)]
+struct Pending {
+    entry: Entry,
+    has_context: bool,
+    has_id: bool,
+    has_str: bool,
+    field: Option<Field>,
+    /// Where the strings of fields that are not kept go.
+    discarded: String,
+}
+
+/// Reads a PO file. Lines may end in CRLF; strings may continue on lines of their own.
+pub fn parse(text: &str) -> Result<PoFile, ParseError> {
+    let mut file = PoFile::default();
+    let mut pending = Pending::default();
+    let mut entries = Vec::new();
+    for (index, raw) in text.lines().enumerate() {
+        let number = index as u32 + 1;
+        let line = raw.trim();
+        let fail = |message: String| ParseError {
+            line: number,
+            message,
+        };
+        if line.is_empty() {
+            continue;
+        }
+        if let Some(comment) = line.strip_prefix('#') {
+            // A comment starts the next entry's comments; `#~` lines are an obsolete entry,
+            // whose flags must not reach the next one.
+            if pending.has_str {
+                entries.push(finish(std::mem::take(&mut pending))?);
+            }
+            if comment.starts_with('~') {
+                pending = Pending::default();
+            } else if let Some(flags) = comment.strip_prefix(',') {
+                pending.entry.fuzzy |= flags.split(',').any(|flag| flag.trim() == "fuzzy");
+            }
+            continue;
+        }
+        if line.starts_with('"') {
+            let field = pending.field.ok_or_else(|| {
+                fail("a string that continues no `msgid` or `msgstr`".to_string())
+            })?;
+            let more = string(line).map_err(fail)?;
+            field_text(&mut pending, field).push_str(&more);
+            continue;
+        }
+        let (keyword, rest) = line.split_once([' ', '\t']).unwrap_or((line, ""));
+        let value = string(rest.trim()).map_err(|message| fail(format!("{keyword}: {message}")))?;
+        let field = match keyword {
+            "msgctxt" => Field::Context,
+            "msgid" => Field::Id,
+            "msgid_plural" => Field::IdPlural,
+            "msgstr" | "msgstr[0]" => Field::Str,
+            _ if keyword.starts_with("msgstr[") && keyword.ends_with(']') => Field::OtherForm,
+            _ => {
+                return Err(fail(format!(
+                    "`{}` is no PO keyword (msgctxt, msgid, msgid_plural, msgstr)",
+                    crate::rules::excerpt(keyword)
+                )))
+            }
+        };
+        let starts_entry = match field {
+            Field::Context => true,
+            Field::Id => !pending.has_context || pending.has_id,
+            _ => false,
+        };
+        if starts_entry && (pending.has_id || pending.has_context) {
+            entries.push(finish(std::mem::take(&mut pending))?);
+        }
+        if matches!(field, Field::Context | Field::Id) && pending.entry.line == 0 {
+            pending.entry.line = number;
+        }
+        match field {
+            Field::Context => pending.has_context = true,
+            Field::Id => pending.has_id = true,
+            Field::Str | Field::OtherForm | Field::IdPlural if !pending.has_id => {
+                return Err(fail(format!("`{keyword}` before the entry's `msgid`")))
+            }
+            Field::Str => pending.has_str = true,
+            _ => {}
+        }
+        pending.field = Some(field);
+        *field_text(&mut pending, field) = value;
+    }
+    if pending.has_id || pending.has_context {
+        entries.push(finish(pending)?);
+    }
+    for entry in entries {
+        if entry.msgid.is_empty() && entry.msgctxt.is_none() {
+            file.language = header_field(&entry.msgstr, "Language");
+        } else {
+            file.entries.push(entry);
+        }
+    }
+    Ok(file)
+}
+
+/// The text a field's strings go to (a form of `msgstr[N]` past the first goes nowhere).
+fn field_text(pending: &mut Pending, field: Field) -> &mut String {
+    match field {
+        Field::Context => pending.entry.msgctxt.get_or_insert_with(String::new),
+        Field::Id => &mut pending.entry.msgid,
+        Field::Str => &mut pending.entry.msgstr,
+        // ekb's entries have no plural forms: the others are read, and dropped.
+        Field::IdPlural | Field::OtherForm => {
+            pending.discarded.clear();
+            &mut pending.discarded
+        }
+    }
+}
+
+/// An entry read whole: it has a `msgid` and a `msgstr`.
+fn finish(pending: Pending) -> Result<Entry, ParseError> {
+    if !pending.has_id || !pending.has_str {
+        return Err(ParseError {
+            line: pending.entry.line,
+            message: "an entry without its `msgid` or its `msgstr`".to_string(),
+        });
+    }
+    Ok(pending.entry)
+}
+
+/// The value of a field of a PO header (`Language: zu`).
+fn header_field(header: &str, name: &str) -> Option<String> {
+    header.lines().find_map(|line| {
+        let (field, value) = line.split_once(':')?;
+        (field.trim().eq_ignore_ascii_case(name) && !value.trim().is_empty())
+            .then(|| value.trim().to_string())
+    })
+}
+
+/// The contents of a quoted PO string, unescaped.
+fn string(quoted: &str) -> Result<String, String> {
+    let inner = quoted
+        .strip_prefix('"')
+        .and_then(|rest| rest.strip_suffix('"'))
+        .filter(|_| quoted.len() >= 2)
+        .ok_or_else(|| "expected a string in double quotes".to_string())?;
+    let mut out = String::with_capacity(inner.len());
+    let mut chars = inner.chars();
+    while let Some(c) = chars.next() {
+        match c {
+            '"' => return Err("a double quote inside a string must be written \\\"".to_string()),
+            '\\' => out.push(match chars.next() {
+                Some('n') => '\n',
+                Some('t') => '\t',
+                Some('r') => '\r',
+                Some('a') => '\u{7}',
+                Some('b') => '\u{8}',
+                Some('f') => '\u{c}',
+                Some('v') => '\u{b}',
+                Some(c @ ('\\' | '"' | '\'' | '?')) => c,
+                Some(first @ '0'..='7') => {
+                    let mut code = first.to_digit(8).unwrap_or(0);
+                    for _ in 0..2 {
+                        match chars.clone().next().and_then(|c| c.to_digit(8)) {
+                            Some(digit) => {
+                                code = code * 8 + digit;
+                                chars.next();
+                            }
+                            None => break,
+                        }
+                    }
+                    char::from_u32(code).ok_or("an escape that is no character")?
+                }
+                Some(other) => return Err(format!("unknown escape `\\{other}`")),
+                None => return Err("a string that ends with a lone backslash".to_string()),
+            }),
+            c => out.push(c),
+        }
+    }
+    Ok(out)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -231,6 +447,44 @@ mod tests {
         );
         assert_eq!(parse_context("location 0 preGestureMessage"), None);
         assert_eq!(parse_context("location 3 gestureTarget"), None);
+    }
+
+    #[test]
+    fn reads_what_it_writes_and_what_translators_tools_write() {
+        let po = "# translator comment\r\n\
+                  msgid \"\"\nmsgstr \"\"\n\"Language: zu\\n\"\n\n\
+                  #, fuzzy, c-format\nmsgctxt \"location 1 preGestureMessage\"\n\
+                  msgid \"Hello\"\nmsgstr \"\"\n\"Saw\"\n\"ubona\"\n\n\
+                  #~ msgid \"gone\"\n#~ msgstr \"\"\n\n\
+                  msgctxt \"location 1 postGestureMessage\"\nmsgid \"Say \\\"bye\\\"\"\n\
+                  msgid_plural \"x\"\nmsgstr[0] \"Hamba\\tkahle\"\nmsgstr[1] \"y\"\n";
+        let file = parse(po).unwrap();
+        assert_eq!(file.language.as_deref(), Some("zu"));
+        assert_eq!(file.entries.len(), 2);
+        let first = &file.entries[0];
+        assert_eq!((first.line, first.fuzzy), (7, true));
+        assert_eq!(first.msgstr, "Sawubona");
+        let second = &file.entries[1];
+        assert_eq!((second.line, second.fuzzy), (16, false));
+        assert_eq!(second.msgid, "Say \"bye\"");
+        assert_eq!(second.msgstr, "Hamba\tkahle");
+    }
+
+    #[test]
+    fn a_malformed_line_is_an_error_at_its_line() {
+        for (po, line) in [
+            ("msgid \"a\"\nmsgstr \"b\n", 2),
+            ("msgid \"a\"\nmsgstr\n", 2),
+            ("\"orphan\"\n", 1),
+            ("msgid \"a\"\nmsgstr \"\\q\"\n", 2),
+            ("msgid \"a\"\nmsgctxt \"b\"\n", 1),
+            ("msgstr \"a\"\n", 1),
+            ("msgid \"a\"\ntranslation \"b\"\n", 2),
+            ("msgid \"é\"\nmsgstr \"\u{7}", 2),
+        ] {
+            let error = parse(po).unwrap_err();
+            assert_eq!(error.line, line, "{po:?}: {error:?}");
+        }
     }
 
     #[test]
