@@ -91,6 +91,17 @@ fn changed_lines(old: &str, new: &str) -> Vec<usize> {
         .collect()
 }
 
+/// `ekb import FLAGS --po PO KB`.
+fn import_po(flags: &[&str], po: &Path, kb: &Path) -> assert_cmd::assert::Assert {
+    ekb()
+        .arg("import")
+        .args(flags)
+        .arg("--po")
+        .arg(po)
+        .arg(kb)
+        .assert()
+}
+
 const THREE: [(&str, &str); 3] = [
     (
         "I hope you enjoy the tour",
@@ -324,15 +335,9 @@ fn importing_three_translations_changes_exactly_those_three_lines() {
             (0, "3 translated messages, 7 untranslated messages.\n")
         );
     }
-    ekb()
-        .args(["import", "--po"])
-        .arg(&po)
-        .arg(&path)
-        .assert()
-        .code(0)
-        .stderr(contains(
-            "imported 3 isiZulu messages (lines 8, 32, 44); 7 untranslated (empty msgstr)",
-        ));
+    import_po(&[], &po, &path).code(0).stderr(contains(
+        "imported 3 isiZulu messages (lines 8, 32, 44); 7 untranslated (empty msgstr)",
+    ));
     let after = std::fs::read_to_string(&path).unwrap();
     let before = seed();
     assert_eq!(changed_lines(&before, &after), [8, 32, 44]);
@@ -359,11 +364,7 @@ fn importing_three_translations_changes_exactly_those_three_lines() {
     if let Some((_, stderr)) = msgfmt(&again) {
         assert_eq!(stderr, "3 translated messages, 7 untranslated messages.\n");
     }
-    ekb()
-        .args(["import", "--po"])
-        .arg(&po)
-        .arg(&path)
-        .assert()
+    import_po(&[], &po, &path)
         .code(0)
         .stderr(contains("3 already in the file"));
     assert_eq!(std::fs::read_to_string(&path).unwrap(), after);
@@ -381,11 +382,7 @@ fn a_stale_entry_is_named_not_imported_and_exits_1() {
         .position(|line| line == "msgctxt \"location 5 postGestureMessage\"")
         .unwrap()
         + 1;
-    ekb()
-        .args(["import", "--po"])
-        .arg(&po)
-        .arg(&path)
-        .assert()
+    import_po(&[], &po, &path)
         .code(1)
         .stderr(contains(format!(
             "zu.po:{stale_line}: stale, not imported: `location 5 postGestureMessage` was translated from \"See you again soon\"; its English is now \"See you again soon, goodbye\""
@@ -395,12 +392,7 @@ fn a_stale_entry_is_named_not_imported_and_exits_1() {
         changed_lines(&changed, &std::fs::read_to_string(&path).unwrap()),
         [8, 32]
     );
-    ekb()
-        .args(["import", "--accept-stale", "--po"])
-        .arg(&po)
-        .arg(&path)
-        .assert()
-        .code(0);
+    import_po(&["--accept-stale"], &po, &path).code(0);
     assert_eq!(
         std::fs::read_to_string(&path).unwrap().lines().nth(43),
         Some("postGestureMessageIsiZulu     5 Sizobonana futhi maduze")
@@ -422,11 +414,7 @@ fn fuzzy_and_empty_entries_are_not_imported() {
         "#, fuzzy\nmsgctxt \"location 4 preGestureMessage\"",
     );
     std::fs::write(&po, text).unwrap();
-    ekb()
-        .args(["import", "--po"])
-        .arg(&po)
-        .arg(&path)
-        .assert()
+    import_po(&[], &po, &path)
         .code(0)
         .stderr(contains("imported 1 Kinyarwanda message (line 45); 8 untranslated (empty msgstr); 1 fuzzy, not imported"));
     assert_eq!(
@@ -445,38 +433,23 @@ fn an_unknown_msgctxt_names_its_line_and_nothing_is_imported() {
     );
     let line = text.lines().position(|l| l.contains("location 9")).unwrap() + 1;
     std::fs::write(&po, text).unwrap();
-    ekb()
-        .args(["import", "--po"])
-        .arg(&po)
-        .arg(&path)
-        .assert()
+    import_po(&[], &po, &path)
         .code(2)
         .stderr(contains(format!("zu.po:{line}: unknown `msgctxt \"location 9 postGestureMessage\"`: the file has no such location")))
         .stderr(contains("(nothing was imported)"));
     assert_eq!(std::fs::read_to_string(&path).unwrap(), seed());
     // A malformed PO file: its line, exit 2.
     std::fs::write(&po, "msgid \"a\"\nmsgstr \"b\n").unwrap();
-    ekb()
-        .args(["import", "--po"])
-        .arg(&po)
-        .arg(&path)
-        .assert()
-        .code(2)
-        .stderr(contains(
-            "zu.po:2: msgstr: expected a string in double quotes",
-        ));
+    import_po(&[], &po, &path).code(2).stderr(contains(
+        "zu.po:2: msgstr: expected a string in double quotes",
+    ));
 }
 
 #[test]
 fn a_missing_message_gets_a_line_aligned_in_its_location() {
     let (_dir, path, po) = exported(&partly(), "zu");
     translate(&po, &[("See you again soon", "Sizobonana futhi maduze")]);
-    ekb()
-        .args(["-q", "import", "--po"])
-        .arg(&po)
-        .arg(&path)
-        .assert()
-        .code(0);
+    import_po(&["-q"], &po, &path).code(0);
     let after = std::fs::read_to_string(&path).unwrap();
     let lines: Vec<&str> = after.lines().collect();
     assert_eq!(
@@ -495,12 +468,7 @@ fn a_crlf_file_keeps_its_line_endings() {
     let crlf = seed().replace('\n', "\r\n");
     let (_dir, path, po) = exported(&crlf, "zu");
     translate(&po, &THREE);
-    ekb()
-        .args(["-q", "import", "--po"])
-        .arg(&po)
-        .arg(&path)
-        .assert()
-        .code(0);
+    import_po(&["-q"], &po, &path).code(0);
     let after = std::fs::read_to_string(&path).unwrap();
     assert!(
         after.contains("postGestureMessageIsiZulu     1 Ngithemba uzokujabulela ukuvakasha\r\n")
@@ -518,20 +486,11 @@ fn a_translation_the_reader_would_misread_is_refused_unless_forced() {
             ("This is the Roomba", "Le yiRoomba"),
         ],
     );
-    ekb()
-        .args(["import", "--po"])
-        .arg(&po)
-        .arg(&path)
-        .assert()
+    import_po(&[], &po, &path)
         .code(1)
         .stderr(contains("not imported: error[compat-leading-symbol]"))
         .stderr(contains("imported 1 isiZulu message (line 32)"));
-    ekb()
-        .args(["-q", "import", "--force", "--po"])
-        .arg(&po)
-        .arg(&path)
-        .assert()
-        .code(0);
+    import_po(&["-q", "--force"], &po, &path).code(0);
     assert!(std::fs::read_to_string(&path)
         .unwrap()
         .contains("5 \"Sizobonana\" futhi maduze\n"));
