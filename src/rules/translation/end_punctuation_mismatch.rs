@@ -38,7 +38,7 @@ pub fn check(message: &Message<'_>, out: &mut Diagnostics) {
     let Some(english) = message.english else {
         return;
     };
-    if english.value.chars().count() < SHORTEST_COMPARED {
+    if english.value.chars().nth(SHORTEST_COMPARED - 1).is_none() {
         return;
     }
     let (expected, found) = (end_mark(english.value), end_mark(message.text.value));

@@ -30,6 +30,14 @@ declare_rule! {
     };
 }
 
+/// How many characters `text` has (its length, for the ASCII text most messages are).
+fn characters(text: &str) -> usize {
+    match text.is_ascii() {
+        true => text.len(),
+        false => text.chars().count(),
+    }
+}
+
 /// How many times shorter or longer than its English a translation may be.
 const RATIO: usize = 3;
 
@@ -37,8 +45,7 @@ pub fn check(message: &Message<'_>, out: &mut Diagnostics) {
     let Some(english) = message.english else {
         return;
     };
-    let english_length = english.value.chars().count();
-    let length = message.text.value.chars().count();
+    let (english_length, length) = (characters(english.value), characters(message.text.value));
     let too_short = length * RATIO < english_length;
     let too_long = length > english_length * RATIO;
     if !(too_short || too_long) {

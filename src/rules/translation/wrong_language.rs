@@ -35,9 +35,9 @@ declare_rule! {
 /// Whether `word` is a common English word that is no word of isiZulu or Kinyarwanda.
 /// Left out on purpose: `a`, `i`, `me`, `no`, `we` (words, or parts written apart, of those
 /// languages). Run on every word of every translation: a `match`, not a search of a list.
-fn is_common_english(word: &str) -> bool {
-    let bytes = word.as_bytes();
-    if bytes.len() > 8 {
+fn is_common_english(bytes: &[u8]) -> bool {
+    // The longest is 7 letters: most words of a translation are longer.
+    if !(2..=7).contains(&bytes.len()) {
         return false;
     }
     let mut lower = [0u8; 8];
@@ -142,16 +142,33 @@ pub fn check(message: &Message<'_>, out: &mut Diagnostics) {
 }
 
 /// How many of the words of `text` are common English words, and how many words it has.
+/// A word is a run of letters and of non-ASCII characters (split at ASCII bytes only, as
+/// every common English word is ASCII: run on every translation, it reads bytes, not
+/// characters).
 fn english_words(text: &str) -> (usize, usize) {
-    let mut english = 0;
-    let mut words = 0;
-    for word in text
-        .split(|c: char| !c.is_alphabetic())
-        .filter(|w| !w.is_empty())
-    {
-        words += 1;
-        if is_common_english(word) {
-            english += 1;
+    /// Letters, and the bytes of non-ASCII characters.
+    const IN_WORD: [bool; 256] = {
+        let mut in_word = [false; 256];
+        let mut byte = 0;
+        while byte < 256 {
+            in_word[byte] = (byte as u8).is_ascii_alphabetic() || byte >= 0x80;
+            byte += 1;
+        }
+        in_word
+    };
+    let bytes = text.as_bytes();
+    let (mut english, mut words, mut at) = (0, 0, 0);
+    while at < bytes.len() {
+        while at < bytes.len() && !IN_WORD[bytes[at] as usize] {
+            at += 1;
+        }
+        let start = at;
+        while at < bytes.len() && IN_WORD[bytes[at] as usize] {
+            at += 1;
+        }
+        if at > start {
+            words += 1;
+            english += usize::from(is_common_english(&bytes[start..at]));
         }
     }
     (english, words)
