@@ -265,6 +265,8 @@ pub fn parse(text: &str) -> Result<PoFile, ParseError> {
     let mut file = PoFile::default();
     let mut pending = Pending::default();
     let mut entries = Vec::new();
+    // Some editors on Windows start a UTF-8 file with a byte-order mark.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     for (index, raw) in text.lines().enumerate() {
         let number = index as u32 + 1;
         let line = raw.trim();
@@ -451,7 +453,7 @@ mod tests {
 
     #[test]
     fn reads_what_it_writes_and_what_translators_tools_write() {
-        let po = "# translator comment\r\n\
+        let po = "\u{feff}# translator comment\r\n\
                   msgid \"\"\nmsgstr \"\"\n\"Language: zu\\n\"\n\n\
                   #, fuzzy, c-format\nmsgctxt \"location 1 preGestureMessage\"\n\
                   msgid \"Hello\"\nmsgstr \"\"\n\"Saw\"\n\"ubona\"\n\n\
