@@ -85,6 +85,10 @@ pub enum Command {
     Man(commands::man::Args),
     /// The behaviour-tree mission with both knowledge bases: check, tree, walk
     Mission(commands::mission::Args),
+    /// How far each language is translated, message by message
+    Translations(commands::translations::Args),
+    /// Edit one value in place, losslessly
+    Set(commands::set::Args),
 }
 
 /// Parses the command line, runs the command and turns the outcome into an exit code.
@@ -106,6 +110,8 @@ pub fn main() -> ExitCode {
         Command::Completions(args) => commands::completions::run(args, &context),
         Command::Man(args) => commands::man::run(args, &context),
         Command::Mission(args) => commands::mission::run(args, &context),
+        Command::Translations(args) => commands::translations::run(args, &context),
+        Command::Set(args) => commands::set::run(args, &context),
     };
     let exit = match outcome {
         Ok(exit) => exit,

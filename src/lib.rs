@@ -30,6 +30,7 @@ pub mod commands;
 pub mod config;
 pub mod diagnostic;
 pub mod diff;
+pub mod edit;
 pub mod encoding;
 pub mod fixing;
 pub mod generate;
@@ -45,6 +46,7 @@ pub mod settings;
 pub mod source;
 pub mod streams;
 pub mod syntax;
+pub mod translations;
 pub mod write;
 
 pub use check::{check, Checked};
