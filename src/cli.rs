@@ -81,6 +81,8 @@ pub enum Command {
     Completions(commands::completions::Args),
     /// Print the man page
     Man(commands::man::Args),
+    /// Run the language server (LSP, on standard input and output) for editors
+    Lsp(commands::lsp::Args),
 }
 
 /// Parses the command line, runs the command and turns the outcome into an exit code.
@@ -101,6 +103,7 @@ pub fn main() -> ExitCode {
         Command::Explain(args) => commands::explain::run(args, &context),
         Command::Completions(args) => commands::completions::run(args, &context),
         Command::Man(args) => commands::man::run(args, &context),
+        Command::Lsp(args) => commands::lsp::run(args, &context),
     };
     match outcome {
         Ok(exit) => exit.into(),

@@ -16,7 +16,8 @@
 //! - [`generate`]: synthetic knowledge bases of any size, for benchmarks and tests;
 //! - [`config`] (the robot's INI) and [`settings`] (`ekb.toml`): where the file is and how
 //!   to check it;
-//! - [`cli`]: the `ekb` command line, one module per command under `commands`.
+//! - [`cli`]: the `ekb` command line, one module per command under `commands`;
+//! - [`lsp`]: `ekb lsp`, the language server, whose handlers ask the layers above.
 
 pub mod canonical;
 pub mod check;
@@ -27,6 +28,7 @@ pub mod diagnostic;
 pub mod diff;
 pub mod fixing;
 pub mod generate;
+pub mod lsp;
 pub mod model;
 mod parallel;
 pub mod present;

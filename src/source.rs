@@ -130,6 +130,15 @@ impl SourceFile {
         &self.name
     }
 
+    /// The text, owned (a mapped file's is copied): to edit it, as the language server
+    /// does with an open document.
+    pub fn into_text(self) -> String {
+        match self.text {
+            Text::Owned(text) => text,
+            Text::Mapped(map) => String::from_utf8_lossy(&map).into_owned(),
+        }
+    }
+
     pub fn text(&self) -> &str {
         match &self.text {
             Text::Owned(text) => text,
