@@ -69,7 +69,10 @@ fn neovim_shows_the_findings_of_the_seed_file() {
         ],
         "{seen}"
     );
-    let diagnostics = lines.iter().filter(|l| l.starts_with("diagnostic ")).count();
+    let diagnostics = lines
+        .iter()
+        .filter(|l| l.starts_with("diagnostic "))
+        .count();
     assert_eq!(diagnostics, 23, "{seen}");
     assert!(
         lines.contains(&"hover **Location 4: Roomba** · stop 2 of 5"),

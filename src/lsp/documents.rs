@@ -118,10 +118,13 @@ impl Document {
                 Some(range) => {
                     let span = self.positions_of(&text, encoding).span(range);
                     text.replace_range(span.range(), &change.text);
+                    self.index.edited(&text, span, &change.text);
                 }
-                None => text = change.text,
+                None => {
+                    text = change.text;
+                    self.index = LineIndex::new(&text);
+                }
             }
-            self.index = LineIndex::new(&text);
         }
         self.content = Content::Text(text);
         self.version = version;
@@ -140,7 +143,7 @@ impl Document {
     /// was checked already.
     pub fn check(&mut self, name: &str, options: impl FnOnce() -> Options) {
         if let Content::Text(text) = &mut self.content {
-            let source = SourceFile::from_bytes(name, std::mem::take(text).into_bytes());
+            let source = SourceFile::from_text(name, std::mem::take(text));
             let options = options();
             self.content = Content::Checked(Analysis::new(source, |source| Analysed {
                 checked: check(source, &options),

@@ -87,6 +87,32 @@ impl LineIndex {
         }
     }
 
+    /// The index of the text after its bytes `span` were replaced by `new` (which must be
+    /// what the text now holds there): only the line starts the edit can change are found
+    /// again, the others shifted (a 60 MB document is not scanned again for every key typed).
+    pub fn edited(&mut self, text: &str, span: Span, new: &str) {
+        let (start, end) = (span.start, span.end);
+        let inserted = new.len() as u32;
+        // A line start depends on the byte before it and (for `\r\n`) on itself: those
+        // from `start` to the end of the new text may have changed.
+        let first = self.starts.partition_point(|&p| p < start.max(1));
+        let after = self.starts.partition_point(|&p| p <= end);
+        let bytes = text.as_bytes();
+        let starts_line = |p: u32| match bytes[p as usize - 1] {
+            b'\n' => true,
+            b'\r' => bytes.get(p as usize) != Some(&b'\n'),
+            _ => false,
+        };
+        let found: Vec<u32> = (start.max(1)..=start + inserted)
+            .filter(|&p| starts_line(p))
+            .collect();
+        for p in &mut self.starts[after..] {
+            *p = *p - end + start + inserted;
+        }
+        self.starts.splice(first..after, found);
+        self.len = text.len() as u32;
+    }
+
     /// The 0-based line that holds byte `offset`.
     fn line_of(&self, offset: u32) -> usize {
         self.starts.partition_point(|&start| start <= offset) - 1
@@ -230,6 +256,23 @@ mod tests {
         };
         assert_eq!(p.offset(Position::new(0, 3)), 2);
         assert_eq!(p.position(3), Position::new(0, 2));
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn an_edited_index_is_the_index_of_the_edited_text(
+            text in "[ab\r\n]{0,12}",
+            new in "[ab\r\n]{0,4}",
+            a in 0usize..13,
+            b in 0usize..13,
+        ) {
+            let (start, end) = (a.min(b).min(text.len()), a.max(b).min(text.len()));
+            let mut index = LineIndex::new(&text);
+            let mut edited = text.clone();
+            edited.replace_range(start..end, &new);
+            index.edited(&edited, Span::new(start, end), &new);
+            proptest::prop_assert_eq!(index, LineIndex::new(&edited));
+        }
     }
 
     #[test]

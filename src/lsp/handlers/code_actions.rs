@@ -192,6 +192,51 @@ fn workspace_edit(snapshot: &Snapshot<'_, '_>, edits: Vec<TextEdit>) -> Workspac
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::lsp::handlers::with_snapshot;
+    use lsp_types::{CodeActionContext, Position, Range, TextDocumentIdentifier};
+
+    /// The "ignore" action's edits on `line` of `text`.
+    fn ignore_edits(text: &str, line: u32) -> Vec<TextEdit> {
+        with_snapshot(text, |snapshot| {
+            let params = CodeActionParams {
+                text_document: TextDocumentIdentifier::new(snapshot.uri.clone()),
+                range: Range::new(Position::new(line, 0), Position::new(line, 0)),
+                context: CodeActionContext::default(),
+                work_done_progress_params: Default::default(),
+                partial_result_params: Default::default(),
+            };
+            let actions = code_actions(snapshot, &params, true).unwrap().unwrap();
+            let ignore = actions.into_iter().find_map(|action| match action {
+                CodeActionOrCommand::CodeAction(a)
+                    if a.title == "Ignore `key-case` on this line" =>
+                {
+                    Some(a)
+                }
+                _ => None,
+            });
+            ignore
+                .and_then(|a| a.edit?.changes?.into_values().next())
+                .unwrap_or_default()
+        })
+    }
+
+    #[test]
+    fn an_ignore_comment_above_gets_the_rule_added() {
+        let text = "# ekb: ignore[trailing-whitespace]\nRobotLocation 1 1 2 3\n";
+        let edits = ignore_edits(text, 1);
+        assert_eq!(edits.len(), 1);
+        assert_eq!(edits[0].new_text, ", key-case");
+        assert_eq!(edits[0].range.start, Position::new(0, 33));
+        // Already listed: nothing to offer.
+        let listed = "# ekb: ignore[key-case]\r\nRobotLocation 1 1 2 3\r\n";
+        assert!(ignore_edits(listed, 1).is_empty());
+        // A new comment keeps the file's line ending.
+        let crlf = "RobotLocation 1 1 2 3\r\n";
+        assert_eq!(
+            ignore_edits(crlf, 0)[0].new_text,
+            "# ekb: ignore[key-case]\r\n"
+        );
+    }
 
     #[test]
     fn suppression_comments_are_read() {

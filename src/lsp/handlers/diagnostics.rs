@@ -58,3 +58,45 @@ pub fn to_lsp(snapshot: &Snapshot<'_, '_>, diagnostic: &Diagnostic) -> lsp_types
         data: None,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lsp::handlers::with_snapshot;
+    use crate::rules::{Category, Rule};
+    use crate::syntax::Span;
+
+    #[test]
+    fn a_duplicate_points_at_the_other_line() {
+        let text = "robotLocationDescription 1 A\nrobotLocationDescription 1 B\n";
+        let duplicate = with_snapshot(text, |snapshot| {
+            publish(snapshot)
+                .diagnostics
+                .into_iter()
+                .find(|d| d.code == Some(NumberOrString::String("duplicate-key".into())))
+                .expect("a duplicate-key finding")
+        });
+        assert_eq!(duplicate.range.start.line, 1);
+        let related = duplicate.related_information.expect("the earlier line");
+        assert_eq!(related[0].location.range.start.line, 0);
+        assert_eq!(related[0].message, "first given here");
+        assert_eq!(duplicate.severity, Some(DiagnosticSeverity::WARNING));
+        assert!(duplicate.message.contains("\nhelp: delete the line"));
+    }
+
+    #[test]
+    fn an_unused_suppression_is_unnecessary() {
+        // The rule comes with suppression comments (SPEC §7); what matters here is its name.
+        static UNUSED: Rule = Rule {
+            name: UNNECESSARY,
+            category: Category::Structure,
+            severity: Severity::Warning,
+            fixable: true,
+            summary: "",
+            doc: "",
+        };
+        let finding = Diagnostic::new(&UNUSED, Span::new(0, 5), "nothing to ignore");
+        let tags = with_snapshot("# ekb\n", |snapshot| to_lsp(snapshot, &finding).tags);
+        assert_eq!(tags, Some(vec![DiagnosticTag::UNNECESSARY]));
+    }
+}

@@ -128,6 +128,27 @@ pub fn line_edits(positions: &Positions<'_>, new: &str) -> Vec<TextEdit> {
     edits
 }
 
+/// Calls `f` with a snapshot of `text`, checked with the default options (for tests).
+#[cfg(test)]
+pub fn with_snapshot<R>(text: &str, f: impl FnOnce(&Snapshot<'_, '_>) -> R) -> R {
+    use super::documents::Document;
+    use super::position::Encoding;
+    let uri: Uri = "untitled:test".parse().expect("a URI");
+    let mut document = Document::new(1, None, text.to_string());
+    document.check("test", Default::default);
+    let positions = document.positions(Encoding::Utf16);
+    document
+        .with_analysed(|analysed| {
+            f(&Snapshot {
+                uri: &uri,
+                version: 1,
+                positions,
+                analysed,
+            })
+        })
+        .expect("checked")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
