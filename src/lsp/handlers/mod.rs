@@ -202,4 +202,107 @@ mod tests {
             assert_eq!(apply(old, new), new, "{old:?} -> {new:?}");
         }
     }
+
+    /// Every handler, at every kind of position of any text: an answer, never a panic.
+    mod any_text {
+        use super::*;
+        use lsp_types::{
+            CodeActionContext, CodeActionParams, CompletionParams, GotoDefinitionParams,
+            HoverParams, InlayHintParams, Position, Range, ReferenceContext, ReferenceParams,
+            RenameParams, TextDocumentIdentifier, TextDocumentPositionParams,
+        };
+        use proptest::prelude::*;
+
+        fn text() -> impl Strategy<Value = String> {
+            let pieces = vec![
+                "robotLocationDescription",
+                "robotLocation",
+                "robotLocationPose",
+                "gestureArm",
+                "preGestureMessageEnglish",
+                "postGestureMessageenglish",
+                "tourSpecification",
+                "culturalKnowledge",
+                "# ekb: ignore[key-case]",
+                "#",
+                " ",
+                "\t",
+                "\n",
+                "\r\n",
+                "\r",
+                "1",
+                "2",
+                "0",
+                "-1",
+                "+4",
+                "2147483648",
+                "2.6",
+                "-90",
+                ",",
+                "left",
+                "x",
+                "No message in isiZulu",
+                "\u{feff}",
+                "\u{0}",
+                "Ùmuntu",
+                "😀",
+                "\u{202e}",
+            ];
+            prop::collection::vec(prop::sample::select(pieces), 0..60).prop_map(|p| p.concat())
+        }
+
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(64))]
+            #[test]
+            fn every_request_gets_an_answer(text in text(), line in 0u32..8, character in 0u32..40) {
+                with_snapshot(&text, |snapshot| {
+                    let document = TextDocumentIdentifier::new(snapshot.uri.clone());
+                    let at = TextDocumentPositionParams::new(document.clone(), Position::new(line, character));
+                    let range = Range::new(Position::new(0, 0), Position::new(line, character));
+                    let _ = hover::hover(snapshot, &HoverParams {
+                        text_document_position_params: at.clone(),
+                        work_done_progress_params: Default::default(),
+                    });
+                    let _ = completion::completion(snapshot, &CompletionParams {
+                        text_document_position: at.clone(),
+                        work_done_progress_params: Default::default(),
+                        partial_result_params: Default::default(),
+                        context: None,
+                    });
+                    let _ = navigation::definition(snapshot, &GotoDefinitionParams {
+                        text_document_position_params: at.clone(),
+                        work_done_progress_params: Default::default(),
+                        partial_result_params: Default::default(),
+                    });
+                    let _ = navigation::references(snapshot, &ReferenceParams {
+                        text_document_position: at.clone(),
+                        work_done_progress_params: Default::default(),
+                        partial_result_params: Default::default(),
+                        context: ReferenceContext { include_declaration: true },
+                    });
+                    let _ = navigation::prepare_rename(snapshot, &at);
+                    let _ = navigation::rename(snapshot, &RenameParams {
+                        text_document_position: at,
+                        new_name: "7".into(),
+                        work_done_progress_params: Default::default(),
+                    });
+                    let _ = code_actions::code_actions(snapshot, &CodeActionParams {
+                        text_document: document.clone(),
+                        range,
+                        context: CodeActionContext::default(),
+                        work_done_progress_params: Default::default(),
+                        partial_result_params: Default::default(),
+                    }, false);
+                    let _ = inlay_hints::inlay_hints(snapshot, &InlayHintParams {
+                        text_document: document,
+                        range,
+                        work_done_progress_params: Default::default(),
+                    });
+                    let _ = symbols::symbols(snapshot);
+                    let _ = formatting::formatting(snapshot);
+                    let _ = diagnostics::publish(snapshot);
+                });
+            }
+        }
+    }
 }
