@@ -299,3 +299,21 @@ pub fn position(line: u32, character: u32) -> Value {
 pub fn at(uri: &str, line: u32, character: u32) -> Value {
     json!({"textDocument": {"uri": uri}, "position": position(line, character)})
 }
+
+/// The string `field` of each element of a JSON array (titles, names, labels).
+pub fn each<'v>(array: &'v Value, field: &str) -> Vec<&'v str> {
+    let elements = array
+        .as_array()
+        .unwrap_or_else(|| panic!("not an array: {array}"));
+    elements
+        .iter()
+        .map(|e| e[field].as_str().unwrap())
+        .collect()
+}
+
+/// The message of an error response.
+pub fn error_message(response: &Value) -> &str {
+    response["error"]["message"]
+        .as_str()
+        .unwrap_or_else(|| panic!("no error: {response}"))
+}

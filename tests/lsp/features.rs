@@ -4,7 +4,9 @@
 
 use serde_json::{json, Value};
 
-use crate::client::{apply, at, change_params, edits_for, fixture_in, position, uri, Client};
+use crate::client::{
+    apply, at, change_params, each, edits_for, error_message, fixture_in, position, uri, Client,
+};
 
 /// The seed file's tour line (0-based) and the column of its stop `4` (stop 2 of 5).
 const TOUR_LINE: u32 = 45;
@@ -72,14 +74,8 @@ fn a_quick_fix_applied_clears_its_findings() {
         "textDocument/codeAction",
         json!({"textDocument": {"uri": uri}, "range": range, "context": {"diagnostics": []}}),
     );
-    let titles: Vec<&str> = actions
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|a| a["title"].as_str().unwrap())
-        .collect();
     assert_eq!(
-        titles,
+        each(&actions, "title"),
         [
             "rename to `postGestureMessageEnglish`",
             "Ignore `key-case` on this line",
@@ -223,13 +219,8 @@ fn hovering_a_key_or_a_finding_explains_it() {
     assert!(client.shut_down().success());
 }
 
-fn labels(completion: &Value) -> Vec<String> {
-    completion["items"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|item| item["label"].as_str().unwrap().to_string())
-        .collect()
+fn labels(completion: &Value) -> Vec<&str> {
+    each(&completion["items"], "label")
 }
 
 #[test]
@@ -244,16 +235,10 @@ fn completion_offers_keys_ids_and_arms() {
     );
     let keys = client.ask("textDocument/completion", at(&uri, 45, 4));
     let names = labels(&keys);
-    assert!(names.contains(&"gestureTarget".to_string()), "{names:?}");
-    assert!(names.contains(&"robotLocation".to_string()));
-    assert!(
-        !names.contains(&"robotLocationPose".to_string()),
-        "not of this dialect"
-    );
-    assert!(
-        !names.contains(&"gestureArm".to_string()),
-        "not of this dialect"
-    );
+    assert!(names.contains(&"gestureTarget"), "{names:?}");
+    assert!(names.contains(&"robotLocation"));
+    assert!(!names.contains(&"robotLocationPose"), "not of this dialect");
+    assert!(!names.contains(&"gestureArm"), "not of this dialect");
     let target = keys["items"]
         .as_array()
         .unwrap()
@@ -283,11 +268,9 @@ fn completion_offers_keys_ids_and_arms() {
     client.open(uri, current);
     let arms = client.ask("textDocument/completion", at(uri, 1, 13));
     assert_eq!(labels(&arms), ["left", "right"]);
-    let keys = labels(&client.ask("textDocument/completion", at(uri, 2, 0)));
-    assert!(
-        keys.contains(&"robotLocationPose".to_string())
-            && !keys.contains(&"robotLocation".to_string())
-    );
+    let keys = client.ask("textDocument/completion", at(uri, 2, 0));
+    let keys = labels(&keys);
+    assert!(keys.contains(&"robotLocationPose") && !keys.contains(&"robotLocation"));
     assert!(client.shut_down().success());
 }
 
@@ -340,21 +323,12 @@ fn renaming_a_location_renames_its_lines_and_stops() {
     // Onto an id that is taken, or no id: refused, with why.
     rename["newName"] = json!("3");
     let taken = client.request("textDocument/rename", rename.clone());
-    assert!(taken["error"]["message"]
-        .as_str()
-        .unwrap()
-        .contains("location 3 exists already"));
+    assert!(error_message(&taken).contains("location 3 exists already"));
     rename["newName"] = json!("0");
     let invalid = client.request("textDocument/rename", rename);
-    assert!(invalid["error"]["message"]
-        .as_str()
-        .unwrap()
-        .contains("not a location id"));
+    assert!(error_message(&invalid).contains("not a location id"));
     let on_text = client.request("textDocument/prepareRename", at(&uri, 3, 50));
-    assert!(on_text["error"]["message"]
-        .as_str()
-        .unwrap()
-        .contains("only a location's id"));
+    assert!(error_message(&on_text).contains("only a location's id"));
     assert!(client.shut_down().success());
 }
 
@@ -365,14 +339,8 @@ fn the_outline_lists_each_location_and_the_tour() {
         "textDocument/documentSymbol",
         json!({"textDocument": {"uri": uri}}),
     );
-    let names: Vec<&str> = symbols
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|s| s["name"].as_str().unwrap())
-        .collect();
     assert_eq!(
-        names,
+        each(&symbols, "name"),
         [
             "1 Pepper's starting location",
             "2 The (other) Pepper robot",

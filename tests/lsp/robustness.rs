@@ -3,7 +3,7 @@
 
 use serde_json::{json, Value};
 
-use crate::client::{at, position, Client};
+use crate::client::{at, error_message, position, Client};
 
 fn error_code(response: &Value) -> i64 {
     response["error"]["code"]
@@ -36,17 +36,11 @@ fn malformed_messages_are_answered_and_the_server_goes_on() {
     assert_eq!(error_code(&unknown), -32601);
     let not_open = client.request("textDocument/hover", at("file:///nowhere.dat", 0, 0));
     assert_eq!(error_code(&not_open), -32803);
-    assert!(not_open["error"]["message"]
-        .as_str()
-        .unwrap()
-        .contains("didOpen"));
+    assert!(error_message(&not_open).contains("didOpen"));
     // A notification it cannot read is told to the user, not answered.
     client.notify("textDocument/didOpen", json!({"textDocument": 3}));
     let told = client.take(|m| m["method"] == "window/showMessage");
-    assert!(told["params"]["message"]
-        .as_str()
-        .unwrap()
-        .contains("didOpen"));
+    assert!(told["params"]["message"].to_string().contains("didOpen"));
     assert!(client.shut_down().success());
 }
 
