@@ -108,6 +108,8 @@ struct Server {
     /// then computed only if asked for).
     resolves_code_actions: bool,
     shut_down: bool,
+    /// The last problem with the settings told to the user.
+    settings_problem: Option<String>,
 }
 
 impl Server {
@@ -135,6 +137,7 @@ impl Server {
             workspace,
             resolves_code_actions,
             shut_down: false,
+            settings_problem: None,
         };
         (server, problems)
     }
@@ -343,15 +346,23 @@ impl Server {
             |path| path.display().to_string(),
         );
         let workspace = &self.workspace;
-        let mut problem = None;
+        let mut settings = None;
         document.check(&name, || {
-            workspace.options(path.as_deref()).unwrap_or_else(|reason| {
-                problem = Some(reason);
-                workspace.fallback_options()
-            })
+            let options = workspace.options(path.as_deref());
+            let fallback = options
+                .as_ref()
+                .map_or_else(|_| workspace.fallback_options(), |o| *o);
+            settings = Some(options.map(|_| ()));
+            fallback
         });
-        if let Some(problem) = problem {
-            self.tell(MessageType::ERROR, problem);
+        // A broken `ekb.toml` is told once, not at every key typed.
+        match settings {
+            Some(Err(problem)) if self.settings_problem.as_ref() != Some(&problem) => {
+                self.tell(MessageType::ERROR, problem.clone());
+                self.settings_problem = Some(problem);
+            }
+            Some(Ok(())) => self.settings_problem = None,
+            _ => {}
         }
         let document = self.documents.get(uri)?;
         let positions = document.positions(self.encoding);

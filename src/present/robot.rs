@@ -38,7 +38,7 @@ pub fn rows(
         let held = view::held(loaded, text, location.id, key);
         let (span, value) = match field.get(location) {
             Some((value, span)) => (Some(span), as_loaded(field, &value, &held, loaded.reader)),
-            None if given => (None, "invalid: see the findings below".into()),
+            None if given => (None, "invalid: see the finding on its line".into()),
             None if field.is_current_only() => (None, "(not given)".into()),
             None => (None, "MISSING".into()),
         };

@@ -130,6 +130,11 @@ impl Client {
         }
     }
 
+    /// How many messages received and not yet looked for are `wanted`.
+    pub fn waiting(&self, wanted: impl Fn(&Value) -> bool) -> usize {
+        self.backlog.iter().filter(|m| wanted(m)).count()
+    }
+
     /// `initialize` (with these client capabilities) and `initialized`; returns the result.
     pub fn initialize(&mut self, capabilities: Value) -> Value {
         let root = format!("file://{}", self.folder.path().display());

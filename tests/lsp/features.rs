@@ -459,3 +459,40 @@ fn the_reader_comes_from_ekb_toml_and_the_command_line() {
     let folder = client.folder.path().to_path_buf();
     assert!(!ignored(&mut client, &uri(&folder.join(kb))));
 }
+
+#[test]
+fn broken_settings_are_told_once_and_the_file_is_checked_all_the_same() {
+    let mut client = Client::start();
+    client.initialize(json!({}));
+    let folder = client.folder.path().to_path_buf();
+    std::fs::write(folder.join("ekb.toml"), "reader = [\n").unwrap();
+    let uri = uri(&folder.join("kb.dat"));
+    client.open(&uri, "gestureArm 1 left\n");
+    let findings = client.diagnostics(&uri);
+    assert!(!findings.is_empty());
+    assert!(
+        codes(&findings)
+            .iter()
+            .any(|(_, code)| *code == "compat-ignored-key"),
+        "checked against the default reader"
+    );
+    for version in 2..5 {
+        let edit =
+            json!([{"range": {"start": position(1, 0), "end": position(1, 0)}, "newText": "#\n"}]);
+        client.notify(
+            "textDocument/didChange",
+            change_params(&uri, version, edit.as_array().unwrap()),
+        );
+        client.diagnostics(&uri);
+    }
+    let told = |m: &Value| m["method"] == "window/showMessage";
+    assert_eq!(client.waiting(told), 1);
+    let message = client.take(told);
+    assert!(
+        message["params"]["message"]
+            .to_string()
+            .contains("ekb.toml"),
+        "{message}"
+    );
+    assert!(client.shut_down().success());
+}
