@@ -7,7 +7,8 @@
 //!   its request out of the queue and answers it "cancelled" (a request being handled runs
 //!   to its end: none takes long).
 //! - Diagnostics are published when the queue is empty, so a burst of changes is checked
-//!   once, at its end; a request that needs a check makes it at once.
+//!   once, at its end; a request that needs a check makes it at once, and the diagnostics
+//!   of that check go out right after its answer.
 //! - A handler that panics answers an internal error; the server goes on.
 
 use std::collections::VecDeque;
@@ -185,7 +186,7 @@ impl Server {
         let mut queue: VecDeque<Message> = VecDeque::new();
         loop {
             if queue.is_empty() {
-                self.publish_unpublished();
+                self.publish(Checks::Make);
                 match incoming.recv() {
                     Ok(next) => self.enqueue(next, &mut queue),
                     Err(_) => return self.ending(),
@@ -213,6 +214,9 @@ impl Server {
                 Some(Message::Notification(notification)) => self.notified(notification),
                 Some(Message::Response(_)) | None => {}
             }
+            // A request that needed a check made it: its diagnostics go now, not after the
+            // requests still waiting.
+            self.publish(Checks::Made);
         }
     }
 
@@ -451,9 +455,18 @@ impl Server {
         }
     }
 
-    /// Publishes the diagnostics of every document that changed since they were last sent.
-    fn publish_unpublished(&mut self) {
+    /// Publishes the diagnostics of the documents that changed since they were last sent:
+    /// of all of them (checking them now), or of those already checked.
+    fn publish(&mut self, checks: Checks) {
         for uri in self.documents.unpublished() {
+            let checked = self
+                .documents
+                .get(&uri)
+                .and_then(|document| document.with_analysed(|_| ()))
+                .is_some();
+            if checks == Checks::Made && !checked {
+                continue;
+            }
             let published = catch_unwind(AssertUnwindSafe(|| {
                 self.with_snapshot(&uri, handlers::diagnostics::publish)
             }));
@@ -488,6 +501,15 @@ impl Server {
         // A client that went away is noticed when its input ends.
         let _ = self.outgoing.send(message.into());
     }
+}
+
+/// Which documents [`Server::publish`] publishes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Checks {
+    /// All: those not checked yet are checked now.
+    Make,
+    /// Those a request has checked already.
+    Made,
 }
 
 /// Requests about one document: which.
