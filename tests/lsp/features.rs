@@ -429,7 +429,7 @@ fn positions_count_utf8_bytes_when_the_client_offers_it() {
 }
 
 #[test]
-fn the_reader_comes_from_ekb_toml_and_the_command_line() {
+fn the_reader_comes_from_the_configuration_ekb_toml_and_the_command_line() {
     let text = "robotLocationDescription 1 A\nrobotLocationPose 1 1 2 90\ngestureTarget 1 0 0 0\n\
                 gestureArm 1 left\ntourSpecification 1 1\n";
     let ignored = |client: &mut Client, uri: &str| {
@@ -458,6 +458,19 @@ fn the_reader_comes_from_ekb_toml_and_the_command_line() {
     client.initialize(json!({}));
     let folder = client.folder.path().to_path_buf();
     assert!(!ignored(&mut client, &uri(&folder.join(kb))));
+    drop(client);
+
+    // The robot's configuration in the workspace, in its own whitespace form.
+    let mut client = Client::start();
+    let folder = client.folder.path().to_path_buf();
+    std::fs::create_dir(folder.join("config")).unwrap();
+    std::fs::write(
+        folder.join("config/environmentKnowledgeBaseConfiguration.ini"),
+        "knowledgeBase kb.dat\nreader        2026-03\n",
+    )
+    .unwrap();
+    client.initialize(json!({}));
+    assert!(!ignored(&mut client, &uri(&folder.join("data").join(kb))));
 }
 
 #[test]
