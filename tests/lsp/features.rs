@@ -394,6 +394,12 @@ fn inlay_hints_show_what_the_robot_loads_where_it_differs() {
         ]
     );
     assert_eq!(hints[1]["position"], position(1, 31));
+    // The hover of the location marks the same differences.
+    let hover = hover_text(&mut client, uri, 1, 18);
+    assert!(
+        hover.contains("- robotLocationPose: 2.5, 1.0, 90.0° (the file says -2.5, 1.0, 90.0°)"),
+        "{hover}"
+    );
     // Only the lines asked for.
     let hints = client.ask(
         "textDocument/inlayHint",
