@@ -45,6 +45,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand mission 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
             cand translations 'How far each language is translated, message by message'
             cand set 'Edit one value in place, losslessly'
+            cand lsp 'Run the language server (LSP, on standard input and output) for editors'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'ekb;check'= {
@@ -362,6 +363,20 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand -V 'Print version'
             cand --version 'Print version'
         }
+        &'ekb;lsp'= {
+            cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
+            cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
+            cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
+            cand --stdio 'Talk over standard input and output: what the server always does (editors'' clients pass this flag)'
+            cand -v 'Print what is read, as it is read, on standard error'
+            cand --verbose 'Print what is read, as it is read, on standard error'
+            cand -q 'Print only findings and errors, no summary'
+            cand --quiet 'Print only findings and errors, no summary'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
         &'ekb;help'= {
             cand check 'Validate knowledge-base files against every rule'
             cand locations 'A table of all locations'
@@ -379,6 +394,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand mission 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
             cand translations 'How far each language is translated, message by message'
             cand set 'Edit one value in place, losslessly'
+            cand lsp 'Run the language server (LSP, on standard input and output) for editors'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'ekb;help;check'= {
@@ -421,6 +437,8 @@ set edit:completion:arg-completer[ekb] = {|@words|
         &'ekb;help;translations'= {
         }
         &'ekb;help;set'= {
+        }
+        &'ekb;help;lsp'= {
         }
         &'ekb;help;help'= {
         }

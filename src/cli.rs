@@ -89,6 +89,8 @@ pub enum Command {
     Translations(commands::translations::Args),
     /// Edit one value in place, losslessly
     Set(commands::set::Args),
+    /// Run the language server (LSP, on standard input and output) for editors
+    Lsp(commands::lsp::Args),
 }
 
 /// Parses the command line, runs the command and turns the outcome into an exit code.
@@ -112,6 +114,7 @@ pub fn main() -> ExitCode {
         Command::Mission(args) => commands::mission::run(args, &context),
         Command::Translations(args) => commands::translations::run(args, &context),
         Command::Set(args) => commands::set::run(args, &context),
+        Command::Lsp(args) => commands::lsp::run(args, &context),
     };
     let exit = match outcome {
         Ok(exit) => exit,

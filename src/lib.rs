@@ -18,7 +18,8 @@
 //! - [`config`] (the robot's INI) and [`settings`] (`ekb.toml`): where the file is and how
 //!   to check it;
 //! - [`cli`]: the `ekb` command line, one module per command under `commands`; [`streams`]:
-//!   standard output and error, written without a panic.
+//!   standard output and error, written without a panic;
+//! - [`lsp`]: `ekb lsp`, the language server, whose handlers ask the layers above.
 
 // Output goes through `streams`, which never panics on a closed stream.
 #![deny(clippy::print_stdout, clippy::print_stderr)]
@@ -34,6 +35,7 @@ pub mod edit;
 pub mod encoding;
 pub mod fixing;
 pub mod generate;
+pub mod lsp;
 pub mod mission;
 pub mod model;
 mod parallel;

@@ -99,13 +99,7 @@ impl SourceFile {
     pub fn from_bytes(name: impl Into<String>, bytes: Vec<u8>) -> SourceFile {
         let name = name.into();
         match String::from_utf8(bytes) {
-            Ok(text) => SourceFile {
-                name,
-                text: Text::Owned(text),
-                invalid_utf8: Vec::new(),
-                invalid_utf8_lines: 0,
-                stamp: None,
-            },
+            Ok(text) => SourceFile::from_text(name, text),
             Err(err) => {
                 let (text, invalid_utf8, invalid_utf8_lines) = sanitize(err.into_bytes());
                 SourceFile {
@@ -116,6 +110,18 @@ impl SourceFile {
                     stamp: None,
                 }
             }
+        }
+    }
+
+    /// Wraps text already in memory (valid UTF-8 by its type: not checked again, which on a
+    /// 60 MB document the language server edits would be a pass over it for every key typed).
+    pub fn from_text(name: impl Into<String>, text: String) -> SourceFile {
+        SourceFile {
+            name: name.into(),
+            text: Text::Owned(text),
+            invalid_utf8: Vec::new(),
+            invalid_utf8_lines: 0,
+            stamp: None,
         }
     }
 
@@ -180,6 +186,15 @@ impl SourceFile {
 
     pub fn name(&self) -> &str {
         &self.name
+    }
+
+    /// The text, owned (a mapped file's is copied): to edit it, as the language server
+    /// does with an open document.
+    pub fn into_text(self) -> String {
+        match self.text {
+            Text::Owned(text) => text,
+            Text::Mapped(map) => String::from_utf8_lossy(&map).into_owned(),
+        }
     }
 
     pub fn text(&self) -> &str {

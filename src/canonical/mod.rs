@@ -54,6 +54,23 @@ const UNKNOWN_SLOT: u8 = Key::CulturalKnowledge as u8 + 1;
 /// The widest padding a key gets (`VALUE_COLUMN - 1` spaces, for a key of one character).
 const PADDING: &str = "                              ";
 
+/// `text` in the canonical layout, `None` when it is in it already; or why it cannot be.
+pub fn format(text: &str) -> Result<Option<String>, String> {
+    let document = Document::parse(text).map_err(|e| e.to_string())?;
+    if document.renders_as(text) {
+        return Ok(None);
+    }
+    let formatted = document.render();
+    // The layout keeps every line and value: reading the result must give the same document
+    // (checked line by line, without reading a second one).
+    if !document.reads_back_from(&formatted) {
+        return Err(
+            "the canonical layout would change its content (a bug in ekb; please report it)".into(),
+        );
+    }
+    Ok(Some(formatted))
+}
+
 /// A knowledge base as lines to write, in canonical order (see the module documentation).
 ///
 /// Lean on purpose (`ekb fmt` holds one for a whole file): every key, id, value and comment

@@ -3,7 +3,7 @@
 use std::path::{Path, PathBuf};
 
 use super::{CommandError, CommandResult, Context, Exit};
-use crate::canonical::Document;
+use crate::canonical;
 use crate::render::escape::escape;
 use crate::rewrite::{self, DiffStyle, Mode};
 use crate::stderr_line;
@@ -55,20 +55,9 @@ fn format_file(
     let cannot = |reason: String| {
         CommandError::Failed(format!("cannot format {}: {reason}", escape(source.name())))
     };
-    let document = Document::parse(source.text()).map_err(|e| cannot(e.to_string()))?;
-    if document.renders_as(source.text()) {
-        // Already canonical: reading it back is reading the file again, which gave `document`.
-        return rewrite::deliver(path, &source, source.text(), mode, style);
-    }
-    let formatted = document.render();
-    // The layout keeps every line and value: reading the result must give the same document
-    // (checked line by line, without reading a second one).
-    if !document.reads_back_from(&formatted) {
-        return Err(cannot(
-            "the canonical layout would change its content (a bug in ekb; please report it)".into(),
-        ));
-    }
-    rewrite::deliver(path, &source, &formatted, mode, style)
+    let formatted = canonical::format(source.text()).map_err(cannot)?;
+    let formatted = formatted.as_deref().unwrap_or(source.text());
+    rewrite::deliver(path, &source, formatted, mode, style)
 }
 
 /// `1 file reformatted, 2 files left unchanged` (or `would be`, with `--check`).

@@ -9,6 +9,7 @@ pub mod fix;
 pub mod fmt;
 pub mod import;
 pub mod locations;
+pub mod lsp;
 pub mod man;
 pub mod mission;
 pub mod rules;

@@ -196,19 +196,10 @@ impl<'a> Tour<'a> {
             .flat_map(|stop| [&stop.before, &stop.after])
             .filter(|said| matches!(said.message, Message::Written(_)))
             .count();
-        let written_tour: Vec<Option<i32>> = checked
-            .kb
-            .tour_stops()
-            .map(|id| i32::try_from(id).ok())
-            .collect();
-        let robot_tour = loaded
-            .tour
-            .as_ref()
-            .map_or_else(Vec::new, |tour| tour.stops.clone());
         Tour {
             language,
             reader: checked.reader.name(),
-            robot_tour: (robot_tour != written_tour).then_some(robot_tour),
+            robot_tour: robot::other_tour(&checked.kb, &loaded),
             messages: stops.len() * 2,
             stops,
             translated,
@@ -226,16 +217,9 @@ impl<'a> Tour<'a> {
             self.reader
         );
         if let Some(robot_tour) = &self.robot_tour {
-            let stops: Vec<String> = robot_tour
-                .iter()
-                .map(|stop| stop.map_or("?".to_string(), |id| id.to_string()))
-                .collect();
-            let stops = match stops.is_empty() {
-                true => "no tour at all".to_string(),
-                false => stops.join(" → "),
-            };
             out.push_str(&format!(
-                "The robot's reader loads another tour: {stops} (`ekb check` says why)\n"
+                "The robot's reader loads another tour: {} (`ekb check` says why)\n",
+                robot::tour_text(robot_tour)
             ));
         }
         for stop in &self.stops {
