@@ -52,6 +52,9 @@ _ekb() {
             ekb,rules)
                 cmd="ekb__subcmd__rules"
                 ;;
+            ekb,settings)
+                cmd="ekb__subcmd__settings"
+                ;;
             ekb,show)
                 cmd="ekb__subcmd__show"
                 ;;
@@ -94,6 +97,9 @@ _ekb() {
             ekb__subcmd__help,rules)
                 cmd="ekb__subcmd__help__subcmd__rules"
                 ;;
+            ekb__subcmd__help,settings)
+                cmd="ekb__subcmd__help__subcmd__settings"
+                ;;
             ekb__subcmd__help,show)
                 cmd="ekb__subcmd__help__subcmd__show"
                 ;;
@@ -107,7 +113,7 @@ _ekb() {
 
     case "${cmd}" in
         ekb)
-            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version check locations show tour diff export import fmt fix rules explain completions man help"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --settings --isolated --help --version check locations show tour diff export import fmt fix rules explain completions man settings help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -125,6 +131,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -133,7 +143,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__check)
-            opts="-v -q -h -V --format --deny-warnings --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --format --deny-warnings --select --extend-select --ignore --level --statistics --exit-zero --output-file --add-ignore --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -141,6 +151,26 @@ _ekb() {
             case "${prev}" in
                 --format)
                     COMPREPLY=($(compgen -W "human concise json github sarif" -- "${cur}"))
+                    return 0
+                    ;;
+                --select)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --extend-select)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ignore)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --level)
+                    COMPREPLY=($(compgen -W "error warning info" -- "${cur}"))
+                    return 0
+                    ;;
+                --output-file)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --config)
@@ -153,6 +183,10 @@ _ekb() {
                     ;;
                 --reader)
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -163,7 +197,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__completions)
-            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version bash elvish fish powershell zsh"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --settings --isolated --help --version bash elvish fish powershell zsh"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -181,6 +215,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -189,7 +227,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__diff)
-            opts="-v -q -h -V --format --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --format --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -211,6 +249,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -219,7 +261,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__explain)
-            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -237,6 +279,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -245,7 +291,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__export)
-            opts="-o -v -q -h -V --format --output --allow-errors --schema --as-loaded --config --color --verbose --reader --quiet --help --version"
+            opts="-o -v -q -h -V --format --output --allow-errors --schema --as-loaded --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -275,6 +321,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -283,7 +333,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__fix)
-            opts="-v -q -h -V --diff --dialect --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --diff --dialect --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -305,6 +355,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -313,7 +367,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__fmt)
-            opts="-v -q -h -V --check --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --check --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -331,6 +385,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -339,7 +397,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__help)
-            opts="check locations show tour diff export import fmt fix rules explain completions man help"
+            opts="check locations show tour diff export import fmt fix rules explain completions man settings help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -520,6 +578,20 @@ _ekb() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        ekb__subcmd__help__subcmd__settings)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         ekb__subcmd__help__subcmd__show)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
@@ -549,7 +621,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__import)
-            opts="-o -v -q -h -V --output --config --color --verbose --reader --quiet --help --version"
+            opts="-o -v -q -h -V --output --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -575,6 +647,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -583,7 +659,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__locations)
-            opts="-v -q -h -V --format --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --format --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -605,6 +681,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -613,7 +693,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__man)
-            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -629,6 +709,10 @@ _ekb() {
                     ;;
                 --reader)
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -639,7 +723,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__rules)
-            opts="-v -q -h -V --markdown --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --markdown --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -655,6 +739,52 @@ _ekb() {
                     ;;
                 --reader)
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        ekb__subcmd__settings)
+            opts="-v -q -h -V --select --extend-select --ignore --config --color --verbose --reader --quiet --settings --isolated --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --select)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --extend-select)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ignore)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --color)
+                    COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
+                    return 0
+                    ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -665,7 +795,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__show)
-            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -683,6 +813,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -691,7 +825,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__tour)
-            opts="-v -q -h -V --lang --format --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --lang --format --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -715,6 +849,10 @@ _ekb() {
                     ;;
                 --reader)
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)

@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_ekb_global_optspecs
-    string join \n config= color= v/verbose reader= q/quiet h/help V/version
+    string join \n config= color= v/verbose reader= q/quiet settings= isolated h/help V/version
 end
 
 function __fish_ekb_needs_command
@@ -33,8 +33,10 @@ complete -c ekb -n "__fish_ekb_needs_command" -l reader -d 'The version of the r
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_needs_command" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_needs_command" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_needs_command" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_needs_command" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_needs_command" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_needs_command" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "check" -d 'Validate knowledge-base files against every rule'
@@ -50,12 +52,20 @@ complete -c ekb -n "__fish_ekb_needs_command" -f -a "rules" -d 'List the rule ca
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "explain" -d 'Show one rule\'s documentation'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "completions" -d 'Print a shell completion script'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "man" -d 'Print the man page'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "settings" -d 'Print the settings in force for a file, and where each comes from'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l format -d 'Output format' -r -f -a "human\t'For people: each finding with the lines around it, underlined, and what to do'
 concise\t'One line per finding: `file:line:col: severity[rule] message`'
 json\t'One JSON object: every finding, with its fix, and a summary'
 github\t'GitHub Actions workflow commands (annotations)'
 sarif\t'SARIF 2.1.0, for GitHub code scanning and other SARIF viewers'"
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l select -d 'Run only these rules or categories (comma-separated), instead of those ekb.toml selects' -r
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l extend-select -d 'Run these rules or categories as well' -r
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l ignore -d 'Do not run these rules or categories' -r
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l level -d 'Show only findings at or above this severity (the summary still counts them all)' -r -f -a "error\t''
+warning\t''
+info\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l output-file -d 'Write the report to this file instead of standard output' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
@@ -65,9 +75,14 @@ complete -c ekb -n "__fish_ekb_using_subcommand check" -l reader -d 'The version
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l deny-warnings -d 'Exit 1 on warnings too'
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l statistics -d 'Instead of the findings, one line per rule: its count, and whether `ekb fix` can fix it, the most frequent first'
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l exit-zero -d 'Exit 0 even when there are findings (2 still means ekb could not do its job)'
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l add-ignore -d 'Write a `# ekb: ignore[RULE]` comment above every line with findings, so that the files check clean (to adopt ekb on an existing file); run again, it adds nothing'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand locations" -l format -d 'Output format' -r -f -a "table\t'A table that fits the terminal'
@@ -82,8 +97,10 @@ complete -c ekb -n "__fish_ekb_using_subcommand locations" -l reader -d 'The ver
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand locations" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand locations" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand locations" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand locations" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand locations" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand locations" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
@@ -95,8 +112,10 @@ complete -c ekb -n "__fish_ekb_using_subcommand show" -l reader -d 'The version 
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand show" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand show" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l lang -d 'The language the robot speaks: english, isizulu, kinyarwanda (any case), or en, zu, rw' -r -f -a "english\t''
@@ -116,8 +135,10 @@ complete -c ekb -n "__fish_ekb_using_subcommand tour" -l reader -d 'The version 
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -l format -d 'Output format' -r -f -a "human\t'What changed, for people'
@@ -131,8 +152,10 @@ complete -c ekb -n "__fish_ekb_using_subcommand diff" -l reader -d 'The version 
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand diff" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand diff" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -l format -d 'Output format (JSON is the only one)' -r -f -a "json\t'The JSON of SPEC §5'"
@@ -146,11 +169,13 @@ complete -c ekb -n "__fish_ekb_using_subcommand export" -l reader -d 'The versio
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand export" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand export" -l allow-errors -d 'Export even if the file has errors (what the robot would load of it)'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -l schema -d 'Print the JSON Schema of the export instead'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -l as-loaded -d 'Export what the chosen reader loads (`--reader`), field by field, instead of what the file says; exit 1 if that reader would crash on the file'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand export" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand import" -s o -l output -d 'Write the knowledge base here (replaced atomically) instead of standard output' -r -F
@@ -163,8 +188,10 @@ complete -c ekb -n "__fish_ekb_using_subcommand import" -l reader -d 'The versio
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand import" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand import" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand import" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand import" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand import" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand import" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
@@ -176,9 +203,11 @@ complete -c ekb -n "__fish_ekb_using_subcommand fmt" -l reader -d 'The version o
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand fmt" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -l check -d 'Write nothing; print a diff and exit 1 if a file is not in the canonical layout'
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand fmt" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -l dialect -d 'Migrate to this dialect (`current`: robotLocation becomes robotLocationPose; `seed`: the reverse)' -r -f -a "seed\t'The document\'s dialect (v1.1): `robotLocation`'
@@ -192,9 +221,11 @@ complete -c ekb -n "__fish_ekb_using_subcommand fix" -l reader -d 'The version o
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -l diff -d 'Write nothing; print a diff and exit 1 if anything would change'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
@@ -206,9 +237,11 @@ complete -c ekb -n "__fish_ekb_using_subcommand rules" -l reader -d 'The version
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand rules" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -l markdown -d 'Print the catalogue as a Markdown table (as in the README)'
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand rules" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand explain" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
@@ -220,8 +253,10 @@ complete -c ekb -n "__fish_ekb_using_subcommand explain" -l reader -d 'The versi
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand explain" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand explain" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand explain" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand explain" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand explain" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand explain" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand completions" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
@@ -233,8 +268,10 @@ complete -c ekb -n "__fish_ekb_using_subcommand completions" -l reader -d 'The v
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand completions" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand completions" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand completions" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand completions" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand completions" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand completions" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand man" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
@@ -246,21 +283,42 @@ complete -c ekb -n "__fish_ekb_using_subcommand man" -l reader -d 'The version o
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand man" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand man" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand man" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand man" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand man" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand man" -s V -l version -d 'Print version'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "check" -d 'Validate knowledge-base files against every rule'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "locations" -d 'A table of all locations'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "show" -d 'One location in full'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "tour" -d 'The tour in order, as the robot will say it in one language'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "diff" -d 'What changed between two knowledge bases, location by location'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "export" -d 'The typed model as JSON'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "import" -d 'JSON back to a canonical knowledge-base file'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "fmt" -d 'Rewrite files in the canonical layout'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "fix" -d 'Apply the machine-applicable fixes'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "rules" -d 'List the rule catalogue'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "explain" -d 'Show one rule\'s documentation'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "completions" -d 'Print a shell completion script'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "man" -d 'Print the man page'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c ekb -n "__fish_ekb_using_subcommand settings" -l select -d 'Run only these rules or categories (comma-separated), instead of those ekb.toml selects' -r
+complete -c ekb -n "__fish_ekb_using_subcommand settings" -l extend-select -d 'Run these rules or categories as well' -r
+complete -c ekb -n "__fish_ekb_using_subcommand settings" -l ignore -d 'Do not run these rules or categories' -r
+complete -c ekb -n "__fish_ekb_using_subcommand settings" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand settings" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand settings" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand settings" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand settings" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand settings" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand settings" -l isolated -d 'Use no settings file: every rule, at its own severity'
+complete -c ekb -n "__fish_ekb_using_subcommand settings" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c ekb -n "__fish_ekb_using_subcommand settings" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "check" -d 'Validate knowledge-base files against every rule'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "locations" -d 'A table of all locations'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "show" -d 'One location in full'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "tour" -d 'The tour in order, as the robot will say it in one language'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "diff" -d 'What changed between two knowledge bases, location by location'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "export" -d 'The typed model as JSON'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "import" -d 'JSON back to a canonical knowledge-base file'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "fmt" -d 'Rewrite files in the canonical layout'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "fix" -d 'Apply the machine-applicable fixes'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "rules" -d 'List the rule catalogue'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "explain" -d 'Show one rule\'s documentation'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "completions" -d 'Print a shell completion script'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "man" -d 'Print the man page'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "settings" -d 'Print the settings in force for a file, and where each comes from'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man settings help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'

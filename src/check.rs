@@ -13,8 +13,10 @@ use crate::diagnostic::{Diagnostic, Summary};
 use crate::model::build::{build, Options};
 use crate::model::KnowledgeBase;
 use crate::reader::Reader;
+use crate::rules::selection::RuleSet;
 use crate::rules::{self, compat, structure, Rule};
 use crate::source::SourceFile;
+use crate::suppression;
 
 /// The most findings of one rule shown for one file; the rest are summed up in a note.
 pub const MAX_SHOWN_PER_RULE: usize = 1000;
@@ -49,22 +51,26 @@ pub struct Checked<'a> {
     pub omitted: Vec<Diagnostic>,
     /// How many findings of each rule were reported, kept or not.
     counts: RuleCounts,
+    /// The rules that ran, and their severities.
+    rules: RuleSet,
 }
 
 impl Checked<'_> {
-    /// The counts of findings, including those not kept.
+    /// The counts of findings, including those not kept (counted at their rule's severity).
     pub fn summary(&self) -> Summary {
         let mut summary = Summary {
             files: 1,
             ..Summary::default()
         };
-        self.diagnostics.iter().for_each(|d| summary.add(d));
-        for (rule, count) in &self.counts.0 {
-            let dropped = count.saturating_sub(kept_at_most(rule));
-            match rule.severity {
-                crate::Severity::Error => summary.errors += dropped,
-                crate::Severity::Warning => summary.warnings += dropped,
-                crate::Severity::Info => summary.infos += dropped,
+        let mut kept = RuleCounts::default();
+        for diagnostic in &self.diagnostics {
+            summary.add(diagnostic);
+            kept.bump(diagnostic.rule);
+        }
+        for &(rule, count) in &self.counts.0 {
+            let not_kept = count.saturating_sub(kept.get(rule));
+            if not_kept > 0 {
+                summary.count(rule, self.rules.severity(rule), not_kept, 0);
             }
         }
         summary
@@ -123,6 +129,12 @@ impl Checked<'_> {
 
 /// Builds the model of `source` and runs every rule on it.
 pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
+    check_with(source, options, &RuleSet::default())
+}
+
+/// Builds the model of `source` and runs the rules of `rules` on it, at their severities;
+/// the file's suppression comments silence what they name.
+pub fn check_with<'a>(source: &'a SourceFile, options: &Options, rules: &RuleSet) -> Checked<'a> {
     let mut out = Diagnostics::default();
     structure::invalid_utf8::check(source, &mut out);
     compat::compat_bom::check(source.text(), &mut out);
@@ -132,40 +144,65 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
     if let Some(foreign) = structure::not_a_knowledge_base::check(source.text()) {
         // One finding says it all: each of its lines would be an `unknown-key`.
         out.push(foreign);
-        let Diagnostics {
-            kept: mut diagnostics,
-            counts,
-        } = out;
-        sort_by_position(&mut diagnostics);
-        return Checked {
-            source,
-            kb: KnowledgeBase::default(),
-            reader: options
-                .reader
-                .unwrap_or(Reader::default_for(options.dialect)),
-            omitted: omitted_notes(&diagnostics, &counts),
-            diagnostics,
-            counts,
-        };
+        let reader = options
+            .reader
+            .unwrap_or(Reader::default_for(options.dialect));
+        return Checked::new(source, KnowledgeBase::default(), reader, out, rules);
     }
     let kb = build(source.text(), options, &mut out);
     let reader = options
         .reader
         .unwrap_or_else(|| Reader::default_for(options.dialect.or(kb.dialect)));
     rules::check_model(&kb, source.text(), reader, &mut out);
-    let Diagnostics {
-        kept: mut diagnostics,
-        counts,
-    } = out;
-    sort_by_position(&mut diagnostics);
-    let omitted = omitted_notes(&diagnostics, &counts);
-    Checked {
-        source,
-        kb,
-        reader,
-        diagnostics,
-        omitted,
-        counts,
+    Checked::new(source, kb, reader, out, rules)
+}
+
+impl<'a> Checked<'a> {
+    /// The findings of `found` that `rules` chose and no suppression silenced, sorted, at
+    /// the severities of `rules`.
+    fn new(
+        source: &'a SourceFile,
+        kb: KnowledgeBase<'a>,
+        reader: Reader,
+        found: Diagnostics,
+        rules: &RuleSet,
+    ) -> Checked<'a> {
+        let Diagnostics {
+            kept: mut diagnostics,
+            mut counts,
+        } = found;
+        if !rules.is_default() {
+            diagnostics.retain(|d| rules.is_enabled(d.rule));
+            counts.0.retain(|(rule, _)| rules.is_enabled(rule));
+        }
+        sort_by_position(&mut diagnostics);
+        let not_kept = |rule| counts.get(rule).saturating_sub(kept_at_most(rule));
+        let suppressed = suppression::apply(source.text(), &mut diagnostics, rules, not_kept);
+        for (rule, n) in suppressed.silenced {
+            counts.subtract(rule, n);
+        }
+        if suppressed.unused > 0 {
+            let unused = &structure::unused_suppression::UNUSED_SUPPRESSION;
+            counts.add(unused, suppressed.unused);
+            sort_by_position(&mut diagnostics);
+        }
+        if !rules.is_default() {
+            for diagnostic in &mut diagnostics {
+                if let Some(severity) = rules.severity_override(diagnostic.rule) {
+                    diagnostic.set_severity(severity);
+                }
+            }
+        }
+        let omitted = omitted_notes(&diagnostics, &counts);
+        Checked {
+            source,
+            kb,
+            reader,
+            diagnostics,
+            omitted,
+            counts,
+            rules: rules.clone(),
+        }
     }
 }
 
@@ -276,7 +313,7 @@ fn omitted_notes(diagnostics: &[Diagnostic], counts: &RuleCounts) -> Vec<Diagnos
     first_omitted
         .into_iter()
         .map(|first| {
-            let more = counts.get(first.rule) - MAX_SHOWN_PER_RULE;
+            let more = counts.get(first.rule).saturating_sub(MAX_SHOWN_PER_RULE);
             Diagnostic::new(
                 first.rule,
                 first.span,
@@ -286,6 +323,7 @@ fn omitted_notes(diagnostics: &[Diagnostic], counts: &RuleCounts) -> Vec<Diagnos
                 ),
             )
             .with_help("fix the ones shown and run ekb check again; the summary counts them all")
+            .with_severity(first.severity())
         })
         .collect()
 }
@@ -311,6 +349,13 @@ impl RuleCounts {
                 self.0.push((rule, n));
                 n
             }
+        }
+    }
+
+    /// Counts `n` fewer findings of `rule` (silenced ones).
+    fn subtract(&mut self, rule: &'static Rule, n: usize) {
+        if let Some((_, count)) = self.0.iter_mut().find(|(r, _)| std::ptr::eq(*r, rule)) {
+            *count = count.saturating_sub(n);
         }
     }
 

@@ -5,8 +5,8 @@ use serde::Serialize;
 use crate::rules::Rule;
 use crate::syntax::Span;
 
-/// How serious a finding is.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+/// How serious a finding is (graver first: `Error < Warning`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, clap::ValueEnum)]
 #[serde(rename_all = "lowercase")]
 pub enum Severity {
     Error,
@@ -138,8 +138,8 @@ impl Diagnostic {
     }
 }
 
-/// Counts of findings by severity.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
+/// Counts of findings by severity, and by rule.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Serialize)]
 pub struct Summary {
     pub files: usize,
     pub errors: usize,
@@ -147,43 +147,139 @@ pub struct Summary {
     pub infos: usize,
     #[serde(skip)]
     pub fixable: usize,
+    /// How many findings of each rule, at each severity, in catalogue order.
+    #[serde(skip)]
+    pub by_rule: Vec<RuleCount>,
+    /// How many findings are counted but not shown (below `--level`).
+    #[serde(skip)]
+    pub hidden: Option<Hidden>,
+}
+
+/// The findings of one rule at one severity.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RuleCount {
+    pub rule: &'static Rule,
+    pub severity: Severity,
+    pub count: usize,
+    /// How many of them `ekb fix` can fix.
+    pub fixable: usize,
+}
+
+/// Findings counted but not shown: those less grave than `level`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Hidden {
+    pub count: usize,
+    pub level: Severity,
 }
 
 impl Summary {
-    pub fn add(&mut self, diagnostic: &Diagnostic) {
-        match diagnostic.severity() {
-            Severity::Error => self.errors += 1,
-            Severity::Warning => self.warnings += 1,
-            Severity::Info => self.infos += 1,
+    /// Counts `count` findings of `rule` at `severity`, `fixable` of them fixable.
+    pub fn count(&mut self, rule: &'static Rule, severity: Severity, count: usize, fixable: usize) {
+        match severity {
+            Severity::Error => self.errors += count,
+            Severity::Warning => self.warnings += count,
+            Severity::Info => self.infos += count,
         }
-        if diagnostic.fix.is_some() {
-            self.fixable += 1;
+        self.fixable += fixable;
+        let same = |c: &&mut RuleCount| std::ptr::eq(c.rule, rule) && c.severity == severity;
+        match self.by_rule.iter_mut().find(same) {
+            Some(known) => {
+                known.count += count;
+                known.fixable += fixable;
+            }
+            None => {
+                self.by_rule.push(RuleCount {
+                    rule,
+                    severity,
+                    count,
+                    fixable,
+                });
+                let place = |c: &RuleCount| crate::rules::index_of(c.rule);
+                self.by_rule.sort_by_key(|c| (place(c), c.severity));
+            }
+        }
+    }
+
+    pub fn add(&mut self, diagnostic: &Diagnostic) {
+        let fixable = usize::from(diagnostic.fix.is_some());
+        self.count(diagnostic.rule, diagnostic.severity(), 1, fixable);
+    }
+
+    /// Adds the counts of another file (or files).
+    pub fn merge(&mut self, other: &Summary) {
+        self.files += other.files;
+        for c in &other.by_rule {
+            self.count(c.rule, c.severity, c.count, c.fixable);
         }
     }
 
     /// `Found 2 errors, 21 warnings (1 fixable with ekb fix)`, or `No problems found`.
     pub fn sentence(&self) -> String {
+        self.found(|_, count, word| format!("{count} {word}"))
+    }
+
+    /// [`Summary::sentence`] with each severity broken down by rule: `Found 2 errors:
+    /// key-case, missing-field · 21 warnings: 20 untranslated-message, 1 repeated-word (1
+    /// fixable with ekb fix)`. A severity whose rules have one finding each lists only their
+    /// names; otherwise each rule comes with its count, the most frequent first.
+    pub fn breakdown(&self) -> String {
+        self.found(|severity, count, word| {
+            let mut rules: Vec<&RuleCount> = self
+                .by_rule
+                .iter()
+                .filter(|c| c.severity == severity && c.count > 0)
+                .collect();
+            rules.sort_by_key(|c| std::cmp::Reverse(c.count));
+            let singles = rules.iter().all(|c| c.count == 1);
+            let named: Vec<String> = rules
+                .iter()
+                .map(|c| match singles {
+                    true => c.rule.name.to_string(),
+                    false => format!("{} {}", c.count, c.rule.name),
+                })
+                .collect();
+            format!("{count} {word}: {}", named.join(", "))
+        })
+    }
+
+    /// `Found …`, each severity with findings described by `part`.
+    fn found(&self, part: impl Fn(Severity, usize, String) -> String) -> String {
         let mut parts = Vec::new();
-        for (count, word) in [
-            (self.errors, "error"),
-            (self.warnings, "warning"),
-            (self.infos, "info"),
+        for (severity, count) in [
+            (Severity::Error, self.errors),
+            (Severity::Warning, self.warnings),
+            (Severity::Info, self.infos),
         ] {
             if count > 0 {
-                let plural = if count == 1 || word == "info" {
+                let word = severity.name();
+                let plural = if count == 1 || severity == Severity::Info {
                     ""
                 } else {
                     "s"
                 };
-                parts.push(format!("{count} {word}{plural}"));
+                parts.push(part(severity, count, format!("{word}{plural}")));
             }
         }
-        if parts.is_empty() {
-            return "No problems found".to_string();
-        }
-        let mut sentence = format!("Found {}", parts.join(", "));
+        let separator = if parts.iter().any(|p| p.contains(':')) {
+            " · "
+        } else {
+            ", "
+        };
+        let mut sentence = if parts.is_empty() {
+            "No problems found".to_string()
+        } else {
+            format!("Found {}", parts.join(separator))
+        };
+        let mut notes = Vec::new();
         if self.fixable > 0 {
-            sentence.push_str(&format!(" ({} fixable with ekb fix)", self.fixable));
+            notes.push(format!("{} fixable with ekb fix", self.fixable));
+        }
+        if let Some(hidden) = self.hidden.filter(|hidden| hidden.count > 0) {
+            let level = hidden.level.name();
+            notes.push(format!("{} below --level {level} not shown", hidden.count));
+        }
+        if !notes.is_empty() {
+            sentence.push_str(&format!(" ({})", notes.join("; ")));
         }
         sentence
     }

@@ -438,8 +438,10 @@ fn human_is_the_default_and_says_what_to_change() {
         assert!(out.contains(expected), "missing {expected:?} in\n{out}");
     }
     assert_eq!(out.matches("warning[untranslated-message]").count(), 20);
+    // The summary leads with what matters: each severity, broken down by rule.
     assert!(out.ends_with(
-        "\nFound 2 errors, 21 warnings (1 fixable with ekb fix), checked against reader d5.4.2\n"
+        "\nFound 2 errors: key-case, missing-field · 21 warnings: 20 untranslated-message, \
+         1 repeated-word (1 fixable with ekb fix), checked against reader d5.4.2\n"
     ));
     assert_eq!(run.stderr, "");
 }

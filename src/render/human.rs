@@ -68,7 +68,12 @@ pub fn render(
         }
     }
     if !options.quiet {
-        writeln!(out, "{}{}", summary.sentence(), super::reader_note(reports))?;
+        writeln!(
+            out,
+            "{}{}",
+            summary.breakdown(),
+            super::reader_note(reports)
+        )?;
     }
     Ok(())
 }

@@ -11,6 +11,7 @@ pub mod json;
 pub mod located;
 pub mod safe_json;
 pub mod sarif;
+pub mod statistics;
 
 use std::io::{self, Write};
 

@@ -20,6 +20,7 @@ pub mod compat;
 mod consequence;
 pub mod content;
 pub mod line_rules;
+pub mod selection;
 pub mod structure;
 pub mod tour;
 
@@ -60,6 +61,16 @@ pub enum Category {
 }
 
 impl Category {
+    /// The name `select`, `ignore` and `--select` use: `structure`, `compat`, ….
+    pub fn name(self) -> &'static str {
+        match self {
+            Category::Structure => "structure",
+            Category::Tour => "tour",
+            Category::Content => "content",
+            Category::Compat => "compat",
+        }
+    }
+
     pub fn title(self) -> &'static str {
         match self {
             Category::Structure => "Structure",
@@ -112,6 +123,7 @@ pub static ALL: &[&Rule] = &[
     &structure::legacy_key::LEGACY_KEY,
     &structure::control_character::CONTROL_CHARACTER,
     &structure::not_a_knowledge_base::NOT_AN_ENVIRONMENT_KNOWLEDGE_BASE,
+    &structure::unused_suppression::UNUSED_SUPPRESSION,
     &tour::tour_missing::TOUR_MISSING,
     &tour::tour_duplicate_spec::TOUR_DUPLICATE_SPEC,
     &tour::tour_count_mismatch::TOUR_COUNT_MISMATCH,
@@ -151,6 +163,20 @@ pub(crate) fn excerpt(text: &str) -> std::borrow::Cow<'_, str> {
 /// The rule with this name.
 pub fn by_name(name: &str) -> Option<&'static Rule> {
     ALL.iter().copied().find(|rule| rule.name == name)
+}
+
+/// Where `rule` is in [`ALL`] (a rule's identity is its address: rules are statics).
+pub fn index_of(rule: &Rule) -> usize {
+    ALL.iter()
+        .position(|known| std::ptr::eq(*known, rule))
+        .expect("every rule is in the catalogue")
+}
+
+/// The categories of the catalogue, in its order (those that have a rule).
+pub fn categories() -> Vec<Category> {
+    let mut categories: Vec<Category> = ALL.iter().map(|rule| rule.category).collect();
+    categories.dedup();
+    categories
 }
 
 /// Runs the rules that look at whole locations and the tour, and those that depend on the

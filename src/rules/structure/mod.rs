@@ -14,4 +14,5 @@ pub mod missing_id;
 pub mod mixed_dialect;
 pub mod not_a_knowledge_base;
 pub mod unknown_key;
+pub mod unused_suppression;
 pub mod wrong_arity;
