@@ -32,7 +32,7 @@ use toml_edit::{ImDocument, Item, Key, TableLike, Value};
 use crate::diagnostic::Severity;
 use crate::model::Language;
 use crate::reader::Reader;
-use crate::rules::selection::{did_you_mean, Choice, RuleSelector, RuleSet};
+use crate::rules::selection::{nearest, Choice, RuleSelector, RuleSet};
 
 /// The names a settings file may have, in order of preference within one folder.
 pub const FILE_NAMES: [&str; 2] = ["ekb.toml", ".ekb.toml"];
@@ -398,13 +398,12 @@ impl Parser<'_> {
             .map(|(name, at)| {
                 crate::present::language::parse(name).ok_or_else(|| {
                     let names = ["english", "isiZulu", "kinyarwanda"];
-                    self.error(
-                        at,
-                        &format!(
-                            "`{name}` is no language of the knowledge base{}",
-                            did_you_mean(name, names.into_iter())
-                        ),
-                    )
+                    let hint = match nearest(name, names.into_iter()) {
+                        Some(near) => format!("; did you mean `{near}`?"),
+                        None => format!("; the languages are {}", names.join(", ")),
+                    };
+                    let message = format!("`{name}` is no language of the knowledge base{hint}");
+                    self.error(at, &message)
                 })
             })
             .collect::<Result<_, _>>()?;
@@ -473,9 +472,9 @@ impl Parser<'_> {
     }
 
     fn unknown_key(&self, key: &Key, table: &str, known: &[&str]) -> String {
-        let suggestion = match did_you_mean(key.get(), known.iter().copied()) {
-            suggestion if suggestion.starts_with("; did you mean") => suggestion,
-            _ => format!(
+        let suggestion = match nearest(key.get(), known.iter().copied()) {
+            Some(near) => format!("; did you mean `{near}`?"),
+            None => format!(
                 "; the keys are {}",
                 known
                     .iter()

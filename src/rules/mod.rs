@@ -165,6 +165,37 @@ pub fn by_name(name: &str) -> Option<&'static Rule> {
     ALL.iter().copied().find(|rule| rule.name == name)
 }
 
+/// The rule a person means by `query` (`ekb explain`): its name in any case, or a prefix
+/// of only one rule's name (`untranslated`); else why none, with the nearest name.
+pub fn lookup(query: &str) -> Result<&'static Rule, String> {
+    let lower = query.to_lowercase();
+    if let Some(rule) = by_name(&lower) {
+        return Ok(rule);
+    }
+    let starting: Vec<&'static Rule> = ALL
+        .iter()
+        .copied()
+        .filter(|rule| !lower.is_empty() && rule.name.starts_with(&lower))
+        .collect();
+    match starting.as_slice() {
+        [one] => Ok(one),
+        [] => Err(
+            match selection::nearest(query, ALL.iter().map(|rule| rule.name)) {
+                Some(name) => format!("no rule named `{query}`; did you mean `{name}`?"),
+                None => format!("no rule named `{query}`; `ekb rules` lists them"),
+            },
+        ),
+        several => {
+            let names: Vec<&str> = several.iter().map(|rule| rule.name).collect();
+            Err(format!(
+                "`{query}` starts the names of {} rules ({}); give more of the name",
+                names.len(),
+                names.join(", ")
+            ))
+        }
+    }
+}
+
 /// Where `rule` is in [`ALL`] (a rule's identity is its address: rules are statics).
 pub fn index_of(rule: &Rule) -> usize {
     ALL.iter()

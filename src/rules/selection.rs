@@ -32,10 +32,11 @@ impl RuleSelector {
         if let Some(category) = categories().into_iter().find(|c| c.name() == text) {
             return Ok(RuleSelector::Category(category));
         }
-        Err(format!(
-            "`{text}` is no rule or category{}",
-            did_you_mean(text, all_names())
-        ))
+        let hint = match nearest(text, all_names()) {
+            Some(name) => format!("did you mean `{name}`?"),
+            None => "`ekb rules` lists the rules and their categories".to_string(),
+        };
+        Err(format!("`{text}` is no rule or category; {hint}"))
     }
 
     pub fn name(self) -> &'static str {
@@ -82,19 +83,15 @@ fn all_names() -> impl Iterator<Item = &'static str> {
     ALL.iter().map(|rule| rule.name).chain(categories)
 }
 
-/// `; did you mean `key-case`?` for the name of `known` nearest to `text` (ignoring case),
-/// or nothing when none is near: then it is no typo but some other word.
-pub fn did_you_mean<'a>(text: &str, known: impl Iterator<Item = &'a str>) -> String {
+/// The name of `known` nearest to `text` (ignoring case), to suggest; `None` when none is
+/// near: then `text` is no typo but some other word.
+pub fn nearest<'a>(text: &str, known: impl Iterator<Item = &'a str>) -> Option<&'a str> {
     let lower = text.to_lowercase();
-    let nearest = known
-        .map(|name| (strsim::levenshtein(&lower, name), name))
-        .min_by_key(|&(distance, _)| distance);
-    match nearest {
-        Some((distance, name)) if distance <= (name.len() / 3).max(2) => {
-            format!("; did you mean `{name}`?")
-        }
-        _ => "; `ekb rules` lists the rules and their categories".to_string(),
-    }
+    known
+        .map(|name| (strsim::levenshtein(&lower, &name.to_lowercase()), name))
+        .min_by_key(|&(distance, _)| distance)
+        .filter(|&(distance, name)| distance <= (name.len() / 3).max(2))
+        .map(|(_, name)| name)
 }
 
 /// One layer of choices: the settings file's or the command line's.
