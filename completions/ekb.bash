@@ -333,7 +333,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__fix)
-            opts="-v -q -h -V --diff --dialect --config --color --verbose --reader --quiet --settings --isolated --help --version"
+            opts="-v -q -h -V --diff --dialect --unsafe-fixes --select --extend-select --ignore --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -341,6 +341,18 @@ _ekb() {
             case "${prev}" in
                 --dialect)
                     COMPREPLY=($(compgen -W "seed current" -- "${cur}"))
+                    return 0
+                    ;;
+                --select)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --extend-select)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ignore)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --config)

@@ -192,11 +192,15 @@ set edit:completion:arg-completer[ekb] = {|@words|
         }
         &'ekb;fix'= {
             cand --dialect 'Migrate to this dialect (`current`: robotLocation becomes robotLocationPose; `seed`: the reverse)'
+            cand --select 'Run only these rules or categories (comma-separated), instead of those ekb.toml selects'
+            cand --extend-select 'Run these rules or categories as well'
+            cand --ignore 'Do not run these rules or categories'
             cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
             cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
             cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
             cand --settings 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file''s folder or above'
             cand --diff 'Write nothing; print a diff and exit 1 if anything would change'
+            cand --unsafe-fixes 'Apply the unsafe fixes too, which guess what was meant: a dash before a number becomes a minus, a decimal comma a point, a file that is not UTF-8 is read as Latin-1'
             cand -v 'Print what is read, as it is read, on standard error'
             cand --verbose 'Print what is read, as it is read, on standard error'
             cand -q 'Print only findings and errors, no summary'

@@ -212,6 +212,9 @@ complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s h -l help -d 'Print help
 complete -c ekb -n "__fish_ekb_using_subcommand fmt" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -l dialect -d 'Migrate to this dialect (`current`: robotLocation becomes robotLocationPose; `seed`: the reverse)' -r -f -a "seed\t'The document\'s dialect (v1.1): `robotLocation`'
 current\t'The robot\'s current dialect: `robotLocationPose`, `culturalKnowledge`, `gestureArm`'"
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -l select -d 'Run only these rules or categories (comma-separated), instead of those ekb.toml selects' -r
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -l extend-select -d 'Run these rules or categories as well' -r
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -l ignore -d 'Do not run these rules or categories' -r
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
@@ -223,6 +226,7 @@ complete -c ekb -n "__fish_ekb_using_subcommand fix" -l reader -d 'The version o
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -l diff -d 'Write nothing; print a diff and exit 1 if anything would change'
+complete -c ekb -n "__fish_ekb_using_subcommand fix" -l unsafe-fixes -d 'Apply the unsafe fixes too, which guess what was meant: a dash before a number becomes a minus, a decimal comma a point, a file that is not UTF-8 is read as Latin-1'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand fix" -l isolated -d 'Use no settings file: every rule, at its own severity'

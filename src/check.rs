@@ -9,7 +9,7 @@
 //! output stays bounded whatever the input. Of a rule that `ekb fix` can fix, up to
 //! [`MAX_KEPT_PER_RULE`] are kept, so that one run of `fix` applies that many fixes.
 
-use crate::diagnostic::{Diagnostic, Summary};
+use crate::diagnostic::{Diagnostic, RuleCount, Summary};
 use crate::model::build::{build, Options};
 use crate::model::KnowledgeBase;
 use crate::reader::Reader;
@@ -70,7 +70,13 @@ impl Checked<'_> {
         for &(rule, count) in &self.counts.0 {
             let not_kept = count.saturating_sub(kept.get(rule));
             if not_kept > 0 {
-                summary.count(rule, self.rules.severity(rule), not_kept, 0);
+                summary.count(RuleCount {
+                    rule,
+                    severity: self.rules.severity(rule),
+                    count: not_kept,
+                    fixable: 0,
+                    unsafe_fixable: 0,
+                });
             }
         }
         summary
@@ -133,8 +139,21 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
 }
 
 /// Builds the model of `source` and runs the rules of `rules` on it, at their severities;
-/// the file's suppression comments silence what they name.
+/// the file's suppression comments silence what they name. A fix that the robot's reader
+/// would misread the result of is not offered ([`verify_fixes`]).
 pub fn check_with<'a>(source: &'a SourceFile, options: &Options, rules: &RuleSet) -> Checked<'a> {
+    let mut checked = check_unverified(source, options, rules);
+    verify_fixes(
+        &mut checked.diagnostics,
+        source.text(),
+        options,
+        checked.reader,
+    );
+    checked
+}
+
+/// [`check_with`], its fixes as the rules made them.
+fn check_unverified<'a>(source: &'a SourceFile, options: &Options, rules: &RuleSet) -> Checked<'a> {
     let mut out = Diagnostics::default();
     structure::invalid_utf8::check(source, &mut out);
     compat::compat_bom::check(source.text(), &mut out);
@@ -204,6 +223,80 @@ impl<'a> Checked<'a> {
             rules: rules.clone(),
         }
     }
+}
+
+/// Drops each fix that guesses (an unsafe one, or one that turns a Unicode space into a
+/// plain one) whose line, once fixed, the robot's `reader` would still misread where the
+/// fix changed it: the fixed line, checked alone, has an error there about how the robot
+/// reads it (`-2.5` as a pose's first number loses its minus on the robot).
+fn verify_fixes(diagnostics: &mut [Diagnostic], text: &str, options: &Options, reader: Reader) {
+    let guesses = |d: &Diagnostic| {
+        let unicode_space = &structure::unicode_space::UNICODE_SPACE;
+        d.fix
+            .as_ref()
+            .is_some_and(|fix| !fix.is_safe() || std::ptr::eq(d.rule, unicode_space))
+    };
+    let options = Options {
+        reader: Some(reader),
+        verbose: false,
+        ..*options
+    };
+    for diagnostic in diagnostics.iter_mut().filter(|d| guesses(d)) {
+        let fix = diagnostic.fix.as_ref().expect("a fix");
+        if misread_once_fixed(text, &fix.edits, &options) {
+            diagnostic.fix = None;
+        }
+    }
+}
+
+/// Whether the line of `edits`, once they are applied, has an error about how the robot
+/// reads it where they changed it. Edits over more than one line are not checked.
+fn misread_once_fixed(text: &str, edits: &[crate::diagnostic::Edit], options: &Options) -> bool {
+    let (Some(first), Some(last)) = (
+        edits.iter().map(|e| e.span.start as usize).min(),
+        edits.iter().map(|e| e.span.end as usize).max(),
+    ) else {
+        return false;
+    };
+    if text[first..last].contains('\n') {
+        return false;
+    }
+    let line_start = text[..first].rfind('\n').map_or(0, |newline| newline + 1);
+    let line_end = text[last..]
+        .find('\n')
+        .map_or(text.len(), |at| last + at + 1);
+    let mut sorted: Vec<&crate::diagnostic::Edit> = edits.iter().collect();
+    sorted.sort_by_key(|edit| edit.span.start);
+    let (mut line, mut changed, mut at) = (String::new(), Vec::new(), line_start);
+    for edit in sorted {
+        line.push_str(&text[at..edit.span.start as usize]);
+        let start = line.len();
+        line.push_str(&edit.replacement);
+        changed.push(crate::syntax::Span::new(start, line.len().max(start + 1)));
+        at = edit.span.end as usize;
+    }
+    line.push_str(&text[at..line_end]);
+    let fixed = SourceFile::from_bytes("the fixed line", line.into_bytes());
+    let about_reading = |d: &Diagnostic| {
+        d.rule.category == rules::Category::Compat
+            || [
+                "invalid-number",
+                "wrong-arity",
+                "unicode-space",
+                "unknown-key",
+                "invalid-id",
+            ]
+            .contains(&d.rule.name)
+    };
+    let overlaps = |d: &Diagnostic| {
+        changed
+            .iter()
+            .any(|span| d.span.start < span.end && span.start < d.span.end.max(d.span.start + 1))
+    };
+    check_unverified(&fixed, options, &RuleSet::default())
+        .diagnostics
+        .iter()
+        .any(|d| d.severity() == crate::Severity::Error && about_reading(d) && overlaps(d))
 }
 
 /// Where the rules report their findings: it keeps the first [`kept_at_most`] of each

@@ -54,11 +54,29 @@ impl Edit {
     }
 }
 
+/// Whether `ekb fix` applies a fix on its own (ruff's split).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Applicability {
+    /// It keeps what the file means: `ekb fix` applies it.
+    Safe,
+    /// It guesses what was meant (a dash was a minus, a comma a decimal point): applied only
+    /// with `ekb fix --unsafe-fixes`.
+    Unsafe,
+}
+
 /// A machine-applicable fix: edits that never overlap one another.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Fix {
     pub message: String,
     pub edits: Vec<Edit>,
+    pub applicability: Applicability,
+}
+
+impl Fix {
+    pub fn is_safe(&self) -> bool {
+        self.applicability == Applicability::Safe
+    }
 }
 
 /// A secondary place a finding points at (e.g. the earlier of two duplicate lines).
@@ -125,8 +143,18 @@ impl Diagnostic {
         self.fix = Some(Fix {
             message: message.into(),
             edits,
+            applicability: Applicability::Safe,
         });
         self
+    }
+
+    /// A fix that guesses what was meant ([`Applicability::Unsafe`]).
+    pub fn with_unsafe_fix(self, message: impl Into<String>, edits: Vec<Edit>) -> Diagnostic {
+        let mut diagnostic = self.with_fix(message, edits);
+        if let Some(fix) = &mut diagnostic.fix {
+            fix.applicability = Applicability::Unsafe;
+        }
+        diagnostic
     }
 
     pub fn with_label(mut self, span: Span, message: impl Into<String>) -> Diagnostic {
@@ -147,6 +175,9 @@ pub struct Summary {
     pub infos: usize,
     #[serde(skip)]
     pub fixable: usize,
+    /// How many only `ekb fix --unsafe-fixes` can fix.
+    #[serde(skip)]
+    pub unsafe_fixable: usize,
     /// How many findings of each rule, at each severity, in catalogue order.
     #[serde(skip)]
     pub by_rule: Vec<RuleCount>,
@@ -163,6 +194,8 @@ pub struct RuleCount {
     pub count: usize,
     /// How many of them `ekb fix` can fix.
     pub fixable: usize,
+    /// How many of them only `ekb fix --unsafe-fixes` can fix.
+    pub unsafe_fixable: usize,
 }
 
 /// Findings counted but not shown: those less grave than `level`.
@@ -173,27 +206,26 @@ pub struct Hidden {
 }
 
 impl Summary {
-    /// Counts `count` findings of `rule` at `severity`, `fixable` of them fixable.
-    pub fn count(&mut self, rule: &'static Rule, severity: Severity, count: usize, fixable: usize) {
-        match severity {
-            Severity::Error => self.errors += count,
-            Severity::Warning => self.warnings += count,
-            Severity::Info => self.infos += count,
+    /// Counts the findings of `counted`'s rule at its severity.
+    pub fn count(&mut self, counted: RuleCount) {
+        match counted.severity {
+            Severity::Error => self.errors += counted.count,
+            Severity::Warning => self.warnings += counted.count,
+            Severity::Info => self.infos += counted.count,
         }
-        self.fixable += fixable;
-        let same = |c: &&mut RuleCount| std::ptr::eq(c.rule, rule) && c.severity == severity;
+        self.fixable += counted.fixable;
+        self.unsafe_fixable += counted.unsafe_fixable;
+        let same = |c: &&mut RuleCount| {
+            std::ptr::eq(c.rule, counted.rule) && c.severity == counted.severity
+        };
         match self.by_rule.iter_mut().find(same) {
             Some(known) => {
-                known.count += count;
-                known.fixable += fixable;
+                known.count += counted.count;
+                known.fixable += counted.fixable;
+                known.unsafe_fixable += counted.unsafe_fixable;
             }
             None => {
-                self.by_rule.push(RuleCount {
-                    rule,
-                    severity,
-                    count,
-                    fixable,
-                });
+                self.by_rule.push(counted);
                 let place = |c: &RuleCount| crate::rules::index_of(c.rule);
                 self.by_rule.sort_by_key(|c| (place(c), c.severity));
             }
@@ -201,15 +233,21 @@ impl Summary {
     }
 
     pub fn add(&mut self, diagnostic: &Diagnostic) {
-        let fixable = usize::from(diagnostic.fix.is_some());
-        self.count(diagnostic.rule, diagnostic.severity(), 1, fixable);
+        let safe = diagnostic.fix.as_ref().map(Fix::is_safe);
+        self.count(RuleCount {
+            rule: diagnostic.rule,
+            severity: diagnostic.severity(),
+            count: 1,
+            fixable: usize::from(safe == Some(true)),
+            unsafe_fixable: usize::from(safe == Some(false)),
+        });
     }
 
     /// Adds the counts of another file (or files).
     pub fn merge(&mut self, other: &Summary) {
         self.files += other.files;
-        for c in &other.by_rule {
-            self.count(c.rule, c.severity, c.count, c.fixable);
+        for &counted in &other.by_rule {
+            self.count(counted);
         }
     }
 
@@ -273,6 +311,10 @@ impl Summary {
         let mut notes = Vec::new();
         if self.fixable > 0 {
             notes.push(format!("{} fixable with ekb fix", self.fixable));
+        }
+        if self.unsafe_fixable > 0 {
+            let n = self.unsafe_fixable;
+            notes.push(format!("{n} with ekb fix --unsafe-fixes"));
         }
         if let Some(hidden) = self.hidden.filter(|hidden| hidden.count > 0) {
             let level = hidden.level.name();

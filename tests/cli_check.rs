@@ -304,7 +304,9 @@ fn json_has_the_exact_shape_of_the_spec() {
                 "edits": [{
                     "line": 34, "column": 1, "end_line": 34, "end_column": 26,
                     "replacement": "postGestureMessageEnglish"
-                }]
+                }],
+                // ekb's addition to SPEC §5, as ruff's: `unsafe` only with --unsafe-fixes.
+                "applicability": "safe"
             }
         })
     );

@@ -128,11 +128,13 @@ fn assert_rule(name: &str, options: Options, expected: &[(u32, u32)]) {
     );
     for finding in of_rule(&bad, name) {
         assert_eq!(finding.diagnostic.severity(), rule.severity);
-        assert_eq!(
-            finding.diagnostic.fix.is_some(),
-            rule.fixable,
-            "{finding:?}"
-        );
+        // `fixable` is about the fixes `ekb fix` applies: the safe ones.
+        let safe_fix = finding
+            .diagnostic
+            .fix
+            .as_ref()
+            .is_some_and(|fix| fix.is_safe());
+        assert_eq!(safe_fix, rule.fixable, "{finding:?}");
         let message = &finding.diagnostic.message;
         assert!(
             message.contains("robot") || message.contains(" will "),
@@ -234,6 +236,7 @@ rule_tests! {
     mixed_dialect: "mixed-dialect" => [(2, 1)];
     legacy_key: "legacy-key" [pinned(Dialect::Current)] => [(2, 1), (12, 1)];
     control_character: "control-character" => [(5, 43), (13, 39), (18, 48), (21, 49)];
+    unicode_space: "unicode-space" => [(1, 30), (14, 36), (17, 32), (25, 22)];
     // Tour
     tour_missing: "tour-missing" => [(1, 1)];
     tour_duplicate_spec: "tour-duplicate-spec" => [(25, 19)];
@@ -315,6 +318,7 @@ fn the_catalogue_is_the_specified_one() {
         ("mixed-dialect", Warning, false),
         ("legacy-key", Error, true),
         ("control-character", Error, false),
+        ("unicode-space", Error, true),
         ("not-an-environment-knowledge-base", Error, false),
         ("unused-suppression", Warning, true),
         ("tour-missing", Error, false),
@@ -732,6 +736,39 @@ fn blanks_within_a_crlf_ending_are_its_own_to_remove() {
 #[test]
 fn compat_no_final_newline_fix() {
     assert_fix_gives_good("compat-no-final-newline", Options::default());
+}
+
+#[test]
+fn invalid_number_offers_an_unsafe_fix_only_where_the_robot_reads_the_result_right() {
+    let text = "robotLocationPose 1 2,5 \u{2212}3 90\n\
+                gestureTarget 1 \u{2013}1.5 0 0.8\n\
+                robotLocationPose 2 abc 1 2\n";
+    let source = SourceFile::from_bytes("t", text.as_bytes().to_vec());
+    let all = findings_of(&source, reader(Reader::V2025_06));
+    let fixes: Vec<(u32, u32, Option<String>)> = of_rule(&all, "invalid-number")
+        .iter()
+        .map(|f| {
+            let fix = f.diagnostic.fix.as_ref();
+            assert!(fix.is_none_or(|fix| !fix.is_safe()), "unsafe: {fix:?}");
+            let replacement = fix.map(|fix| fix.edits[0].replacement.clone());
+            (f.line, f.column, replacement)
+        })
+        .collect();
+    assert_eq!(
+        fixes,
+        [
+            (1, 21, Some("2.5".to_string())),
+            (1, 25, Some("-3".to_string())),
+            // `-1.5` as the first number loses its minus on the robot: no fix.
+            (2, 17, None),
+            (3, 21, None),
+        ]
+    );
+}
+
+#[test]
+fn unicode_space_fix() {
+    assert_fix_gives_good("unicode-space", Options::default());
 }
 
 #[test]

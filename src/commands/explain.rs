@@ -16,6 +16,8 @@ pub fn run(args: &Args, _context: &Context) -> CommandResult {
     let rule = rules::lookup(&args.rule).map_err(CommandError::Failed)?;
     let fix = if rule.fixable {
         "Fix: `ekb fix` repairs it."
+    } else if rule.doc.contains("## Fix (unsafe)") {
+        "Fix: only a guess, applied by `ekb fix --unsafe-fixes` (see below)."
     } else {
         "Fix: none automatic; edit the file."
     };

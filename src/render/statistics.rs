@@ -6,7 +6,7 @@
 //! key-case 1 (fixable)
 //! ```
 //!
-//! `--format json` gives the same as a JSON array of `{rule, severity, count, fixable}`.
+//! `--format json` gives the same as a JSON array of `{rule, severity, count, fixable, unsafe_fixable}`.
 
 use std::io::{self, Write};
 
@@ -24,6 +24,8 @@ struct RuleStatistics {
     count: usize,
     /// How many `ekb fix` can fix.
     fixable: usize,
+    /// How many only `ekb fix --unsafe-fixes` can fix.
+    unsafe_fixable: usize,
 }
 
 /// Writes the statistics of the rules with findings at or above `level`.
@@ -40,6 +42,7 @@ pub fn render(
             Some(known) => {
                 known.count += count.count;
                 known.fixable += count.fixable;
+                known.unsafe_fixable += count.unsafe_fixable;
                 known.severity = known.severity.min(count.severity);
             }
             None => rules.push(RuleStatistics {
@@ -47,6 +50,7 @@ pub fn render(
                 severity: count.severity,
                 count: count.count,
                 fixable: count.fixable,
+                unsafe_fixable: count.unsafe_fixable,
             }),
         }
     }
@@ -55,9 +59,10 @@ pub fn render(
         return super::safe_json::write(&rules, out);
     }
     for rule in &rules {
-        let fixable = match rule.fixable {
-            0 => "",
-            n if n == rule.count => " (fixable)",
+        let fixable = match (rule.fixable, rule.unsafe_fixable) {
+            (0, 0) => "",
+            (n, 0) if n == rule.count => " (fixable)",
+            (0, n) if n == rule.count => " (unsafe fix available)",
             _ => " (some fixable)",
         };
         writeln!(out, "{} {}{fixable}", rule.rule, rule.count)?;

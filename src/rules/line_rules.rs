@@ -46,6 +46,7 @@ impl LineFindings for LineRules {
     fn line(&mut self, line: &Line, text: &str) {
         let crlf_ending = compat::compat_crlf::ending(line, text);
         content::trailing_whitespace::check(line, crlf_ending, text, &mut self.found);
+        structure::unicode_space::check(line, text, &mut self.found);
         self.crlf_endings.extend(crlf_ending);
     }
 

@@ -122,6 +122,7 @@ pub static ALL: &[&Rule] = &[
     &structure::mixed_dialect::MIXED_DIALECT,
     &structure::legacy_key::LEGACY_KEY,
     &structure::control_character::CONTROL_CHARACTER,
+    &structure::unicode_space::UNICODE_SPACE,
     &structure::not_a_knowledge_base::NOT_AN_ENVIRONMENT_KNOWLEDGE_BASE,
     &structure::unused_suppression::UNUSED_SUPPRESSION,
     &tour::tour_missing::TOUR_MISSING,
