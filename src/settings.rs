@@ -143,10 +143,12 @@ impl Settings {
         }
     }
 
-    /// The settings file that applies to `file`, if any.
+    /// The settings file that applies to `file`, if any; relative to the current folder if
+    /// it is in it (as messages name it).
     pub fn find(file: &Path) -> Result<Option<PathBuf>, String> {
+        let current = std::env::current_dir().map_err(|e| format!("cannot find ekb.toml: {e}"))?;
         let start = if file == Path::new("-") {
-            std::env::current_dir().map_err(|e| format!("cannot find ekb.toml: {e}"))?
+            current.clone()
         } else {
             std::path::absolute(file)
                 .map_err(|e| format!("cannot find ekb.toml: {e}"))?
@@ -154,11 +156,15 @@ impl Settings {
                 .map(Path::to_path_buf)
                 .unwrap_or_default()
         };
-        Ok(start.ancestors().find_map(|folder| {
+        let found = start.ancestors().find_map(|folder| {
             FILE_NAMES
                 .iter()
                 .map(|name| folder.join(name))
                 .find(|path| path.is_file())
+        });
+        Ok(found.map(|path| match path.strip_prefix(&current) {
+            Ok(relative) => relative.to_path_buf(),
+            Err(_) => path,
         }))
     }
 

@@ -440,6 +440,40 @@ mod tests {
     }
 
     #[test]
+    fn a_category_silences_its_rules_and_an_off_rule_is_never_unused() {
+        use crate::model::build::Options;
+        use crate::rules::selection::Choice;
+        let text = "# ekb: ignore[content]\n\
+                    preGestureMessageEnglish 1 the the  \n\
+                    # ekb: ignore[tour-missing, key-case]\n\
+                    preGestureMessageIsiZulu 1 Sawubona\n";
+        let source = crate::SourceFile::from_bytes("t", text.into());
+        let names = |rules: &RuleSet| -> Vec<&str> {
+            let checked = crate::check::check_with(&source, &Options::default(), rules);
+            checked
+                .diagnostics
+                .iter()
+                .map(|d| d.rule.name)
+                .filter(|n| *n != "missing-field")
+                .collect()
+        };
+        // repeated-word and trailing-whitespace are silenced; tour-missing is at line 1,
+        // not below the second comment, and key-case finds nothing there.
+        assert_eq!(
+            names(&RuleSet::default()),
+            ["tour-missing", "unused-suppression"]
+        );
+        let without_tour = Choice {
+            ignore: vec![
+                RuleSelector::parse("tour").unwrap(),
+                RuleSelector::parse("key-case").unwrap(),
+            ],
+            ..Choice::default()
+        };
+        assert!(names(&RuleSet::chosen(&[&without_tour])).is_empty());
+    }
+
+    #[test]
     fn ignores_are_added_above_lines_and_merged_into_those_there() {
         let rule = |name| crate::rules::by_name(name).unwrap();
         let at = |name, start: usize| Diagnostic::new(rule(name), Span::new(start, start + 1), "x");

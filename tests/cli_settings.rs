@@ -248,11 +248,8 @@ fn a_misspelt_rule_in_the_settings_exits_2_naming_the_line() {
     let toml = dir.path().join("ekb.toml");
     assert_eq!(
         run.stderr,
-        format!(
-            "ekb: error: settings {}:3:11: `untranslated-mesage` is no rule or category; did you \
-             mean `untranslated-message`? (in `ignore`)\n",
-            toml.display()
-        )
+        "ekb: error: settings ekb.toml:3:11: `untranslated-mesage` is no rule or category; did \
+         you mean `untranslated-message`? (in `ignore`)\n"
     );
     let run = ekb(dir.path(), &["check", "--isolated", "data/kb.dat"]);
     assert_eq!(run.code, 1, "--isolated reads no settings");
@@ -313,7 +310,7 @@ fn settings_shows_each_value_and_where_it_comes_from() {
     );
     let run = ekb(dir.path(), &["settings", "--ignore", "tour", "data/kb.dat"]);
     assert_eq!(run.code, 0, "{}", run.stderr);
-    let toml = dir.path().join("ekb.toml").display().to_string();
+    let toml = "ekb.toml";
     for expected in [
         format!("reader = \"2025-06\"  # {toml}:1"),
         "select = [\"structure\", \"tour\", \"content\", \"compat\"]  # default: every rule".into(),
