@@ -183,7 +183,11 @@ pub fn apply(
     dropped: impl Fn(&'static Rule) -> usize,
 ) -> Suppressed {
     let mut suppressed = Suppressed::default();
-    if memchr::memmem::find(text.as_bytes(), MARK.as_bytes()).is_none() {
+    // No `#`, no comment: that one byte is found faster than the mark.
+    let bytes = text.as_bytes();
+    if memchr::memchr(b'#', bytes).is_none()
+        || memchr::memmem::find(bytes, MARK.as_bytes()).is_none()
+    {
         return suppressed;
     }
     let (suppressions, malformed) = find(text);

@@ -36,6 +36,14 @@ pub fn is_unicode_space(ch: char) -> bool {
     ch.is_whitespace() && !ch.is_ascii()
 }
 
+/// Whether `text` has a byte that may start a Unicode space in UTF-8 (U+0085 and U+00A0
+/// start with 0xC2, U+1680 with 0xE1, U+2000 to U+205F with 0xE2, U+3000 with 0xE3): most
+/// files have none, and one pass over the bytes costs less than a look at every line.
+pub fn possible_in(text: &str) -> bool {
+    let bytes = text.as_bytes();
+    memchr::memchr3(0xC2, 0xE2, 0xE3, bytes).is_some() || memchr::memchr(0xE1, bytes).is_some()
+}
+
 /// How a finding names `space`: `a no-break space (U+00A0)`.
 pub fn name(space: char) -> String {
     match space {
@@ -51,7 +59,7 @@ pub fn check(line: &Line, text: &str, out: &mut Diagnostics) {
     }
     let content = line.content();
     let written = content.text(text);
-    if written.is_ascii() {
+    if written.is_ascii() || text_past_ascii_fields(written) {
         return;
     }
     let spaces = structural_spaces(written);
@@ -83,6 +91,25 @@ pub fn check(line: &Line, text: &str, out: &mut Diagnostics) {
         .with_help("type a plain space instead (`ekb fix` does)")
         .with_fix("replace with a plain space", edits),
     );
+}
+
+/// Whether `content` is a text line whose key, id and the blanks around them come before its
+/// first non-ASCII byte: then its Unicode spaces, if any, are text. (Most lines with a
+/// non-ASCII letter are messages; this spares them [`structural_spaces`].)
+fn text_past_ascii_fields(content: &str) -> bool {
+    let first_wide = content.bytes().position(|b| !b.is_ascii());
+    let ascii = &content[..first_wide.unwrap_or(content.len())];
+    let blanks = [' ', '\t'];
+    let fields = ascii.trim_start_matches(blanks);
+    let Some((key, rest)) = fields.split_once(blanks) else {
+        return false;
+    };
+    let is_text = Key::from_name(key).is_some_and(|key| key.value_kind() == ValueKind::Text);
+    let value = rest
+        .trim_start_matches(blanks)
+        .split_once(blanks)
+        .map(|(_, value)| value.trim_start_matches(blanks));
+    is_text && value.is_some_and(|value| !value.is_empty())
 }
 
 /// The Unicode spaces of an entry line's `content` that stand between its fields, by byte
@@ -140,5 +167,16 @@ mod tests {
         );
         assert_eq!(spaces("tourSpecification 2\u{A0}1 2"), [19]);
         assert!(spaces("preGestureMessageEnglish 1 Hi\u{A0}there").is_empty());
+        let fast = text_past_ascii_fields;
+        assert!(fast("preGestureMessageEnglish 1 Hi\u{A0}there"));
+        assert!(!fast("preGestureMessageEnglish 1\u{A0}Hi there"));
+        assert!(!fast("robotLocationPose 1 2.0\u{A0}7.8 90"));
+        assert!(!fast("robotLocationDescription\u{A0}1 Entrance"));
+        for space in [
+            '\u{85}', '\u{A0}', '\u{1680}', '\u{2003}', '\u{202F}', '\u{3000}',
+        ] {
+            assert!(possible_in(&format!("a{space}b")), "{space:?}");
+        }
+        assert!(!possible_in("Caf\u{E9} \u{1F600}"));
     }
 }
