@@ -61,6 +61,9 @@ _ekb() {
             ekb,set)
                 cmd="ekb__subcmd__set"
                 ;;
+            ekb,settings)
+                cmd="ekb__subcmd__settings"
+                ;;
             ekb,show)
                 cmd="ekb__subcmd__show"
                 ;;
@@ -115,6 +118,9 @@ _ekb() {
             ekb__subcmd__help,set)
                 cmd="ekb__subcmd__help__subcmd__set"
                 ;;
+            ekb__subcmd__help,settings)
+                cmd="ekb__subcmd__help__subcmd__settings"
+                ;;
             ekb__subcmd__help,show)
                 cmd="ekb__subcmd__help__subcmd__show"
                 ;;
@@ -164,7 +170,7 @@ _ekb() {
 
     case "${cmd}" in
         ekb)
-            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp help"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --settings --isolated --help --version check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -182,6 +188,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -190,7 +200,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__check)
-            opts="-v -q -h -V --format --deny-warnings --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --format --deny-warnings --select --extend-select --ignore --level --statistics --exit-zero --output-file --add-ignore --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -198,6 +208,26 @@ _ekb() {
             case "${prev}" in
                 --format)
                     COMPREPLY=($(compgen -W "human concise json github sarif" -- "${cur}"))
+                    return 0
+                    ;;
+                --select)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --extend-select)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ignore)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --level)
+                    COMPREPLY=($(compgen -W "error warning info" -- "${cur}"))
+                    return 0
+                    ;;
+                --output-file)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --config)
@@ -210,6 +240,10 @@ _ekb() {
                     ;;
                 --reader)
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -220,7 +254,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__completions)
-            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version bash elvish fish powershell zsh"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --settings --isolated --help --version bash elvish fish powershell zsh"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -238,6 +272,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -246,7 +284,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__diff)
-            opts="-v -q -h -V --format --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --format --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -268,6 +306,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -276,7 +318,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__explain)
-            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -294,6 +336,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -302,7 +348,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__export)
-            opts="-o -v -q -h -V --format --lang --output --allow-errors --schema --as-loaded --config --color --verbose --reader --quiet --help --version"
+            opts="-o -v -q -h -V --format --lang --output --allow-errors --schema --as-loaded --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -336,6 +382,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -344,7 +394,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__fix)
-            opts="-v -q -h -V --diff --dialect --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --diff --dialect --unsafe-fixes --select --extend-select --ignore --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -352,6 +402,18 @@ _ekb() {
             case "${prev}" in
                 --dialect)
                     COMPREPLY=($(compgen -W "seed current" -- "${cur}"))
+                    return 0
+                    ;;
+                --select)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --extend-select)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ignore)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --config)
@@ -364,6 +426,10 @@ _ekb() {
                     ;;
                 --reader)
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -374,7 +440,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__fmt)
-            opts="-v -q -h -V --check --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --check --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -392,6 +458,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -400,7 +470,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__help)
-            opts="check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp help"
+            opts="check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -665,6 +735,20 @@ _ekb() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        ekb__subcmd__help__subcmd__settings)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         ekb__subcmd__help__subcmd__show)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
@@ -708,7 +792,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__import)
-            opts="-o -v -q -h -V --output --po --lang --accept-stale --force --diff --config --color --verbose --reader --quiet --help --version"
+            opts="-o -v -q -h -V --output --po --lang --accept-stale --force --diff --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -742,6 +826,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -750,7 +838,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__locations)
-            opts="-v -q -h -V --format --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --format --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -772,6 +860,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -780,7 +872,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__lsp)
-            opts="-v -q -h -V --stdio --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --stdio --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -796,6 +888,10 @@ _ekb() {
                     ;;
                 --reader)
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -806,7 +902,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__man)
-            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -822,6 +918,10 @@ _ekb() {
                     ;;
                 --reader)
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -832,7 +932,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__mission)
-            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version check tree walk help"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --settings --isolated --help --version check tree walk help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -850,6 +950,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -858,7 +962,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__mission__subcmd__check)
-            opts="-v -q -h -V --config-dir --mission --culture-kb --culture-types --kb --format --deny-warnings --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --config-dir --mission --culture-kb --culture-types --kb --format --deny-warnings --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -898,6 +1002,10 @@ _ekb() {
                     ;;
                 --reader)
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -978,7 +1086,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__mission__subcmd__tree)
-            opts="-v -q -h -V --config-dir --mission --culture-kb --culture-types --kb --lang --format --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --config-dir --mission --culture-kb --culture-types --kb --lang --format --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1022,6 +1130,10 @@ _ekb() {
                     ;;
                 --reader)
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -1032,7 +1144,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__mission__subcmd__walk)
-            opts="-v -q -h -V --config-dir --mission --culture-kb --culture-types --kb --lang --format --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --config-dir --mission --culture-kb --culture-types --kb --lang --format --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1078,6 +1190,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -1086,7 +1202,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__rules)
-            opts="-v -q -h -V --markdown --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --markdown --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1102,6 +1218,10 @@ _ekb() {
                     ;;
                 --reader)
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -1112,7 +1232,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__set)
-            opts="-v -q -h -V --force --diff --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --force --diff --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1128,6 +1248,52 @@ _ekb() {
                     ;;
                 --reader)
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        ekb__subcmd__settings)
+            opts="-v -q -h -V --select --extend-select --ignore --config --color --verbose --reader --quiet --settings --isolated --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --select)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --extend-select)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ignore)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --color)
+                    COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
+                    return 0
+                    ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -1138,7 +1304,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__show)
-            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1156,6 +1322,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -1164,7 +1334,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__tour)
-            opts="-v -q -h -V --lang --format --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --lang --format --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1190,6 +1360,10 @@ _ekb() {
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
                     return 0
                     ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -1198,7 +1372,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__translations)
-            opts="-v -q -h -V --lang --format --fail-under --config --color --verbose --reader --quiet --help --version"
+            opts="-v -q -h -V --lang --format --fail-under --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1226,6 +1400,10 @@ _ekb() {
                     ;;
                 --reader)
                     COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)

@@ -9,12 +9,14 @@
 //! output stays bounded whatever the input. Of a rule that `ekb fix` can fix, up to
 //! [`MAX_KEPT_PER_RULE`] are kept, so that one run of `fix` applies that many fixes.
 
-use crate::diagnostic::{Diagnostic, Summary};
+use crate::diagnostic::{Diagnostic, RuleCount, Summary};
 use crate::model::build::{build, Options};
 use crate::model::KnowledgeBase;
 use crate::reader::Reader;
+use crate::rules::selection::RuleSet;
 use crate::rules::{self, compat, structure, Rule};
 use crate::source::SourceFile;
+use crate::suppression;
 
 /// The most findings of one rule shown for one file; the rest are summed up in a note.
 pub const MAX_SHOWN_PER_RULE: usize = 1000;
@@ -65,22 +67,32 @@ pub struct Checked<'a> {
     pub omitted: Vec<Diagnostic>,
     /// How many findings of each rule were reported, kept or not.
     counts: RuleCounts,
+    /// The rules that ran, and their severities.
+    rules: RuleSet,
 }
 
 impl Checked<'_> {
-    /// The counts of findings, including those not kept.
+    /// The counts of findings, including those not kept (counted at their rule's severity).
     pub fn summary(&self) -> Summary {
         let mut summary = Summary {
             files: 1,
             ..Summary::default()
         };
-        self.diagnostics.iter().for_each(|d| summary.add(d));
-        for (rule, count) in &self.counts.0 {
-            let dropped = count.saturating_sub(kept_at_most(rule));
-            match rule.severity {
-                crate::Severity::Error => summary.errors += dropped,
-                crate::Severity::Warning => summary.warnings += dropped,
-                crate::Severity::Info => summary.infos += dropped,
+        let mut kept = RuleCounts::default();
+        for diagnostic in &self.diagnostics {
+            summary.add(diagnostic);
+            kept.bump(diagnostic.rule);
+        }
+        for &(rule, count) in &self.counts.0 {
+            let not_kept = count.saturating_sub(kept.get(rule));
+            if not_kept > 0 {
+                summary.count(RuleCount {
+                    rule,
+                    severity: self.rules.severity(rule),
+                    count: not_kept,
+                    fixable: 0,
+                    unsafe_fixable: 0,
+                });
             }
         }
         summary
@@ -149,6 +161,25 @@ impl Checked<'_> {
 
 /// Builds the model of `source` and runs every rule on it.
 pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
+    check_with(source, options, &RuleSet::default())
+}
+
+/// Builds the model of `source` and runs the rules of `rules` on it, at their severities;
+/// the file's suppression comments silence what they name. A fix that the robot's reader
+/// would misread the result of is not offered ([`verify_fixes`]).
+pub fn check_with<'a>(source: &'a SourceFile, options: &Options, rules: &RuleSet) -> Checked<'a> {
+    let mut checked = check_unverified(source, options, rules);
+    verify_fixes(
+        &mut checked.diagnostics,
+        source.text(),
+        options,
+        checked.reader,
+    );
+    checked
+}
+
+/// [`check_with`], its fixes as the rules made them.
+fn check_unverified<'a>(source: &'a SourceFile, options: &Options, rules: &RuleSet) -> Checked<'a> {
     let mut out = Diagnostics::default();
     structure::invalid_utf8::check(source, &mut out);
     compat::compat_bom::check(source.text(), &mut out);
@@ -161,42 +192,146 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
         let reader = options
             .reader
             .unwrap_or(Reader::default_for(options.dialect));
-        return finish(source, FileKind::EnvironmentKnowledgeBase, reader, out);
+        let kind = FileKind::EnvironmentKnowledgeBase;
+        return finish(source, kind, KnowledgeBase::default(), reader, out, rules);
     }
     let kb = build(source.text(), options, &mut out);
     let reader = options
         .reader
         .unwrap_or_else(|| Reader::default_for(options.dialect.or(kb.dialect)));
     rules::check_model(&kb, source.text(), reader, &mut out);
-    Checked {
+    finish(
+        source,
+        FileKind::EnvironmentKnowledgeBase,
         kb,
-        ..finish(source, FileKind::EnvironmentKnowledgeBase, reader, out)
-    }
+        reader,
+        out,
+        rules,
+    )
 }
 
-/// A checked file of `kind` with the findings `out`, sorted, and no model of an
+/// A checked file of `kind`: the findings of `found` that `rules` chose and no suppression
+/// silenced, sorted, at the severities of `rules`. `kb` is empty unless the file is an
 /// environment knowledge base.
-pub fn finish(
-    source: &SourceFile,
+pub fn finish<'a>(
+    source: &'a SourceFile,
     kind: FileKind,
+    kb: KnowledgeBase<'a>,
     reader: Reader,
-    out: Diagnostics,
-) -> Checked<'_> {
+    found: Diagnostics,
+    rules: &RuleSet,
+) -> Checked<'a> {
     let Diagnostics {
         kept: mut diagnostics,
-        counts,
-    } = out;
+        mut counts,
+    } = found;
+    if !rules.is_default() {
+        diagnostics.retain(|d| rules.is_enabled(d.rule));
+        counts.0.retain(|(rule, _)| rules.is_enabled(rule));
+    }
     sort_by_position(&mut diagnostics);
+    let not_kept = |rule| counts.get(rule).saturating_sub(kept_at_most(rule));
+    let suppressed = suppression::apply(source.text(), &mut diagnostics, rules, not_kept);
+    for (rule, n) in suppressed.silenced {
+        counts.subtract(rule, n);
+    }
+    if suppressed.unused > 0 {
+        let unused = &structure::unused_suppression::UNUSED_SUPPRESSION;
+        counts.add(unused, suppressed.unused);
+        sort_by_position(&mut diagnostics);
+    }
+    if !rules.is_default() {
+        for diagnostic in &mut diagnostics {
+            if let Some(severity) = rules.severity_override(diagnostic.rule) {
+                diagnostic.set_severity(severity);
+            }
+        }
+    }
     let omitted = omitted_notes(&diagnostics, &counts);
     Checked {
         source,
         kind,
-        kb: KnowledgeBase::default(),
+        kb,
         reader,
         diagnostics,
         omitted,
         counts,
+        rules: rules.clone(),
     }
+}
+
+/// Drops each fix that guesses (an unsafe one, or one that turns a Unicode space into a
+/// plain one) whose line, once fixed, the robot's `reader` would still misread where the
+/// fix changed it: the fixed line, checked alone, has an error there about how the robot
+/// reads it (`-2.5` as a pose's first number loses its minus on the robot).
+fn verify_fixes(diagnostics: &mut [Diagnostic], text: &str, options: &Options, reader: Reader) {
+    let guesses = |d: &Diagnostic| {
+        let unicode_space = &structure::unicode_space::UNICODE_SPACE;
+        d.fix
+            .as_ref()
+            .is_some_and(|fix| !fix.is_safe() || std::ptr::eq(d.rule, unicode_space))
+    };
+    let options = Options {
+        reader: Some(reader),
+        verbose: false,
+        ..*options
+    };
+    for diagnostic in diagnostics.iter_mut().filter(|d| guesses(d)) {
+        let fix = diagnostic.fix.as_ref().expect("a fix");
+        if misread_once_fixed(text, &fix.edits, &options) {
+            diagnostic.fix = None;
+        }
+    }
+}
+
+/// Whether the line of `edits`, once they are applied, has an error about how the robot
+/// reads it where they changed it. Edits over more than one line are not checked.
+fn misread_once_fixed(text: &str, edits: &[crate::diagnostic::Edit], options: &Options) -> bool {
+    let (Some(first), Some(last)) = (
+        edits.iter().map(|e| e.span.start as usize).min(),
+        edits.iter().map(|e| e.span.end as usize).max(),
+    ) else {
+        return false;
+    };
+    if text[first..last].contains('\n') {
+        return false;
+    }
+    let line_start = text[..first].rfind('\n').map_or(0, |newline| newline + 1);
+    let line_end = text[last..]
+        .find('\n')
+        .map_or(text.len(), |at| last + at + 1);
+    let mut sorted: Vec<&crate::diagnostic::Edit> = edits.iter().collect();
+    sorted.sort_by_key(|edit| edit.span.start);
+    let (mut line, mut changed, mut at) = (String::new(), Vec::new(), line_start);
+    for edit in sorted {
+        line.push_str(&text[at..edit.span.start as usize]);
+        let start = line.len();
+        line.push_str(&edit.replacement);
+        changed.push(crate::syntax::Span::new(start, line.len().max(start + 1)));
+        at = edit.span.end as usize;
+    }
+    line.push_str(&text[at..line_end]);
+    let fixed = SourceFile::from_bytes("the fixed line", line.into_bytes());
+    let about_reading = |d: &Diagnostic| {
+        d.rule.category == rules::Category::Compat
+            || [
+                "invalid-number",
+                "wrong-arity",
+                "unicode-space",
+                "unknown-key",
+                "invalid-id",
+            ]
+            .contains(&d.rule.name)
+    };
+    let overlaps = |d: &Diagnostic| {
+        changed
+            .iter()
+            .any(|span| d.span.start < span.end && span.start < d.span.end.max(d.span.start + 1))
+    };
+    check_unverified(&fixed, options, &RuleSet::default())
+        .diagnostics
+        .iter()
+        .any(|d| d.severity() == crate::Severity::Error && about_reading(d) && overlaps(d))
 }
 
 /// Where the rules report their findings: it keeps the first [`kept_at_most`] of each
@@ -306,7 +441,7 @@ fn omitted_notes(diagnostics: &[Diagnostic], counts: &RuleCounts) -> Vec<Diagnos
     first_omitted
         .into_iter()
         .map(|first| {
-            let more = counts.get(first.rule) - MAX_SHOWN_PER_RULE;
+            let more = counts.get(first.rule).saturating_sub(MAX_SHOWN_PER_RULE);
             Diagnostic::new(
                 first.rule,
                 first.span,
@@ -316,6 +451,7 @@ fn omitted_notes(diagnostics: &[Diagnostic], counts: &RuleCounts) -> Vec<Diagnos
                 ),
             )
             .with_help("fix the ones shown and run ekb check again; the summary counts them all")
+            .with_severity(first.severity())
         })
         .collect()
 }
@@ -341,6 +477,13 @@ impl RuleCounts {
                 self.0.push((rule, n));
                 n
             }
+        }
+    }
+
+    /// Counts `n` fewer findings of `rule` (silenced ones).
+    fn subtract(&mut self, rule: &'static Rule, n: usize) {
+        if let Some((_, count)) = self.0.iter_mut().find(|(r, _)| std::ptr::eq(*r, rule)) {
+            *count = count.saturating_sub(n);
         }
     }
 

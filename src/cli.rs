@@ -6,7 +6,8 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::parser::ValueSource;
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand, ValueEnum};
 
 use crate::commands::{self, Context};
 use crate::render::escape::escape;
@@ -42,6 +43,14 @@ pub struct Cli {
     /// Print only findings and errors, no summary
     #[arg(short, long, global = true)]
     pub quiet: bool,
+
+    /// Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file's folder or above
+    #[arg(long, global = true, value_name = "PATH", conflicts_with = "isolated")]
+    pub settings: Option<PathBuf>,
+
+    /// Use no settings file: every rule, at its own severity
+    #[arg(long, global = true)]
+    pub isolated: bool,
 
     #[command(subcommand)]
     pub command: Command,
@@ -91,12 +100,16 @@ pub enum Command {
     Set(commands::set::Args),
     /// Run the language server (LSP, on standard input and output) for editors
     Lsp(commands::lsp::Args),
+    /// Print the settings in force for a file, and where each comes from
+    Settings(commands::settings::Args),
 }
 
 /// Parses the command line, runs the command and turns the outcome into an exit code.
 pub fn main() -> ExitCode {
-    let cli = Cli::parse();
-    let context = Context::new(&cli);
+    let matches = Cli::command().get_matches();
+    let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|error| error.exit());
+    let reader_from_env = matches.value_source("reader") == Some(ValueSource::EnvVariable);
+    let context = Context::new(&cli, reader_from_env);
     let outcome = match &cli.command {
         Command::Check(args) => commands::check::run(args, &context),
         Command::Locations(args) => commands::locations::run(args, &context),
@@ -115,6 +128,7 @@ pub fn main() -> ExitCode {
         Command::Translations(args) => commands::translations::run(args, &context),
         Command::Set(args) => commands::set::run(args, &context),
         Command::Lsp(args) => commands::lsp::run(args, &context),
+        Command::Settings(args) => commands::settings::run(args, &context),
     };
     let exit = match outcome {
         Ok(exit) => exit,

@@ -15,10 +15,11 @@
 use std::collections::{BTreeMap, BTreeSet};
 
 use crate::canonical::Document;
-use crate::check::{check, MAX_KEPT_PER_RULE};
-use crate::diagnostic::{Diagnostic, Edit};
+use crate::check::{check_with, MAX_KEPT_PER_RULE};
+use crate::diagnostic::{Diagnostic, Edit, Fix};
 use crate::model::build::Options;
 use crate::rules::compat::compat_reader_crash::COMPAT_READER_CRASH;
+use crate::rules::selection::RuleSet;
 use crate::source::SourceFile;
 use crate::syntax::Span;
 
@@ -34,9 +35,17 @@ pub struct Fixed {
     pub counts: BTreeMap<&'static str, usize>,
 }
 
-/// Applies every fix the checks of `source` offer, pass after pass.
+/// Which fixes to apply: those of the rules that run, and the unsafe ones too or not.
+#[derive(Debug, Clone, Default)]
+pub struct Choice {
+    pub rules: RuleSet,
+    /// `--unsafe-fixes`: apply the fixes that guess what was meant as well.
+    pub unsafe_fixes: bool,
+}
+
+/// Applies every safe fix the checks of `source` offer, pass after pass.
 pub fn fix(source: &SourceFile, options: &Options) -> Fixed {
-    let (text, counts) = fix_unless_clean(source, options);
+    let (text, counts) = fix_unless_clean(source, options, &Choice::default());
     Fixed {
         text: text.unwrap_or_else(|| source.text().to_string()),
         counts,
@@ -49,6 +58,7 @@ pub fn fix(source: &SourceFile, options: &Options) -> Fixed {
 pub fn fix_unless_clean(
     source: &SourceFile,
     options: &Options,
+    choice: &Choice,
 ) -> (Option<String>, BTreeMap<&'static str, usize>) {
     let mut fixed: Option<String> = None;
     let mut counts = BTreeMap::new();
@@ -65,7 +75,12 @@ pub fn fix_unless_clean(
             .as_ref()
             .map(|text| SourceFile::from_bytes(source.name(), text.clone().into_bytes()));
         let file = file.as_ref().unwrap_or(source);
-        let checked = check(file, &options);
+        let mut checked = check_with(file, &options, &choice.rules);
+        if !choice.unsafe_fixes {
+            for diagnostic in &mut checked.diagnostics {
+                diagnostic.fix = diagnostic.fix.take().filter(Fix::is_safe);
+            }
+        }
         crashes_reader = checked
             .diagnostics
             .iter()
@@ -86,7 +101,7 @@ pub fn fix_unless_clean(
             }
         }
     }
-    if crashes_reader {
+    if crashes_reader && choice.rules.is_enabled(&COMPAT_READER_CRASH) {
         // The one fix that is no edit: the location blocks in a balanced order, which
         // `ekb fmt`'s layout writes.
         let text = fixed.as_deref().unwrap_or(source.text());
@@ -97,6 +112,61 @@ pub fn fix_unless_clean(
         }
     }
     (fixed, counts)
+}
+
+/// `bytes` with every byte that is not part of a UTF-8 sequence read as Windows-1252 (the
+/// Latin-1 of Windows editors), or `None` if they hold a NUL (UTF-16 or UTF-32, more likely)
+/// or a byte Windows-1252 leaves undefined. Valid UTF-8 is kept as it is.
+pub fn from_latin1(bytes: &[u8]) -> Option<String> {
+    /// Windows-1252's characters for 0x80..=0x9F (`None`: undefined).
+    const HIGH: [Option<char>; 32] = [
+        Some('€'),
+        None,
+        Some('‚'),
+        Some('ƒ'),
+        Some('„'),
+        Some('…'),
+        Some('†'),
+        Some('‡'),
+        Some('ˆ'),
+        Some('‰'),
+        Some('Š'),
+        Some('‹'),
+        Some('Œ'),
+        None,
+        Some('Ž'),
+        None,
+        None,
+        Some('‘'),
+        Some('’'),
+        Some('“'),
+        Some('”'),
+        Some('•'),
+        Some('–'),
+        Some('—'),
+        Some('˜'),
+        Some('™'),
+        Some('š'),
+        Some('›'),
+        Some('œ'),
+        None,
+        Some('ž'),
+        Some('Ÿ'),
+    ];
+    if bytes.contains(&0) {
+        return None;
+    }
+    let mut out = String::with_capacity(bytes.len() + bytes.len() / 8);
+    for chunk in bytes.utf8_chunks() {
+        out.push_str(chunk.valid());
+        for &byte in chunk.invalid() {
+            out.push(match byte {
+                0x80..=0x9F => HIGH[usize::from(byte - 0x80)]?,
+                _ => char::from(byte),
+            });
+        }
+    }
+    Some(out)
 }
 
 /// Whether a fixable rule has as many findings as `check` keeps: it may have more, which the

@@ -8,7 +8,8 @@
 //!   with a line as facts, through a trait the rules implement, and names no rule;
 //! - [`reader`]: what each version of the robot's reader loads from a file;
 //! - [`rules`]: the rule catalogue, one module per rule; [`mod@check`]: the whole check of a
-//!   file, the model built and every rule run;
+//!   file, the model built and every rule run (or those [`rules::selection`] chooses), less
+//!   what the file's [`suppression`] comments silence;
 //! - [`render`]: output formats for findings;
 //! - [`present`]: how `locations`, `show`, `tour` and `diff` show a knowledge base;
 //! - [`diff`]: the semantic difference of two knowledge bases;
@@ -47,6 +48,7 @@ pub mod rules;
 pub mod settings;
 pub mod source;
 pub mod streams;
+pub mod suppression;
 pub mod syntax;
 pub mod translations;
 pub mod write;

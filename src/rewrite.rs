@@ -46,7 +46,8 @@ pub fn ensure_rewritable(source: &SourceFile) -> Result<(), CommandError> {
         let position = LineIndex::new(source.text()).position(source.text(), first.start);
         return Err(CommandError::Failed(format!(
             "{} is not valid UTF-8 (line {}, column {}): ekb does not rewrite it, as that would \
-             lose the bad bytes; save it as UTF-8 and run again",
+             lose the bad bytes; save it as UTF-8 and run again (if it is Latin-1, \
+             `ekb fix --unsafe-fixes` converts it)",
             escape(source.name()),
             position.line,
             position.column

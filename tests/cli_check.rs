@@ -322,7 +322,9 @@ fn json_has_the_exact_shape_of_the_spec() {
                 "edits": [{
                     "line": 34, "column": 1, "end_line": 34, "end_column": 26,
                     "replacement": "postGestureMessageEnglish"
-                }]
+                }],
+                // ekb's addition to SPEC §5, as ruff's: `unsafe` only with --unsafe-fixes.
+                "applicability": "safe"
             }
         })
     );
@@ -456,8 +458,10 @@ fn human_is_the_default_and_says_what_to_change() {
         assert!(out.contains(expected), "missing {expected:?} in\n{out}");
     }
     assert_eq!(out.matches("warning[untranslated-message]").count(), 20);
+    // The summary leads with what matters: each severity, broken down by rule.
     assert!(out.ends_with(
-        "\nFound 2 errors, 21 warnings (1 fixable with ekb fix), checked against reader d5.4.2\n"
+        "\nFound 2 errors: key-case, missing-field · 21 warnings: 20 untranslated-message, \
+         1 repeated-word (1 fixable with ekb fix), checked against reader d5.4.2\n"
     ));
     assert_eq!(run.stderr, "");
 }

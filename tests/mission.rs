@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 use ekb::check::Checked;
 use ekb::mission::check::{check_together, MissionSources};
 use ekb::model::build::Options;
+use ekb::rules::selection::RuleSet;
 use ekb::rules::{self, Category};
 use ekb::source::LineIndex;
 use ekb::{Severity, SourceFile};
@@ -78,7 +79,7 @@ fn check_set(files: &[SourceFile; 4]) -> Vec<Finding> {
         culture_types: Some(&files[2]),
         kb: Some((&files[3], &options)),
     };
-    locate(&check_together(&sources))
+    locate(&check_together(&sources, &RuleSet::default()))
 }
 
 fn show(all: &[Finding]) -> String {
@@ -332,10 +333,13 @@ fn each_kind_of_tree_that_behaviortree_cpp_refuses_is_an_error() {
             xml.to_string()
         };
         let source = SourceFile::from_bytes("t.xml", text.into_bytes());
-        let checked = check_together(&MissionSources {
-            mission: Some(&source),
-            ..MissionSources::default()
-        });
+        let checked = check_together(
+            &MissionSources {
+                mission: Some(&source),
+                ..MissionSources::default()
+            },
+            &RuleSet::default(),
+        );
         let all = locate(&checked);
         let found: Vec<&str> = errors(&all).iter().map(|f| f.rule).collect();
         assert_eq!(found, [*rule], "{xml}:\n{}", show(&all));
@@ -389,7 +393,7 @@ mod any_input {
             ];
             check_set(&files);
             for source in &files[..3] {
-                ekb::mission::check::check_file(source, &Options::default());
+                ekb::mission::check::check_file(source, &Options::default(), &RuleSet::default());
             }
             let Ok(mission) = ekb::mission::check::read_mission(files[0].text()) else {
                 return Ok(());

@@ -15,6 +15,7 @@ use crate::model::build::{parse_id, tour_items};
 use crate::model::{Key, ValueKind};
 use crate::render::escape::escape;
 use crate::rewrite::name_lines;
+use crate::suppression;
 use crate::syntax::{self, Body, Line, Span};
 
 /// Lines ending in a carriage return that is not part of a CRLF: written before the
@@ -114,6 +115,14 @@ impl<'a> Document<'a> {
         if !seen_entry {
             // Without entries there is nothing to set a header apart from: it is all footer.
             document.header = 0;
+        }
+        // A suppression is for the line below it, blank lines or not: never the header's.
+        let header = &document.comments[..document.header as usize];
+        if let Some(first) = header
+            .iter()
+            .position(|comment| suppression::is_for_next_line(comment.text(text)))
+        {
+            document.header = first as u32;
         }
         (document.order, document.block_ends) = arrange(&located, blocks.len());
         Ok(document)
@@ -295,6 +304,21 @@ mod tests {
              robotLocation                 1 1 2 3\n\
              \n\
              # end\n"
+        );
+    }
+
+    #[test]
+    fn a_suppression_above_the_first_entry_moves_with_it() {
+        let text = "# header\n# ekb: ignore-file[tour-missing]\n# ekb: ignore[repeated-word]\n\n\
+                    robotLocation 2 1 2 3\nrobotLocationDescription 2 the the\n";
+        assert_eq!(
+            format(text),
+            "# header\n\
+             # ekb: ignore-file[tour-missing]\n\
+             \n\
+             robotLocationDescription      2 the the\n\
+             # ekb: ignore[repeated-word]\n\
+             robotLocation                 2 1 2 3\n"
         );
     }
 

@@ -15,6 +15,7 @@ use crate::model::Language;
 use crate::present::language;
 use crate::render::escape::escape;
 use crate::render::{safe_json as json, Format};
+use crate::rules::selection::RuleSet;
 use crate::source::SourceFile;
 
 #[derive(Debug, clap::Args)]
@@ -98,16 +99,14 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
 }
 
 /// The robot's configuration folder: `--config-dir`, else `from_settings`, the
-/// `[mission] config-dir` of `ekb.toml` resolved against that file's folder.
-///
-/// Hook for the settings: `src/settings.rs` is being rewritten, so the one caller (`paths`,
-/// below) passes `None` for now; pass `[mission] config-dir` there.
+/// `[mission] config-dir` of the current folder's `ekb.toml` (resolved against its folder).
 pub fn config_dir(flag: Option<&Path>, from_settings: Option<PathBuf>) -> Option<PathBuf> {
     flag.map(Path::to_path_buf).or(from_settings)
 }
 
 /// The files: those named by flags, the others from the configuration folder.
-fn paths(files: &Files) -> Result<MissionPaths, CommandError> {
+fn paths(files: &Files, context: &Context) -> Result<MissionPaths, CommandError> {
+    let from_settings = context.settings_for(Path::new("-"))?.mission.config_dir;
     let named = MissionPaths {
         mission: files.mission.clone(),
         culture_kb: files.culture_kb.clone(),
@@ -115,7 +114,10 @@ fn paths(files: &Files) -> Result<MissionPaths, CommandError> {
         kb: files.kb.clone(),
         ..MissionPaths::default()
     };
-    match config_dir(files.config_dir.as_deref(), None) {
+    match config_dir(
+        files.config_dir.as_deref(),
+        from_settings.map(|dir| dir.value),
+    ) {
         Some(dir) => {
             Ok(named.or(MissionPaths::from_config_dir(&dir).map_err(CommandError::Failed)?))
         }
@@ -134,7 +136,7 @@ struct Read {
 
 impl Read {
     fn all(files: &Files, context: &Context) -> Result<Read, CommandError> {
-        let paths = paths(files)?;
+        let paths = paths(files, context)?;
         let read = |path: &Option<PathBuf>| path.as_deref().map(|p| context.read(p)).transpose();
         let kb = match &paths.kb {
             Some(path) => Some((context.read(path)?, context.read_options(path)?)),
@@ -190,8 +192,14 @@ fn run_check(args: &CheckArgs, context: &Context) -> CommandResult {
                 .to_string(),
         ));
     }
-    let checked = check_together(&sources);
-    super::check::report(&checked, args.format, args.deny_warnings, context)
+    let rules = RuleSet::default();
+    let checked = check_together(&sources, &rules);
+    let shown = super::check::Shown {
+        format: args.format,
+        deny_warnings: args.deny_warnings,
+        ..Default::default()
+    };
+    super::check::report(checked, &shown, context)
 }
 
 /// The culture knowledge base and its types, parsed, if both are given.

@@ -14,6 +14,7 @@ pub mod man;
 pub mod mission;
 pub mod rules;
 pub mod set;
+pub mod settings;
 pub mod show;
 pub mod tour;
 pub mod translations;
@@ -32,7 +33,8 @@ use crate::model::build::Options;
 use crate::reader::Reader;
 use crate::render::escape::escape;
 use crate::render::{concise, FileReport, RenderOptions};
-use crate::settings::Settings;
+use crate::rules::selection::{Choice, RuleSet};
+use crate::settings::{Lookup, Settings};
 use crate::source::SourceFile;
 use crate::stderr_line;
 use crate::streams;
@@ -113,17 +115,28 @@ pub struct Context {
     pub quiet: bool,
     /// `--reader` (or `EKB_READER`), which overrides `ekb.toml`.
     pub reader: Option<Reader>,
+    /// Whether `reader` came from `EKB_READER` rather than `--reader`.
+    pub reader_from_env: bool,
+    /// Where the settings come from: `--settings`, `--isolated`, or each file's folder.
+    pub settings: Lookup,
     config: OnceCell<Config>,
 }
 
 impl Context {
-    pub fn new(cli: &Cli) -> Context {
+    pub fn new(cli: &Cli, reader_from_env: bool) -> Context {
+        let settings = match (&cli.settings, cli.isolated) {
+            (Some(path), _) => Lookup::Explicit(path.clone()),
+            (None, true) => Lookup::Isolated,
+            (None, false) => Lookup::Discover,
+        };
         Context {
             config_path: cli.config.clone(),
             color: cli.color,
             verbose: cli.verbose,
             quiet: cli.quiet,
             reader: cli.reader,
+            reader_from_env,
+            settings,
             config: OnceCell::new(),
         }
     }
@@ -136,6 +149,8 @@ impl Context {
             verbose: false,
             quiet: false,
             reader: None,
+            reader_from_env: false,
+            settings: Lookup::Discover,
             config: OnceCell::from(config),
         }
     }
@@ -153,6 +168,18 @@ impl Context {
         Ok(self.config.get_or_init(|| config))
     }
 
+    /// The settings for the file at `path` (see [`Lookup`]).
+    pub fn settings_for(&self, path: &Path) -> Result<Settings, CommandError> {
+        self.settings
+            .settings_for(path)
+            .map_err(CommandError::Failed)
+    }
+
+    /// The rules to run on the file at `path`: its settings' choice, then `command_line`'s.
+    pub fn rules_for(&self, path: &Path, command_line: &Choice) -> Result<RuleSet, CommandError> {
+        Ok(self.settings_for(path)?.rules_for(path, command_line))
+    }
+
     /// How to read the knowledge base at `path`: the configuration's dialect and verbosity
     /// (or `-v`), and the reader of `--reader` (or `EKB_READER`), else of the file's
     /// `ekb.toml`, else of the configuration.
@@ -160,9 +187,10 @@ impl Context {
         let config = self.config()?;
         let reader = match self.reader {
             Some(reader) => Some(reader),
-            None => Settings::discover(path)
-                .map_err(CommandError::Failed)?
+            None => self
+                .settings_for(path)?
                 .reader
+                .map(|reader| reader.value)
                 .or(config.reader),
         };
         Ok(Options {

@@ -8,9 +8,10 @@ use std::path::PathBuf;
 use lsp_types::{TextDocumentContentChangeEvent, Uri};
 
 use super::position::{Encoding, LineIndex, Positions};
-use crate::check::{check, Checked};
+use crate::check::{check_with, Checked};
 use crate::model::build::Options;
 use crate::reader::{self, Loaded};
+use crate::rules::selection::RuleSet;
 use crate::source::SourceFile;
 
 /// A file's check and, when a request needs it, the file as the robot's reader loads it.
@@ -139,14 +140,14 @@ impl Document {
         }
     }
 
-    /// Checks this version (with `options`, which say how to read this file), unless it
-    /// was checked already.
-    pub fn check(&mut self, name: &str, options: impl FnOnce() -> Options) {
+    /// Checks this version (with `how`: how to read this file, and the rules `ekb.toml`
+    /// chooses for it), unless it was checked already.
+    pub fn check(&mut self, name: &str, how: impl FnOnce() -> (Options, RuleSet)) {
         if let Content::Text(text) = &mut self.content {
             let source = SourceFile::from_text(name, std::mem::take(text));
-            let options = options();
+            let (options, rules) = how();
             self.content = Content::Checked(Analysis::new(source, |source| Analysed {
-                checked: check(source, &options),
+                checked: check_with(source, &options, &rules),
                 options,
                 loaded: OnceCell::new(),
             }));
@@ -246,18 +247,18 @@ mod tests {
             document.with_analysed(|analysed| analysed.checked.diagnostics.len())
         };
         assert_eq!(findings(&document), None);
-        document.check("t", Options::default);
+        document.check("t", Default::default);
         let findings = findings(&document).unwrap();
         assert!(findings > 0);
         let mut asked = false;
         document.check("t", || {
             asked = true;
-            Options::default()
+            Default::default()
         });
         assert!(!asked, "checked once per version");
         document.change(2, vec![change(Some(((0, 0), (0, 0))), "#")], Encoding::Utf8);
         assert_eq!(document.text(), "#robotLocation 1 1 2 3\n");
-        document.check("t", Options::default);
+        document.check("t", Default::default);
         let locations = document.with_analysed(|analysed| analysed.checked.kb.locations().len());
         assert_eq!(locations, Some(0));
     }

@@ -355,7 +355,7 @@ impl Server {
             let options = workspace.options(path.as_deref());
             let fallback = options
                 .as_ref()
-                .map_or_else(|_| workspace.fallback_options(), |o| *o);
+                .map_or_else(|_| workspace.fallback_options(), Clone::clone);
             settings = Some(options.map(|_| ()));
             fallback
         });

@@ -8,6 +8,7 @@ use lsp_types::{InitializeParams, Uri};
 use crate::commands::Context;
 use crate::config::{self, Config};
 use crate::model::build::Options;
+use crate::rules::selection::{Choice, RuleSet};
 
 /// The configuration in force, and what went wrong finding it (to tell the user once).
 #[derive(Debug)]
@@ -44,7 +45,7 @@ impl Workspace {
 
     /// How to read the document at `path` (`None`: not a file; the current folder's
     /// `ekb.toml` applies), or why the settings cannot be used.
-    pub fn options(&self, path: Option<&Path>) -> Result<Options, String> {
+    pub fn options(&self, path: Option<&Path>) -> Result<(Options, RuleSet), String> {
         let path = path.unwrap_or(Path::new("-"));
         let mut options = self
             .context
@@ -52,16 +53,21 @@ impl Workspace {
             .map_err(|error| error.to_string())?;
         // `verboseMode` prints the file as it is read, on every keystroke: not in an editor.
         options.verbose = false;
-        Ok(options)
+        let rules = self
+            .context
+            .rules_for(path, &Choice::default())
+            .map_err(|error| error.to_string())?;
+        Ok((options, rules))
     }
 
     /// How to read a document with broken settings: as the command line's `--reader` says,
     /// the rest by default.
-    pub fn fallback_options(&self) -> Options {
-        Options {
+    pub fn fallback_options(&self) -> (Options, RuleSet) {
+        let options = Options {
             reader: self.context.reader,
             ..Options::default()
-        }
+        };
+        (options, RuleSet::default())
     }
 }
 
@@ -153,7 +159,7 @@ mod tests {
         assert!(problems[0].contains("did you mean `verboseMode`"));
         let options = workspace.options(Some(&root.path().join("data/kb.dat")));
         assert_eq!(
-            options.unwrap().reader,
+            options.unwrap().0.reader,
             Some(crate::reader::Reader::V2026_02)
         );
     }

@@ -3,11 +3,12 @@
 
 use crate::check::{self as env, Checked, Diagnostics, FileKind};
 use crate::model::build::Options;
-use crate::model::Language;
+use crate::model::{KnowledgeBase, Language};
 use crate::reader::Reader;
 use crate::rules::culture::culture_duplicate_key::Wins;
 use crate::rules::culture::*;
 use crate::rules::mission::*;
+use crate::rules::selection::RuleSet;
 use crate::rules::structure::{invalid_utf8, not_a_knowledge_base};
 use crate::source::SourceFile;
 
@@ -25,7 +26,7 @@ pub struct MissionSources<'s> {
 }
 
 /// Checks the files given, each alone and against the others: one checked file each.
-pub fn check_together<'s>(sources: &MissionSources<'s>) -> Vec<Checked<'s>> {
+pub fn check_together<'s>(sources: &MissionSources<'s>, rules: &RuleSet) -> Vec<Checked<'s>> {
     let mut mission_out = Diagnostics::default();
     let mission = sources.mission.and_then(|source| {
         invalid_utf8::check(source, &mut mission_out);
@@ -82,23 +83,40 @@ pub fn check_together<'s>(sources: &MissionSources<'s>) -> Vec<Checked<'s>> {
     let mut checked = Vec::new();
     let no_reader = Reader::default_for(None);
     if let Some(source) = sources.mission {
+        let kind = FileKind::Mission;
         checked.push(env::finish(
             source,
-            FileKind::Mission,
+            kind,
+            KnowledgeBase::default(),
             no_reader,
             mission_out,
+            rules,
         ));
     }
     if let Some(source) = sources.culture_kb {
         let kind = FileKind::CultureKnowledgeBase;
-        checked.push(env::finish(source, kind, no_reader, culture_out));
+        checked.push(env::finish(
+            source,
+            kind,
+            KnowledgeBase::default(),
+            no_reader,
+            culture_out,
+            rules,
+        ));
     }
     if let Some(source) = sources.culture_types {
         let kind = FileKind::CultureValueTypes;
-        checked.push(env::finish(source, kind, no_reader, types_out));
+        checked.push(env::finish(
+            source,
+            kind,
+            KnowledgeBase::default(),
+            no_reader,
+            types_out,
+            rules,
+        ));
     }
     if let Some((source, options)) = sources.kb {
-        let mut kb = env::check(source, options);
+        let mut kb = env::check_with(source, options, rules);
         let keys: Option<Vec<&str>> = match (&types, &culture) {
             (Some(types), _) => Some(types.keys().collect()),
             (None, Some(culture)) => Some(culture.entries.iter().map(|e| e.key).collect()),
@@ -160,9 +178,9 @@ pub fn recognise(text: &str) -> FileKind {
 }
 
 /// `ekb check FILE`: the file checked as the kind its content says, alone.
-pub fn check_file<'s>(source: &'s SourceFile, options: &Options) -> Checked<'s> {
+pub fn check_file<'s>(source: &'s SourceFile, options: &Options, rules: &RuleSet) -> Checked<'s> {
     let alone = match recognise(source.text()) {
-        FileKind::EnvironmentKnowledgeBase => return env::check(source, options),
+        FileKind::EnvironmentKnowledgeBase => return env::check_with(source, options, rules),
         FileKind::Mission => MissionSources {
             mission: Some(source),
             ..MissionSources::default()
@@ -176,8 +194,10 @@ pub fn check_file<'s>(source: &'s SourceFile, options: &Options) -> Checked<'s> 
             ..MissionSources::default()
         },
     };
-    let mut checked = check_together(&alone);
-    checked.pop().unwrap_or_else(|| env::check(source, options))
+    let mut checked = check_together(&alone, rules);
+    checked
+        .pop()
+        .unwrap_or_else(|| env::check_with(source, options, rules))
 }
 
 /// Parses a mission, or gives the finding that says why it cannot be read.

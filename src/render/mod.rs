@@ -11,6 +11,7 @@ pub mod json;
 pub mod located;
 pub mod safe_json;
 pub mod sarif;
+pub mod statistics;
 
 use std::io::{self, Write};
 
@@ -22,9 +23,10 @@ use crate::reader::Reader;
 pub use located::{FileReport, LocatedDiagnostic};
 
 /// `ekb check --format`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, ValueEnum)]
 pub enum Format {
     /// For people: each finding with the lines around it, underlined, and what to do
+    #[default]
     Human,
     /// One line per finding: `file:line:col: severity[rule] message`
     Concise,

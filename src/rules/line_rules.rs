@@ -23,6 +23,8 @@ pub struct LineRules {
     /// Whether the part's lines have a byte that may start a control character: nearly no
     /// file has one, and one pass over all the bytes costs less than a check per value.
     controls_possible: bool,
+    /// Whether they have a byte that may start a Unicode space (likewise).
+    unicode_spaces_possible: bool,
 }
 
 impl Findings for Diagnostics {
@@ -32,7 +34,8 @@ impl Findings for Diagnostics {
         LineRules {
             found: Diagnostics::default(),
             crlf_endings: Default::default(),
-            controls_possible: structure::control_character::possible_in(&text[range]),
+            controls_possible: structure::control_character::possible_in(&text[range.clone()]),
+            unicode_spaces_possible: structure::unicode_space::possible_in(&text[range]),
         }
     }
 
@@ -46,6 +49,9 @@ impl LineFindings for LineRules {
     fn line(&mut self, line: &Line, text: &str) {
         content::trailing_whitespace::check(line, text, &mut self.found);
         self.crlf_endings.add(line, text);
+        if self.unicode_spaces_possible {
+            structure::unicode_space::check(line, text, &mut self.found);
+        }
     }
 
     #[inline]

@@ -22,6 +22,7 @@ pub mod content;
 pub mod culture;
 pub mod line_rules;
 pub mod mission;
+pub mod selection;
 pub mod structure;
 pub mod tour;
 pub mod translation;
@@ -68,6 +69,19 @@ pub enum Category {
 }
 
 impl Category {
+    /// The name `select`, `ignore` and `--select` use: `structure`, `compat`, ….
+    pub fn name(self) -> &'static str {
+        match self {
+            Category::Structure => "structure",
+            Category::Tour => "tour",
+            Category::Content => "content",
+            Category::Compat => "compat",
+            Category::Mission => "mission",
+            Category::Culture => "culture",
+            Category::Translation => "translation",
+        }
+    }
+
     pub fn title(self) -> &'static str {
         match self {
             Category::Structure => "Structure",
@@ -122,7 +136,9 @@ pub static ALL: &[&Rule] = &[
     &structure::mixed_dialect::MIXED_DIALECT,
     &structure::legacy_key::LEGACY_KEY,
     &structure::control_character::CONTROL_CHARACTER,
+    &structure::unicode_space::UNICODE_SPACE,
     &structure::not_a_knowledge_base::NOT_AN_ENVIRONMENT_KNOWLEDGE_BASE,
+    &structure::unused_suppression::UNUSED_SUPPRESSION,
     &tour::tour_missing::TOUR_MISSING,
     &tour::tour_duplicate_spec::TOUR_DUPLICATE_SPEC,
     &tour::tour_count_mismatch::TOUR_COUNT_MISMATCH,
@@ -189,6 +205,51 @@ pub(crate) fn excerpt(text: &str) -> std::borrow::Cow<'_, str> {
 /// The rule with this name.
 pub fn by_name(name: &str) -> Option<&'static Rule> {
     ALL.iter().copied().find(|rule| rule.name == name)
+}
+
+/// The rule a person means by `query` (`ekb explain`): its name in any case, or a prefix
+/// of only one rule's name (`untranslated`); else why none, with the nearest name.
+pub fn lookup(query: &str) -> Result<&'static Rule, String> {
+    let lower = query.to_lowercase();
+    if let Some(rule) = by_name(&lower) {
+        return Ok(rule);
+    }
+    let starting: Vec<&'static Rule> = ALL
+        .iter()
+        .copied()
+        .filter(|rule| !lower.is_empty() && rule.name.starts_with(&lower))
+        .collect();
+    match starting.as_slice() {
+        [one] => Ok(one),
+        [] => Err(
+            match selection::nearest(query, ALL.iter().map(|rule| rule.name)) {
+                Some(name) => format!("no rule named `{query}`; did you mean `{name}`?"),
+                None => format!("no rule named `{query}`; `ekb rules` lists them"),
+            },
+        ),
+        several => {
+            let names: Vec<&str> = several.iter().map(|rule| rule.name).collect();
+            Err(format!(
+                "`{query}` starts the names of {} rules ({}); give more of the name",
+                names.len(),
+                names.join(", ")
+            ))
+        }
+    }
+}
+
+/// Where `rule` is in [`ALL`] (a rule's identity is its address: rules are statics).
+pub fn index_of(rule: &Rule) -> usize {
+    ALL.iter()
+        .position(|known| std::ptr::eq(*known, rule))
+        .expect("every rule is in the catalogue")
+}
+
+/// The categories of the catalogue, in its order (those that have a rule).
+pub fn categories() -> Vec<Category> {
+    let mut categories: Vec<Category> = ALL.iter().map(|rule| rule.category).collect();
+    categories.dedup();
+    categories
 }
 
 /// Runs the rules that look at whole locations and the tour, and those that depend on the
