@@ -50,12 +50,16 @@ complete -c ekb -n "__fish_ekb_needs_command" -f -a "rules" -d 'List the rule ca
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "explain" -d 'Show one rule\'s documentation'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "completions" -d 'Print a shell completion script'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "man" -d 'Print the man page'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "map" -d 'Draw the tour on the lab map, as SVG or PNG'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l format -d 'Output format' -r -f -a "human\t'For people: each finding with the lines around it, underlined, and what to do'
 concise\t'One line per finding: `file:line:col: severity[rule] message`'
 json\t'One JSON object: every finding, with its fix, and a summary'
 github\t'GitHub Actions workflow commands (annotations)'
 sarif\t'SARIF 2.1.0, for GitHub code scanning and other SARIF viewers'"
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l map-config -d 'The robot\'s mapGenerationConfiguration.ini: check poses against its map and draw on it' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l map-image -d 'A map image instead (PNG: white free, black occupied), with --map-size; the robot\'s radius is taken as 0.3 m' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l map-size -d 'The map image\'s width and height, in metres' -r
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
@@ -250,17 +254,37 @@ complete -c ekb -n "__fish_ekb_using_subcommand man" -s v -l verbose -d 'Print w
 complete -c ekb -n "__fish_ekb_using_subcommand man" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand man" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand man" -s V -l version -d 'Print version'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "check" -d 'Validate knowledge-base files against every rule'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "locations" -d 'A table of all locations'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "show" -d 'One location in full'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "tour" -d 'The tour in order, as the robot will say it in one language'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "diff" -d 'What changed between two knowledge bases, location by location'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "export" -d 'The typed model as JSON'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "import" -d 'JSON back to a canonical knowledge-base file'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "fmt" -d 'Rewrite files in the canonical layout'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "fix" -d 'Apply the machine-applicable fixes'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "rules" -d 'List the rule catalogue'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "explain" -d 'Show one rule\'s documentation'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "completions" -d 'Print a shell completion script'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "man" -d 'Print the man page'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c ekb -n "__fish_ekb_using_subcommand map" -s o -l output -d 'Write the drawing to this file: SVG, or PNG if it ends in `.png` [default: SVG on standard output]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l format -d 'The drawing\'s format [default: from OUT\'s extension, else svg]' -r -f -a "svg\t'Scalable, self-contained, with selectable text'
+png\t'A raster image, rendered with resvg'"
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l map-config -d 'The robot\'s mapGenerationConfiguration.ini: check poses against its map and draw on it' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l map-image -d 'A map image instead (PNG: white free, black occupied), with --map-size; the robot\'s radius is taken as 0.3 m' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l map-size -d 'The map image\'s width and height, in metres' -r
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand map" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand map" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand map" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c ekb -n "__fish_ekb_using_subcommand map" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "check" -d 'Validate knowledge-base files against every rule'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "locations" -d 'A table of all locations'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "show" -d 'One location in full'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "tour" -d 'The tour in order, as the robot will say it in one language'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "diff" -d 'What changed between two knowledge bases, location by location'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "export" -d 'The typed model as JSON'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "import" -d 'JSON back to a canonical knowledge-base file'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "fmt" -d 'Rewrite files in the canonical layout'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "fix" -d 'Apply the machine-applicable fixes'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "rules" -d 'List the rule catalogue'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "explain" -d 'Show one rule\'s documentation'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "completions" -d 'Print a shell completion script'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "man" -d 'Print the man page'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "map" -d 'Draw the tour on the lab map, as SVG or PNG'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'

@@ -81,6 +81,8 @@ pub enum Command {
     Completions(commands::completions::Args),
     /// Print the man page
     Man(commands::man::Args),
+    /// Draw the tour on the lab map, as SVG or PNG
+    Map(commands::map::Args),
 }
 
 /// Parses the command line, runs the command and turns the outcome into an exit code.
@@ -101,6 +103,7 @@ pub fn main() -> ExitCode {
         Command::Explain(args) => commands::explain::run(args, &context),
         Command::Completions(args) => commands::completions::run(args, &context),
         Command::Man(args) => commands::man::run(args, &context),
+        Command::Map(args) => commands::map::run(args, &context),
     };
     match outcome {
         Ok(exit) => exit.into(),

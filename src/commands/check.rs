@@ -3,6 +3,7 @@
 use std::io::Write;
 use std::path::PathBuf;
 
+use super::map::{check_on_map, MapArgs};
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::diagnostic::Summary;
@@ -23,6 +24,9 @@ pub struct Args {
     /// Exit 1 on warnings too
     #[arg(long)]
     pub deny_warnings: bool,
+
+    #[command(flatten)]
+    pub map: MapArgs,
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
@@ -35,10 +39,14 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         .iter()
         .map(|path| context.read(path))
         .collect::<Result<Vec<SourceFile>, _>>()?;
+    let map = args.map.load(None)?;
     let checked: Vec<Checked> = sources
         .iter()
         .zip(&options)
-        .map(|(source, options)| check(source, options))
+        .map(|(source, options)| match &map {
+            Some(map) => check_on_map(source, options, Some(map)).0,
+            None => check(source, options),
+        })
         .collect();
     // Checked::summary also counts the findings past the cap of each rule (check.rs).
     let mut summary = Summary::default();

@@ -10,6 +10,7 @@ pub mod fmt;
 pub mod import;
 pub mod locations;
 pub mod man;
+pub mod map;
 pub mod rules;
 pub mod show;
 pub mod tour;

@@ -20,6 +20,7 @@ pub mod compat;
 mod consequence;
 pub mod content;
 pub mod line_rules;
+pub mod map;
 pub mod structure;
 pub mod tour;
 
@@ -57,6 +58,7 @@ pub enum Category {
     Tour,
     Content,
     Compat,
+    Map,
 }
 
 impl Category {
@@ -66,6 +68,7 @@ impl Category {
             Category::Tour => "Tour",
             Category::Content => "Content",
             Category::Compat => "Reference-reader compatibility",
+            Category::Map => "Map",
         }
     }
 }
@@ -137,6 +140,9 @@ pub static ALL: &[&Rule] = &[
     &compat::compat_reader_crash::COMPAT_READER_CRASH,
     &compat::compat_slow_load::COMPAT_SLOW_LOAD,
     &compat::compat_ignored_key::COMPAT_IGNORED_KEY,
+    &map::pose_outside_map::POSE_OUTSIDE_MAP,
+    &map::pose_in_obstacle::POSE_IN_OBSTACLE,
+    &map::target_outside_map::TARGET_OUTSIDE_MAP,
 ];
 
 /// `text` from the file, cut to a length that fits in a one-line message.
