@@ -147,29 +147,32 @@ fn widen(from: f64, to: f64) -> (f64, f64) {
     (from - (missing / 2.0).ceil(), to + (missing / 2.0).ceil())
 }
 
-/// The 1, 2, 5 × 10ⁿ series.
-fn nice(exponent: i32, step: usize) -> f64 {
-    [1.0, 2.0, 5.0][step] * 10f64.powi(exponent)
-}
+/// Pixels per metre are one of these × 10ⁿ: finer steps than 1, 2, 5, so that a plot is
+/// never much smaller than it can be.
+const SCALES: [f64; 10] = [1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0];
 
-/// The largest of 1, 2, 5 × 10ⁿ at most `value` (`value` positive).
+/// Grid steps and scale bars are one of these × 10ⁿ metres.
+const STEPS: [f64; 3] = [1.0, 2.0, 5.0];
+
+/// The largest of `SCALES` × 10ⁿ at most `value` (`value` positive).
 fn nice_at_most(value: f64) -> f64 {
-    let exponent = value.log10().floor() as i32;
-    (0..3)
+    let power = 10f64.powi(value.log10().floor() as i32);
+    SCALES
+        .iter()
         .rev()
-        .map(|step| nice(exponent, step))
+        .map(|mantissa| mantissa * power)
         .find(|&n| n <= value)
-        .unwrap_or(nice(exponent, 0))
+        .unwrap_or(power)
 }
 
-/// The smallest of 1, 2, 5 × 10ⁿ at least `value` (`value` positive).
+/// The smallest of `STEPS` × 10ⁿ at least `value` (`value` positive).
 fn nice_at_least(value: f64) -> f64 {
-    let exponent = value.log10().floor() as i32;
-    (0..3)
-        .map(|step| nice(exponent, step))
-        .chain([nice(exponent + 1, 0)])
+    let power = 10f64.powi(value.log10().floor() as i32);
+    STEPS
+        .iter()
+        .map(|mantissa| mantissa * power)
         .find(|&n| n >= value)
-        .unwrap_or(nice(exponent + 1, 0))
+        .unwrap_or(10.0 * power)
 }
 
 #[cfg(test)]
@@ -179,7 +182,8 @@ mod tests {
     #[test]
     fn nice_numbers() {
         assert_eq!(nice_at_most(100.7), 100.0);
-        assert_eq!(nice_at_most(0.45), 0.2);
+        assert_eq!(nice_at_most(91.5), 80.0);
+        assert_eq!(nice_at_most(0.45), 0.4);
         assert_eq!(nice_at_most(5.0), 5.0);
         assert_eq!(nice_at_least(0.6), 1.0);
         assert_eq!(nice_at_least(1.5), 2.0);

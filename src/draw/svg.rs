@@ -47,6 +47,9 @@ const BADGE_RADIUS: f64 = 7.5;
 const SHAFT: f64 = 30.0;
 const TIP: f64 = 40.0;
 
+/// How far from its mark a label's leader line starts.
+const LEADER_GAP: f64 = 10.0;
+
 /// The most locations labelled; on a larger file the tour's are labelled first.
 pub const MAX_LABELLED: usize = 400;
 
@@ -73,7 +76,8 @@ pub fn draw(scene: &Scene<'_>, map_image: MapImage) -> Drawing {
     let legend = legend_lines(scene);
     let legend_x = frame.left + frame.width_px() + GAP;
     let legend_height = LEGEND_ROWS.len() as f64 * 24.0 + 80.0 + legend.len() as f64 * LINE_HEIGHT;
-    let width = (legend_x + LEGEND_WIDTH + MARGIN).ceil();
+    let title_width = LEFT + text_width(&title(scene), 18.0, true) + MARGIN;
+    let width = (legend_x + LEGEND_WIDTH + MARGIN).max(title_width).ceil();
     let height = (frame.top + frame.height_px() + BOTTOM)
         .max(TOP + legend_height + MARGIN)
         .ceil();
@@ -647,11 +651,18 @@ fn label(
     let place = placer.place(anchor, width, height);
     let near = place.nearest_to(anchor);
     let _ = write!(svg, r#"<g class="label {class}">"#);
-    if (near.0 - anchor.0).hypot(near.1 - anchor.1) > 12.0 {
+    let distance = (near.0 - anchor.0).hypot(near.1 - anchor.1);
+    if distance > 2.0 * LEADER_GAP {
+        // From outside the mark, so that the mark's own pixels stay its colour.
+        let along = LEADER_GAP / distance;
+        let start = (
+            anchor.0 + (near.0 - anchor.0) * along,
+            anchor.1 + (near.1 - anchor.1) * along,
+        );
         let _ = write!(
             svg,
             r##"<line x1="{:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="#777777" stroke-width="0.8"/>"##,
-            anchor.0, anchor.1, near.0, near.1
+            start.0, start.1, near.0, near.1
         );
     }
     let _ = write!(
