@@ -46,6 +46,7 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script')
             [CompletionResult]::new('man', 'man', [CompletionResultType]::ParameterValue, 'Print the man page')
             [CompletionResult]::new('map', 'map', [CompletionResultType]::ParameterValue, 'Draw the tour on the lab map, as SVG or PNG')
+            [CompletionResult]::new('report', 'report', [CompletionResultType]::ParameterValue, 'Write one HTML page to review: the map, the tour''s messages, the findings')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -272,6 +273,25 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
+        'ekb;report' {
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Write the page here (`-` is standard output)')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Write the page here (`-` is standard output)')
+            [CompletionResult]::new('--map-config', '--map-config', [CompletionResultType]::ParameterName, 'The robot''s mapGenerationConfiguration.ini: check poses against its map and draw on it')
+            [CompletionResult]::new('--map-image', '--map-image', [CompletionResultType]::ParameterName, 'A map image instead (PNG: white free, black occupied), with --map-size; the robot''s radius is taken as 0.3 m')
+            [CompletionResult]::new('--map-size', '--map-size', [CompletionResultType]::ParameterName, 'The map image''s width and height, in metres')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
+            [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')
+            [CompletionResult]::new('--reader', '--reader', [CompletionResultType]::ParameterName, 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('--quiet', '--quiet', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
         'ekb;help' {
             [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Validate knowledge-base files against every rule')
             [CompletionResult]::new('locations', 'locations', [CompletionResultType]::ParameterValue, 'A table of all locations')
@@ -287,6 +307,7 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script')
             [CompletionResult]::new('man', 'man', [CompletionResultType]::ParameterValue, 'Print the man page')
             [CompletionResult]::new('map', 'map', [CompletionResultType]::ParameterValue, 'Draw the tour on the lab map, as SVG or PNG')
+            [CompletionResult]::new('report', 'report', [CompletionResultType]::ParameterValue, 'Write one HTML page to review: the map, the tour''s messages, the findings')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -330,6 +351,9 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             break
         }
         'ekb;help;map' {
+            break
+        }
+        'ekb;help;report' {
             break
         }
         'ekb;help;help' {

@@ -52,6 +52,9 @@ _ekb() {
             ekb,map)
                 cmd="ekb__subcmd__map"
                 ;;
+            ekb,report)
+                cmd="ekb__subcmd__report"
+                ;;
             ekb,rules)
                 cmd="ekb__subcmd__rules"
                 ;;
@@ -97,6 +100,9 @@ _ekb() {
             ekb__subcmd__help,map)
                 cmd="ekb__subcmd__help__subcmd__map"
                 ;;
+            ekb__subcmd__help,report)
+                cmd="ekb__subcmd__help__subcmd__report"
+                ;;
             ekb__subcmd__help,rules)
                 cmd="ekb__subcmd__help__subcmd__rules"
                 ;;
@@ -113,7 +119,7 @@ _ekb() {
 
     case "${cmd}" in
         ekb)
-            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version check locations show tour diff export import fmt fix rules explain completions man map help"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version check locations show tour diff export import fmt fix rules explain completions man map report help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -357,7 +363,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__help)
-            opts="check locations show tour diff export import fmt fix rules explain completions man map help"
+            opts="check locations show tour diff export import fmt fix rules explain completions man map report help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -538,6 +544,20 @@ _ekb() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        ekb__subcmd__help__subcmd__report)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         ekb__subcmd__help__subcmd__rules)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
@@ -687,6 +707,52 @@ _ekb() {
                     ;;
                 --format)
                     COMPREPLY=($(compgen -W "svg png" -- "${cur}"))
+                    return 0
+                    ;;
+                --map-config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --map-image)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --map-size)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --color)
+                    COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
+                    return 0
+                    ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        ekb__subcmd__report)
+            opts="-o -v -q -h -V --output --map-config --map-image --map-size --config --color --verbose --reader --quiet --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --output)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --map-config)

@@ -43,6 +43,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand completions 'Print a shell completion script'
             cand man 'Print the man page'
             cand map 'Draw the tour on the lab map, as SVG or PNG'
+            cand report 'Write one HTML page to review: the map, the tour''s messages, the findings'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'ekb;check'= {
@@ -254,6 +255,24 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand -V 'Print version'
             cand --version 'Print version'
         }
+        &'ekb;report'= {
+            cand -o 'Write the page here (`-` is standard output)'
+            cand --output 'Write the page here (`-` is standard output)'
+            cand --map-config 'The robot''s mapGenerationConfiguration.ini: check poses against its map and draw on it'
+            cand --map-image 'A map image instead (PNG: white free, black occupied), with --map-size; the robot''s radius is taken as 0.3 m'
+            cand --map-size 'The map image''s width and height, in metres'
+            cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
+            cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
+            cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
+            cand -v 'Print what is read, as it is read, on standard error'
+            cand --verbose 'Print what is read, as it is read, on standard error'
+            cand -q 'Print only findings and errors, no summary'
+            cand --quiet 'Print only findings and errors, no summary'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
         &'ekb;help'= {
             cand check 'Validate knowledge-base files against every rule'
             cand locations 'A table of all locations'
@@ -269,6 +288,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand completions 'Print a shell completion script'
             cand man 'Print the man page'
             cand map 'Draw the tour on the lab map, as SVG or PNG'
+            cand report 'Write one HTML page to review: the map, the tour''s messages, the findings'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'ekb;help;check'= {
@@ -298,6 +318,8 @@ set edit:completion:arg-completer[ekb] = {|@words|
         &'ekb;help;man'= {
         }
         &'ekb;help;map'= {
+        }
+        &'ekb;help;report'= {
         }
         &'ekb;help;help'= {
         }

@@ -83,6 +83,8 @@ pub enum Command {
     Man(commands::man::Args),
     /// Draw the tour on the lab map, as SVG or PNG
     Map(commands::map::Args),
+    /// Write one HTML page to review: the map, the tour's messages, the findings
+    Report(commands::report::Args),
 }
 
 /// Parses the command line, runs the command and turns the outcome into an exit code.
@@ -104,6 +106,7 @@ pub fn main() -> ExitCode {
         Command::Completions(args) => commands::completions::run(args, &context),
         Command::Man(args) => commands::man::run(args, &context),
         Command::Map(args) => commands::map::run(args, &context),
+        Command::Report(args) => commands::report::run(args, &context),
     };
     match outcome {
         Ok(exit) => exit.into(),

@@ -34,6 +34,7 @@ mod parallel;
 pub mod present;
 pub mod reader;
 pub mod render;
+pub mod report;
 pub mod rewrite;
 pub mod rules;
 pub mod settings;

@@ -131,7 +131,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     }
     let path = context.input(args.file.as_deref())?;
     let options = context.read_options(&path)?;
-    // `[map] config` of ekb.toml is for the lead to pass here, from the settings.
+    // No `[map] config` from ekb.toml here yet: `MapArgs::load` takes it as its argument.
     let map = args.map.load(None)?;
     let source = context.read(&path)?;
     let (checked, loaded) = check_on_map(&source, &options, map.as_ref());

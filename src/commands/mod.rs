@@ -11,6 +11,7 @@ pub mod import;
 pub mod locations;
 pub mod man;
 pub mod map;
+pub mod report;
 pub mod rules;
 pub mod show;
 pub mod tour;
