@@ -47,6 +47,7 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('man', 'man', [CompletionResultType]::ParameterValue, 'Print the man page')
             [CompletionResult]::new('map', 'map', [CompletionResultType]::ParameterValue, 'Draw the tour on the lab map, as SVG or PNG')
             [CompletionResult]::new('report', 'report', [CompletionResultType]::ParameterValue, 'Write one HTML page to review: the map, the tour''s messages, the findings')
+            [CompletionResult]::new('mission', 'mission', [CompletionResultType]::ParameterValue, 'The behaviour-tree mission with both knowledge bases: check, tree, walk')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -292,6 +293,106 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
+        'ekb;mission' {
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
+            [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')
+            [CompletionResult]::new('--reader', '--reader', [CompletionResultType]::ParameterName, 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('--quiet', '--quiet', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Check the mission, the culture knowledge base and the environment knowledge base together')
+            [CompletionResult]::new('tree', 'tree', [CompletionResultType]::ParameterValue, 'Print the mission''s trees, with each node''s parameter and the phrase each SayText says')
+            [CompletionResult]::new('walk', 'walk', [CompletionResultType]::ParameterValue, 'A dry run of the mission on the happy path: the steps the robot takes, in order')
+            [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
+            break
+        }
+        'ekb;mission;check' {
+            [CompletionResult]::new('--config-dir', '--config-dir', [CompletionResultType]::ParameterName, 'The robot''s configuration folder: its behaviorControllerConfiguration.ini, cultureKnowledgeBaseConfiguration.ini and environmentKnowledgeBaseConfiguration.ini name the files, in the sibling data/ folder [default: `[mission] config-dir` in ekb.toml]')
+            [CompletionResult]::new('--mission', '--mission', [CompletionResultType]::ParameterName, 'The mission (behaviour tree XML) [default: from the configuration folder]')
+            [CompletionResult]::new('--culture-kb', '--culture-kb', [CompletionResultType]::ParameterName, 'The culture knowledge base [default: from the configuration folder]')
+            [CompletionResult]::new('--culture-types', '--culture-types', [CompletionResultType]::ParameterName, 'The culture knowledge base''s types file [default: from the configuration folder]')
+            [CompletionResult]::new('--kb', '--kb', [CompletionResultType]::ParameterName, 'The environment knowledge base [default: from the configuration folder]')
+            [CompletionResult]::new('--format', '--format', [CompletionResultType]::ParameterName, 'Output format')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
+            [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')
+            [CompletionResult]::new('--reader', '--reader', [CompletionResultType]::ParameterName, 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]')
+            [CompletionResult]::new('--deny-warnings', '--deny-warnings', [CompletionResultType]::ParameterName, 'Exit 1 on warnings too')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('--quiet', '--quiet', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'ekb;mission;tree' {
+            [CompletionResult]::new('--config-dir', '--config-dir', [CompletionResultType]::ParameterName, 'The robot''s configuration folder: its behaviorControllerConfiguration.ini, cultureKnowledgeBaseConfiguration.ini and environmentKnowledgeBaseConfiguration.ini name the files, in the sibling data/ folder [default: `[mission] config-dir` in ekb.toml]')
+            [CompletionResult]::new('--mission', '--mission', [CompletionResultType]::ParameterName, 'The mission (behaviour tree XML) [default: from the configuration folder]')
+            [CompletionResult]::new('--culture-kb', '--culture-kb', [CompletionResultType]::ParameterName, 'The culture knowledge base [default: from the configuration folder]')
+            [CompletionResult]::new('--culture-types', '--culture-types', [CompletionResultType]::ParameterName, 'The culture knowledge base''s types file [default: from the configuration folder]')
+            [CompletionResult]::new('--kb', '--kb', [CompletionResultType]::ParameterName, 'The environment knowledge base [default: from the configuration folder]')
+            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'The language the robot speaks [default: the culture knowledge base''s phraseLanguage]')
+            [CompletionResult]::new('--format', '--format', [CompletionResultType]::ParameterName, 'Output format')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
+            [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')
+            [CompletionResult]::new('--reader', '--reader', [CompletionResultType]::ParameterName, 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('--quiet', '--quiet', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'ekb;mission;walk' {
+            [CompletionResult]::new('--config-dir', '--config-dir', [CompletionResultType]::ParameterName, 'The robot''s configuration folder: its behaviorControllerConfiguration.ini, cultureKnowledgeBaseConfiguration.ini and environmentKnowledgeBaseConfiguration.ini name the files, in the sibling data/ folder [default: `[mission] config-dir` in ekb.toml]')
+            [CompletionResult]::new('--mission', '--mission', [CompletionResultType]::ParameterName, 'The mission (behaviour tree XML) [default: from the configuration folder]')
+            [CompletionResult]::new('--culture-kb', '--culture-kb', [CompletionResultType]::ParameterName, 'The culture knowledge base [default: from the configuration folder]')
+            [CompletionResult]::new('--culture-types', '--culture-types', [CompletionResultType]::ParameterName, 'The culture knowledge base''s types file [default: from the configuration folder]')
+            [CompletionResult]::new('--kb', '--kb', [CompletionResultType]::ParameterName, 'The environment knowledge base [default: from the configuration folder]')
+            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'The language the robot speaks [default: the culture knowledge base''s phraseLanguage]')
+            [CompletionResult]::new('--format', '--format', [CompletionResultType]::ParameterName, 'Output format')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
+            [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')
+            [CompletionResult]::new('--reader', '--reader', [CompletionResultType]::ParameterName, 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('--quiet', '--quiet', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'ekb;mission;help' {
+            [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Check the mission, the culture knowledge base and the environment knowledge base together')
+            [CompletionResult]::new('tree', 'tree', [CompletionResultType]::ParameterValue, 'Print the mission''s trees, with each node''s parameter and the phrase each SayText says')
+            [CompletionResult]::new('walk', 'walk', [CompletionResultType]::ParameterValue, 'A dry run of the mission on the happy path: the steps the robot takes, in order')
+            [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
+            break
+        }
+        'ekb;mission;help;check' {
+            break
+        }
+        'ekb;mission;help;tree' {
+            break
+        }
+        'ekb;mission;help;walk' {
+            break
+        }
+        'ekb;mission;help;help' {
+            break
+        }
         'ekb;help' {
             [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Validate knowledge-base files against every rule')
             [CompletionResult]::new('locations', 'locations', [CompletionResultType]::ParameterValue, 'A table of all locations')
@@ -308,6 +409,7 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('man', 'man', [CompletionResultType]::ParameterValue, 'Print the man page')
             [CompletionResult]::new('map', 'map', [CompletionResultType]::ParameterValue, 'Draw the tour on the lab map, as SVG or PNG')
             [CompletionResult]::new('report', 'report', [CompletionResultType]::ParameterValue, 'Write one HTML page to review: the map, the tour''s messages, the findings')
+            [CompletionResult]::new('mission', 'mission', [CompletionResultType]::ParameterValue, 'The behaviour-tree mission with both knowledge bases: check, tree, walk')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -354,6 +456,21 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             break
         }
         'ekb;help;report' {
+            break
+        }
+        'ekb;help;mission' {
+            [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Check the mission, the culture knowledge base and the environment knowledge base together')
+            [CompletionResult]::new('tree', 'tree', [CompletionResultType]::ParameterValue, 'Print the mission''s trees, with each node''s parameter and the phrase each SayText says')
+            [CompletionResult]::new('walk', 'walk', [CompletionResultType]::ParameterValue, 'A dry run of the mission on the happy path: the steps the robot takes, in order')
+            break
+        }
+        'ekb;help;mission;check' {
+            break
+        }
+        'ekb;help;mission;tree' {
+            break
+        }
+        'ekb;help;mission;walk' {
             break
         }
         'ekb;help;help' {

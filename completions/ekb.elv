@@ -44,6 +44,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand man 'Print the man page'
             cand map 'Draw the tour on the lab map, as SVG or PNG'
             cand report 'Write one HTML page to review: the map, the tour''s messages, the findings'
+            cand mission 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'ekb;check'= {
@@ -273,6 +274,97 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand -V 'Print version'
             cand --version 'Print version'
         }
+        &'ekb;mission'= {
+            cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
+            cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
+            cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
+            cand -v 'Print what is read, as it is read, on standard error'
+            cand --verbose 'Print what is read, as it is read, on standard error'
+            cand -q 'Print only findings and errors, no summary'
+            cand --quiet 'Print only findings and errors, no summary'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+            cand check 'Check the mission, the culture knowledge base and the environment knowledge base together'
+            cand tree 'Print the mission''s trees, with each node''s parameter and the phrase each SayText says'
+            cand walk 'A dry run of the mission on the happy path: the steps the robot takes, in order'
+            cand help 'Print this message or the help of the given subcommand(s)'
+        }
+        &'ekb;mission;check'= {
+            cand --config-dir 'The robot''s configuration folder: its behaviorControllerConfiguration.ini, cultureKnowledgeBaseConfiguration.ini and environmentKnowledgeBaseConfiguration.ini name the files, in the sibling data/ folder [default: `[mission] config-dir` in ekb.toml]'
+            cand --mission 'The mission (behaviour tree XML) [default: from the configuration folder]'
+            cand --culture-kb 'The culture knowledge base [default: from the configuration folder]'
+            cand --culture-types 'The culture knowledge base''s types file [default: from the configuration folder]'
+            cand --kb 'The environment knowledge base [default: from the configuration folder]'
+            cand --format 'Output format'
+            cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
+            cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
+            cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
+            cand --deny-warnings 'Exit 1 on warnings too'
+            cand -v 'Print what is read, as it is read, on standard error'
+            cand --verbose 'Print what is read, as it is read, on standard error'
+            cand -q 'Print only findings and errors, no summary'
+            cand --quiet 'Print only findings and errors, no summary'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
+        &'ekb;mission;tree'= {
+            cand --config-dir 'The robot''s configuration folder: its behaviorControllerConfiguration.ini, cultureKnowledgeBaseConfiguration.ini and environmentKnowledgeBaseConfiguration.ini name the files, in the sibling data/ folder [default: `[mission] config-dir` in ekb.toml]'
+            cand --mission 'The mission (behaviour tree XML) [default: from the configuration folder]'
+            cand --culture-kb 'The culture knowledge base [default: from the configuration folder]'
+            cand --culture-types 'The culture knowledge base''s types file [default: from the configuration folder]'
+            cand --kb 'The environment knowledge base [default: from the configuration folder]'
+            cand --lang 'The language the robot speaks [default: the culture knowledge base''s phraseLanguage]'
+            cand --format 'Output format'
+            cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
+            cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
+            cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
+            cand -v 'Print what is read, as it is read, on standard error'
+            cand --verbose 'Print what is read, as it is read, on standard error'
+            cand -q 'Print only findings and errors, no summary'
+            cand --quiet 'Print only findings and errors, no summary'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
+        &'ekb;mission;walk'= {
+            cand --config-dir 'The robot''s configuration folder: its behaviorControllerConfiguration.ini, cultureKnowledgeBaseConfiguration.ini and environmentKnowledgeBaseConfiguration.ini name the files, in the sibling data/ folder [default: `[mission] config-dir` in ekb.toml]'
+            cand --mission 'The mission (behaviour tree XML) [default: from the configuration folder]'
+            cand --culture-kb 'The culture knowledge base [default: from the configuration folder]'
+            cand --culture-types 'The culture knowledge base''s types file [default: from the configuration folder]'
+            cand --kb 'The environment knowledge base [default: from the configuration folder]'
+            cand --lang 'The language the robot speaks [default: the culture knowledge base''s phraseLanguage]'
+            cand --format 'Output format'
+            cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
+            cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
+            cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
+            cand -v 'Print what is read, as it is read, on standard error'
+            cand --verbose 'Print what is read, as it is read, on standard error'
+            cand -q 'Print only findings and errors, no summary'
+            cand --quiet 'Print only findings and errors, no summary'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
+        &'ekb;mission;help'= {
+            cand check 'Check the mission, the culture knowledge base and the environment knowledge base together'
+            cand tree 'Print the mission''s trees, with each node''s parameter and the phrase each SayText says'
+            cand walk 'A dry run of the mission on the happy path: the steps the robot takes, in order'
+            cand help 'Print this message or the help of the given subcommand(s)'
+        }
+        &'ekb;mission;help;check'= {
+        }
+        &'ekb;mission;help;tree'= {
+        }
+        &'ekb;mission;help;walk'= {
+        }
+        &'ekb;mission;help;help'= {
+        }
         &'ekb;help'= {
             cand check 'Validate knowledge-base files against every rule'
             cand locations 'A table of all locations'
@@ -289,6 +381,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand man 'Print the man page'
             cand map 'Draw the tour on the lab map, as SVG or PNG'
             cand report 'Write one HTML page to review: the map, the tour''s messages, the findings'
+            cand mission 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'ekb;help;check'= {
@@ -320,6 +413,17 @@ set edit:completion:arg-completer[ekb] = {|@words|
         &'ekb;help;map'= {
         }
         &'ekb;help;report'= {
+        }
+        &'ekb;help;mission'= {
+            cand check 'Check the mission, the culture knowledge base and the environment knowledge base together'
+            cand tree 'Print the mission''s trees, with each node''s parameter and the phrase each SayText says'
+            cand walk 'A dry run of the mission on the happy path: the steps the robot takes, in order'
+        }
+        &'ekb;help;mission;check'= {
+        }
+        &'ekb;help;mission;tree'= {
+        }
+        &'ekb;help;mission;walk'= {
         }
         &'ekb;help;help'= {
         }

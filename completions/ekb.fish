@@ -52,6 +52,7 @@ complete -c ekb -n "__fish_ekb_needs_command" -f -a "completions" -d 'Print a sh
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "man" -d 'Print the man page'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "map" -d 'Draw the tour on the lab map, as SVG or PNG'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "report" -d 'Write one HTML page to review: the map, the tour\'s messages, the findings'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "mission" -d 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l format -d 'Output format' -r -f -a "human\t'For people: each finding with the lines around it, underlined, and what to do'
 concise\t'One line per finding: `file:line:col: severity[rule] message`'
@@ -291,19 +292,120 @@ complete -c ekb -n "__fish_ekb_using_subcommand report" -s v -l verbose -d 'Prin
 complete -c ekb -n "__fish_ekb_using_subcommand report" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand report" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand report" -s V -l version -d 'Print version'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "check" -d 'Validate knowledge-base files against every rule'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "locations" -d 'A table of all locations'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "show" -d 'One location in full'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "tour" -d 'The tour in order, as the robot will say it in one language'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "diff" -d 'What changed between two knowledge bases, location by location'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "export" -d 'The typed model as JSON'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "import" -d 'JSON back to a canonical knowledge-base file'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "fmt" -d 'Rewrite files in the canonical layout'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "fix" -d 'Apply the machine-applicable fixes'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "rules" -d 'List the rule catalogue'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "explain" -d 'Show one rule\'s documentation'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "completions" -d 'Print a shell completion script'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "man" -d 'Print the man page'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "map" -d 'Draw the tour on the lab map, as SVG or PNG'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "report" -d 'Write one HTML page to review: the map, the tour\'s messages, the findings'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and not __fish_seen_subcommand_from check tree walk help" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and not __fish_seen_subcommand_from check tree walk help" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and not __fish_seen_subcommand_from check tree walk help" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and not __fish_seen_subcommand_from check tree walk help" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and not __fish_seen_subcommand_from check tree walk help" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and not __fish_seen_subcommand_from check tree walk help" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and not __fish_seen_subcommand_from check tree walk help" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and not __fish_seen_subcommand_from check tree walk help" -f -a "check" -d 'Check the mission, the culture knowledge base and the environment knowledge base together'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and not __fish_seen_subcommand_from check tree walk help" -f -a "tree" -d 'Print the mission\'s trees, with each node\'s parameter and the phrase each SayText says'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and not __fish_seen_subcommand_from check tree walk help" -f -a "walk" -d 'A dry run of the mission on the happy path: the steps the robot takes, in order'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and not __fish_seen_subcommand_from check tree walk help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from check" -l config-dir -d 'The robot\'s configuration folder: its behaviorControllerConfiguration.ini, cultureKnowledgeBaseConfiguration.ini and environmentKnowledgeBaseConfiguration.ini name the files, in the sibling data/ folder [default: `[mission] config-dir` in ekb.toml]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from check" -l mission -d 'The mission (behaviour tree XML) [default: from the configuration folder]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from check" -l culture-kb -d 'The culture knowledge base [default: from the configuration folder]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from check" -l culture-types -d 'The culture knowledge base\'s types file [default: from the configuration folder]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from check" -l kb -d 'The environment knowledge base [default: from the configuration folder]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from check" -l format -d 'Output format' -r -f -a "human\t'For people: each finding with the lines around it, underlined, and what to do'
+concise\t'One line per finding: `file:line:col: severity[rule] message`'
+json\t'One JSON object: every finding, with its fix, and a summary'
+github\t'GitHub Actions workflow commands (annotations)'
+sarif\t'SARIF 2.1.0, for GitHub code scanning and other SARIF viewers'"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from check" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from check" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from check" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from check" -l deny-warnings -d 'Exit 1 on warnings too'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from check" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from check" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from check" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from check" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l config-dir -d 'The robot\'s configuration folder: its behaviorControllerConfiguration.ini, cultureKnowledgeBaseConfiguration.ini and environmentKnowledgeBaseConfiguration.ini name the files, in the sibling data/ folder [default: `[mission] config-dir` in ekb.toml]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l mission -d 'The mission (behaviour tree XML) [default: from the configuration folder]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l culture-kb -d 'The culture knowledge base [default: from the configuration folder]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l culture-types -d 'The culture knowledge base\'s types file [default: from the configuration folder]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l kb -d 'The environment knowledge base [default: from the configuration folder]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l lang -d 'The language the robot speaks [default: the culture knowledge base\'s phraseLanguage]' -r -f -a "english\t''
+isizulu\t''
+kinyarwanda\t''
+en\t''
+zu\t''
+rw\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l format -d 'Output format' -r -f -a "text\t'For people'
+json\t'One JSON object'"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l config-dir -d 'The robot\'s configuration folder: its behaviorControllerConfiguration.ini, cultureKnowledgeBaseConfiguration.ini and environmentKnowledgeBaseConfiguration.ini name the files, in the sibling data/ folder [default: `[mission] config-dir` in ekb.toml]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l mission -d 'The mission (behaviour tree XML) [default: from the configuration folder]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l culture-kb -d 'The culture knowledge base [default: from the configuration folder]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l culture-types -d 'The culture knowledge base\'s types file [default: from the configuration folder]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l kb -d 'The environment knowledge base [default: from the configuration folder]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l lang -d 'The language the robot speaks [default: the culture knowledge base\'s phraseLanguage]' -r -f -a "english\t''
+isizulu\t''
+kinyarwanda\t''
+en\t''
+zu\t''
+rw\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l format -d 'Output format' -r -f -a "text\t'For people'
+json\t'One JSON object'"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from help" -f -a "check" -d 'Check the mission, the culture knowledge base and the environment knowledge base together'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from help" -f -a "tree" -d 'Print the mission\'s trees, with each node\'s parameter and the phrase each SayText says'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from help" -f -a "walk" -d 'A dry run of the mission on the happy path: the steps the robot takes, in order'
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "check" -d 'Validate knowledge-base files against every rule'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "locations" -d 'A table of all locations'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "show" -d 'One location in full'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "tour" -d 'The tour in order, as the robot will say it in one language'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "diff" -d 'What changed between two knowledge bases, location by location'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "export" -d 'The typed model as JSON'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "import" -d 'JSON back to a canonical knowledge-base file'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "fmt" -d 'Rewrite files in the canonical layout'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "fix" -d 'Apply the machine-applicable fixes'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "rules" -d 'List the rule catalogue'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "explain" -d 'Show one rule\'s documentation'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "completions" -d 'Print a shell completion script'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "man" -d 'Print the man page'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "map" -d 'Draw the tour on the lab map, as SVG or PNG'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "report" -d 'Write one HTML page to review: the map, the tour\'s messages, the findings'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "mission" -d 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and __fish_seen_subcommand_from mission" -f -a "check" -d 'Check the mission, the culture knowledge base and the environment knowledge base together'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and __fish_seen_subcommand_from mission" -f -a "tree" -d 'Print the mission\'s trees, with each node\'s parameter and the phrase each SayText says'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and __fish_seen_subcommand_from mission" -f -a "walk" -d 'A dry run of the mission on the happy path: the steps the robot takes, in order'

@@ -36,12 +36,28 @@ pub fn kept_at_most(rule: &Rule) -> usize {
     }
 }
 
+/// Which of the robot's files a checked file is (SPEC §11): most are environment knowledge
+/// bases; `ekb check` also takes the mission and the culture knowledge base's two files.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FileKind {
+    EnvironmentKnowledgeBase,
+    /// The behaviour tree (`labTour.xml`).
+    Mission,
+    /// `cultureKnowledgeBaseInput.dat`.
+    CultureKnowledgeBase,
+    /// `cultureKnowledgeValueTypesInput.dat`.
+    CultureValueTypes,
+}
+
 /// A checked file: what the robot would load, and what is wrong with it.
 #[derive(Debug)]
 pub struct Checked<'a> {
     pub source: &'a SourceFile,
+    pub kind: FileKind,
+    /// Empty unless the file is an environment knowledge base.
     pub kb: KnowledgeBase<'a>,
-    /// The version of the robot's reader it was checked against.
+    /// The version of the robot's reader it was checked against (of an environment
+    /// knowledge base; the other kinds of file have readers of their own).
     pub reader: Reader,
     /// The findings (at most [`kept_at_most`] of each rule), sorted by position.
     pub diagnostics: Vec<Diagnostic>,
@@ -84,6 +100,16 @@ impl Checked<'_> {
         self.diagnostics.retain(is_error);
         self.omitted.retain(is_error);
         self
+    }
+
+    /// Adds findings made about this file from another file's point of view (the mission's
+    /// about its tour), keeping them in order.
+    pub fn extend(&mut self, more: Vec<Diagnostic>) {
+        if more.is_empty() {
+            return;
+        }
+        self.diagnostics.extend(more);
+        sort_by_position(&mut self.diagnostics);
     }
 
     /// The findings that say the reader crashes on the file (a tree too deep, two split
@@ -150,27 +176,30 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
     if let Some(foreign) = structure::not_a_knowledge_base::check(source.text()) {
         // One finding says it all: each of its lines would be an `unknown-key`.
         out.push(foreign);
-        let Diagnostics {
-            kept: mut diagnostics,
-            counts,
-        } = out;
-        sort_by_position(&mut diagnostics);
-        return Checked {
-            source,
-            kb: KnowledgeBase::default(),
-            reader: options
-                .reader
-                .unwrap_or(Reader::default_for(options.dialect)),
-            omitted: omitted_notes(&diagnostics, &counts),
-            diagnostics,
-            counts,
-        };
+        let reader = options
+            .reader
+            .unwrap_or(Reader::default_for(options.dialect));
+        return finish(source, FileKind::EnvironmentKnowledgeBase, reader, out);
     }
     let kb = build(source.text(), options, &mut out);
     let reader = options
         .reader
         .unwrap_or_else(|| Reader::default_for(options.dialect.or(kb.dialect)));
     rules::check_model(&kb, source.text(), reader, &mut out);
+    Checked {
+        kb,
+        ..finish(source, FileKind::EnvironmentKnowledgeBase, reader, out)
+    }
+}
+
+/// A checked file of `kind` with the findings `out`, sorted, and no model of an
+/// environment knowledge base.
+pub fn finish(
+    source: &SourceFile,
+    kind: FileKind,
+    reader: Reader,
+    out: Diagnostics,
+) -> Checked<'_> {
     let Diagnostics {
         kept: mut diagnostics,
         counts,
@@ -179,7 +208,8 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
     let omitted = omitted_notes(&diagnostics, &counts);
     Checked {
         source,
-        kb,
+        kind,
+        kb: KnowledgeBase::default(),
         reader,
         diagnostics,
         omitted,

@@ -10,6 +10,8 @@ use clap::{Parser, Subcommand, ValueEnum};
 
 use crate::commands::{self, Context};
 use crate::render::escape::escape;
+use crate::stderr_line;
+use crate::streams;
 
 /// Author and validate the environment knowledge base of a tour-guide robot.
 #[derive(Debug, Parser)]
@@ -85,6 +87,8 @@ pub enum Command {
     Map(commands::map::Args),
     /// Write one HTML page to review: the map, the tour's messages, the findings
     Report(commands::report::Args),
+    /// The behaviour-tree mission with both knowledge bases: check, tree, walk
+    Mission(commands::mission::Args),
 }
 
 /// Parses the command line, runs the command and turns the outcome into an exit code.
@@ -107,14 +111,30 @@ pub fn main() -> ExitCode {
         Command::Man(args) => commands::man::run(args, &context),
         Command::Map(args) => commands::map::run(args, &context),
         Command::Report(args) => commands::report::run(args, &context),
+        Command::Mission(args) => commands::mission::run(args, &context),
     };
-    match outcome {
-        Ok(exit) => exit.into(),
-        Err(commands::CommandError::OutputClosed) => commands::Exit::Clean.into(),
+    let exit = match outcome {
+        Ok(exit) => exit,
+        Err(commands::CommandError::OutputClosed) => {
+            streams::stdout_failed();
+            commands::Exit::Failure
+        }
         Err(error) => {
             // Errors quote file names and file text: never let them drive the terminal.
-            eprintln!("ekb: error: {}", escape(&error.to_string()));
+            stderr_line!("ekb: error: {}", escape(&error.to_string()));
+            commands::Exit::Failure
+        }
+    };
+    // A stream that could not be written (`ekb export | head -c1`): what it should have
+    // carried is lost, so the command failed, whatever else it did.
+    match streams::failure() {
+        Some(stream) => {
+            stderr_line!(
+                "ekb: error: cannot write to {stream}: it was closed before ekb finished \
+                 (whoever read it stopped reading)"
+            );
             commands::Exit::Failure.into()
         }
+        None => exit.into(),
     }
 }

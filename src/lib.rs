@@ -1,7 +1,8 @@
 //! `ekb`: author and validate the environment knowledge base of a tour-guide robot.
 //!
 //! The layers, from the bytes up:
-//! - [`source`]: a file read from disk (always valid UTF-8 text, invalid bytes recorded);
+//! - [`source`]: a file read from disk (always valid UTF-8 text, invalid bytes recorded;
+//!   UTF-16 and UTF-32, which [`encoding`] recognises, refused);
 //! - [`syntax`]: the lossless line syntax, every byte in a span;
 //! - [`model`]: the typed knowledge base, as written; its builder reports what is wrong
 //!   with a line as facts, through a trait the rules implement, and names no rule;
@@ -16,7 +17,11 @@
 //! - [`generate`]: synthetic knowledge bases of any size, for benchmarks and tests;
 //! - [`config`] (the robot's INI) and [`settings`] (`ekb.toml`): where the file is and how
 //!   to check it;
-//! - [`cli`]: the `ekb` command line, one module per command under `commands`.
+//! - [`cli`]: the `ekb` command line, one module per command under `commands`; [`streams`]:
+//!   standard output and error, written without a panic.
+
+// Output goes through `streams`, which never panics on a closed stream.
+#![deny(clippy::print_stdout, clippy::print_stderr)]
 
 pub mod canonical;
 pub mod check;
@@ -26,9 +31,11 @@ pub mod config;
 pub mod diagnostic;
 pub mod diff;
 pub mod draw;
+pub mod encoding;
 pub mod fixing;
 pub mod generate;
 pub mod map;
+pub mod mission;
 pub mod model;
 mod parallel;
 pub mod present;
@@ -39,6 +46,7 @@ pub mod rewrite;
 pub mod rules;
 pub mod settings;
 pub mod source;
+pub mod streams;
 pub mod syntax;
 pub mod write;
 

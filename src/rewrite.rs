@@ -1,5 +1,13 @@
 //! What `ekb fmt` and `ekb fix` share once they know a file's new text: show it as a diff,
 //! write it in place, or send it to standard output; and the refusals that come before.
+//!
+//! A command that rewrites a knowledge base (`fix`, `fmt`, and `set` or `import --po` to
+//! come) takes its files from [`crate::commands::Context::files_to_rewrite`] (which will
+//! not rewrite a configured file outside the configuration's project unless it is named),
+//! reads each with [`crate::commands::Context::read`], calls [`ensure_rewritable`], then
+//! [`deliver`], which writes through [`crate::write::rewrite`]: refused if the file changed
+//! since it was read, and every other guard of [`crate::write`]. [`for_each_file`] goes
+//! on after a file that failed.
 
 use std::io::{self, IsTerminal, Write};
 use std::path::Path;
@@ -11,7 +19,9 @@ use crate::commands::{CommandError, Exit};
 use crate::render::escape::escape;
 use crate::rules::structure::not_a_knowledge_base;
 use crate::source::{LineIndex, SourceFile};
-use crate::write::write_atomically;
+use crate::stderr_line;
+use crate::streams;
+use crate::write;
 
 /// What to do with a file's new text.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -68,14 +78,17 @@ pub fn deliver(
         Mode::Diff if changed => print_diff(source.name(), old, new, style)?,
         Mode::Diff => {}
         Mode::Write if stdin => io::stdout().lock().write_all(new.as_bytes())?,
-        Mode::Write if changed => write_atomically(path, new.as_bytes())?,
+        Mode::Write if changed => match source.stamp() {
+            Some(read_as) => write::rewrite(path, new.as_bytes(), read_as)?,
+            None => write::write_atomically(path, new.as_bytes())?,
+        },
         Mode::Write => {}
     }
     Ok(changed)
 }
 
-/// Runs `each` on every path, going on after a failure (reported on standard error), and
-/// returns the worst exit.
+/// Runs `each` on every path, going on after a failure (reported on standard error; a
+/// closed standard output is told once, at the end), and returns the worst exit.
 pub fn for_each_file(
     paths: &[std::path::PathBuf],
     mut each: impl FnMut(&Path) -> Result<Exit, CommandError>,
@@ -83,7 +96,12 @@ pub fn for_each_file(
     let mut worst = Exit::Clean;
     for path in paths {
         let exit = each(path).unwrap_or_else(|error| {
-            eprintln!("ekb: error: {error}");
+            match error {
+                CommandError::OutputClosed => streams::stdout_failed(),
+                CommandError::Failed(message) => {
+                    stderr_line!("ekb: error: {}", escape(&message));
+                }
+            }
             Exit::Failure
         });
         if exit as u8 > worst as u8 {

@@ -43,7 +43,8 @@ impl Settings {
             FILE_NAMES
                 .iter()
                 .map(|name| folder.join(name))
-                .find(|path| path.is_file())
+                // Not only a regular file: a FIFO or a folder there is refused, not skipped.
+                .find(|path| path.exists())
         });
         match found {
             Some(path) => Settings::load(&path),
@@ -51,10 +52,11 @@ impl Settings {
         }
     }
 
-    /// Reads the settings file at `path`.
+    /// Reads the settings file at `path`, with the guards of a knowledge base (a regular
+    /// file of at most [`crate::source::MAX_SETTINGS_SIZE`], in UTF-8).
     pub fn load(path: &Path) -> Result<Settings, String> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| format!("cannot read settings {}: {e}", path.display()))?;
+        let text = crate::source::read_settings_text(path)
+            .map_err(|reason| format!("cannot read settings {}: {reason}", path.display()))?;
         let mut settings = Settings::parse(&text)
             .map_err(|reason| format!("settings {}:{reason}", path.display()))?;
         settings.path = Some(path.to_path_buf());

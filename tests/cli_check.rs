@@ -194,9 +194,27 @@ fn run_concise(files: &[&str]) -> Run {
 }
 
 #[test]
-fn one_unreadable_file_among_several_exits_2() {
-    let run = run(ekb().args(["check", "clean-seed.dat", "no-such.dat"]));
-    assert_failure(&run, "no-such.dat");
+fn one_unreadable_file_among_several_is_told_and_the_others_are_checked() {
+    // Issue 12: the files before and after the missing one are reported; the exit is 2.
+    let run = run(ekb().args([
+        "check",
+        "--format",
+        "concise",
+        "clean-seed.dat",
+        "no-such.dat",
+        "seed.dat",
+    ]));
+    assert_eq!(run.code, 2, "{}", run.stderr);
+    assert_eq!(
+        run.stderr,
+        "ekb: error: cannot read no-such.dat: no such file\n"
+    );
+    assert!(run.stdout.starts_with(&seed_concise()), "{}", run.stdout);
+    // Only unreadable files: no report at all.
+    let none = self::run(ekb().args(["check", "no-such.dat", "nor-this.dat"]));
+    assert_eq!(none.code, 2);
+    assert_eq!(none.stdout, "");
+    assert_eq!(none.stderr.lines().count(), 2, "{}", none.stderr);
 }
 
 #[test]

@@ -128,17 +128,42 @@ fn fix_changes_only_the_bytes_of_the_fixes() {
 }
 
 #[test]
-fn fix_converts_a_doubled_crlf_ending_in_one_run() {
-    // A file converted to CRLF twice, and inputs the fuzzer found (a last line without an
-    // ending, `\r`s and blanks mixed): the `\r`s before a newline are one ending.
-    let text = "robotLocationDescription 1 Roomba\r\r\n\
-                robotLocationDescription 2 Pepper\r\r\t\r\r\r \r\r\t\r\r\r\r\r\r\r\r\r\r\r\r";
+fn fix_converts_only_the_crlf_endings_it_reports() {
+    // Issue 12: in `\r\r\n` (a file converted to CRLF twice, or a `\r` typed into a
+    // value) the first `\r` is part of the line's text. Converting the ending would make it
+    // the next ending, and the next pass would take it away unreported: the line is left,
+    // and reported, for a person.
+    let text = "robotLocationDescription 1 Roomba\r\r\nrobotLocationDescription 2 Pepper\r\n";
     ekb()
         .args(["fix", "-"])
         .write_stdin(text)
         .assert()
         .code(1)
-        .stdout("robotLocationDescription 1 Roomba\nrobotLocationDescription 2 Pepper\n");
+        .stdout("robotLocationDescription 1 Roomba\r\r\nrobotLocationDescription 2 Pepper\n")
+        .stderr(contains("<stdin>: fixed 1 compat-crlf\n"))
+        .stderr(contains(
+            "<stdin>:1:34: error[compat-crlf] this line ends with CRLF after another `\\r`",
+        ));
+}
+
+#[test]
+fn fix_of_carriage_returns_and_blanks_is_idempotent() {
+    // Inputs the fuzzer found: `\r`s and blanks mixed before an ending, a last line without
+    // one. One run gives what a second leaves alone.
+    let text = "robotLocationDescription 1 Roomba\r\r\n\
+                robotLocationDescription 2 Pepper\r\r\t\r\r\r \r\r\t\r\r\r\r\r\r\r\r\r\r\r\r";
+    let fix = |input: &str| {
+        let output = ekb()
+            .args(["fix", "-"])
+            .write_stdin(input)
+            .output()
+            .unwrap();
+        assert_eq!(output.status.code(), Some(1), "{output:?}");
+        String::from_utf8(output.stdout).unwrap()
+    };
+    let once = fix(text);
+    assert_eq!(fix(&once), once);
+    assert!(once.ends_with('\n'), "{once:?}");
 }
 
 #[test]

@@ -17,7 +17,7 @@ use ekb::map::LabMap;
 use ekb::model::build::Options;
 use ekb::model::Dialect;
 use ekb::reader::Reader;
-use ekb::rules::{self, Rule};
+use ekb::rules::{self, Category, Rule};
 use ekb::source::{LineIndex, Position};
 use ekb::{Severity, SourceFile};
 
@@ -286,10 +286,16 @@ rule_tests! {
 /// crash a reader takes thousands of locations.
 const GENERATED_FIXTURES: &[&str] = &["compat-reader-crash", "compat-slow-load"];
 
+/// The mission's and the culture knowledge base's rules look at several files together:
+/// they are proven in tests/mission.rs, with fixtures of their own.
+fn is_proven_in_mission_tests(rule: &Rule) -> bool {
+    matches!(rule.category, Category::Mission | Category::Culture)
+}
+
 #[test]
 fn every_rule_has_fixtures_and_a_test() {
     for rule in rules::ALL {
-        if GENERATED_FIXTURES.contains(&rule.name) {
+        if GENERATED_FIXTURES.contains(&rule.name) || is_proven_in_mission_tests(rule) {
             continue;
         }
         let dir = fixtures().join("rules").join(rule.name);
@@ -307,8 +313,12 @@ fn every_rule_has_fixtures_and_a_test() {
             rule.name
         );
     }
+    let mission_rules = rules::ALL
+        .iter()
+        .filter(|rule| is_proven_in_mission_tests(rule))
+        .count();
     assert_eq!(
-        TESTED.len() + GENERATED_FIXTURES.len(),
+        TESTED.len() + GENERATED_FIXTURES.len() + mission_rules,
         rules::ALL.len(),
         "a test names no rule"
     );
@@ -362,6 +372,25 @@ fn the_catalogue_is_the_specified_one() {
         ("pose-outside-map", Error, false),
         ("pose-in-obstacle", Error, false),
         ("target-outside-map", Warning, false),
+        ("mission-invalid-xml", Error, false),
+        ("mission-unknown-node", Error, false),
+        ("mission-bad-children", Error, false),
+        ("mission-unknown-attribute", Error, false),
+        ("mission-unknown-tree", Error, false),
+        ("mission-invalid-name", Error, false),
+        ("mission-language-invalid", Error, false),
+        ("mission-missing-phrase", Error, false),
+        ("mission-untranslated-tour", Error, false),
+        ("mission-missing-format", Warning, false),
+        ("mission-unreachable-tree", Warning, false),
+        ("cultural-knowledge-unknown-key", Warning, false),
+        ("culture-unknown-key", Error, false),
+        ("culture-type-mismatch", Error, false),
+        ("culture-unknown-type", Error, false),
+        ("culture-duplicate-key", Warning, false),
+        ("culture-line-too-long", Error, false),
+        ("culture-no-final-newline", Warning, false),
+        ("culture-crlf", Error, false),
     ];
     let actual: Vec<(&str, Severity, bool)> = rules::ALL
         .iter()
@@ -723,20 +752,25 @@ fn compat_crlf_fix() {
 }
 
 #[test]
-fn blanks_within_a_crlf_ending_are_its_own_to_remove() {
-    // Found by the proptest: `\r \r\n` is one ending, so trailing-whitespace must not also
-    // remove its blank, or the two fixes overlap.
+fn a_carriage_return_before_a_crlf_ending_is_left_to_a_person() {
+    // Issue 12: in `\r \r\n` the first `\r` is part of the line's text, not of its ending.
+    // compat-crlf reports the line without a fix (converting the ending would make the `\r`
+    // the next one, removed unreported by the next pass), and the blank is trailing
+    // whitespace, whose fix does not overlap the ending.
     for text in ["\r \r\n", "robotLocationDescription 1 Roomba\r\t\r \r\n"] {
         let source = SourceFile::from_bytes("crlf", text.as_bytes().to_vec());
         let all = findings_of(&source, Options::default());
+        let crlf = of_rule(&all, "compat-crlf");
+        assert_eq!(crlf.len(), 1, "{text:?}:\n{}", show(&all));
+        assert!(crlf[0].diagnostic.fix.is_none(), "{text:?}");
         assert_eq!(
-            of_rule(&all, "compat-crlf").len(),
-            1,
-            "{text:?}:\n{}",
-            show(&all)
+            crlf[0].column as usize,
+            text.rfind("\r ").unwrap() + 1,
+            "{text:?}"
         );
-        assert!(
-            of_rule(&all, "trailing-whitespace").is_empty(),
+        assert_eq!(
+            of_rule(&all, "trailing-whitespace").len(),
+            1,
             "{text:?}:\n{}",
             show(&all)
         );
@@ -745,7 +779,7 @@ fn blanks_within_a_crlf_ending_are_its_own_to_remove() {
             .filter_map(|f| f.diagnostic.fix.as_ref())
             .flat_map(|fix| &fix.edits)
             .collect();
-        assert!(apply(text, &edits).ends_with('\n'));
+        assert_eq!(apply(text, &edits), text.replace(" \r\n", "\r\n"));
     }
 }
 

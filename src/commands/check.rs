@@ -3,13 +3,14 @@
 use std::io::Write;
 use std::path::PathBuf;
 
-use super::map::{check_on_map, MapArgs};
+use super::map::{on_map, MapArgs};
 use super::{CommandError, CommandResult, Context, Exit};
-use crate::check::{check, Checked};
+use crate::check::Checked;
 use crate::diagnostic::Summary;
-use crate::model::build::Options;
+use crate::mission::check::check_file;
+use crate::render::escape::escape;
 use crate::render::{self, Format, RenderOptions};
-use crate::source::SourceFile;
+use crate::stderr_line;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -31,26 +32,60 @@ pub struct Args {
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
     let paths = context.inputs(&args.files)?;
-    let options = paths
-        .iter()
-        .map(|path| context.read_options(path))
-        .collect::<Result<Vec<Options>, _>>()?;
-    let sources = paths
-        .iter()
-        .map(|path| context.read(path))
-        .collect::<Result<Vec<SourceFile>, _>>()?;
+    // A bad configuration fails every file alike: once, here.
+    context.config()?;
+    // No `[map] config` from ekb.toml here yet: `MapArgs::load` takes it as its argument.
     let map = args.map.load(None)?;
+    // A file that cannot be read is told at once and the others are checked all the same;
+    // the exit is 2 then. If none can be read, there is no report.
+    let mut unreadable = false;
+    let mut sources = Vec::with_capacity(paths.len());
+    let mut options = Vec::with_capacity(paths.len());
+    for path in &paths {
+        match context
+            .read_options(path)
+            .and_then(|read_options| Ok((read_options, context.read(path)?)))
+        {
+            Ok((read_options, source)) => {
+                options.push(read_options);
+                sources.push(source);
+            }
+            Err(error) => {
+                stderr_line!("ekb: error: {}", escape(&error.to_string()));
+                unreadable = true;
+            }
+        }
+    }
+    if sources.is_empty() {
+        return Ok(Exit::Failure);
+    }
+    // A mission or a culture file is recognised by its content and checked alone.
     let checked: Vec<Checked> = sources
         .iter()
         .zip(&options)
-        .map(|(source, options)| match &map {
-            Some(map) => check_on_map(source, options, Some(map)).0,
-            None => check(source, options),
+        .map(|(source, options)| {
+            let checked = check_file(source, options);
+            match &map {
+                Some(map) => on_map(checked, Some(map)).0,
+                None => checked,
+            }
         })
         .collect();
+    let exit = report(&checked, args.format, args.deny_warnings, context)?;
+    Ok(if unreadable { Exit::Failure } else { exit })
+}
+
+/// Renders the findings of `checked` in `format` on standard output, and gives the exit
+/// code of SPEC §5.
+pub fn report(
+    checked: &[Checked<'_>],
+    format: Format,
+    deny_warnings: bool,
+    context: &Context,
+) -> CommandResult {
     // Checked::summary also counts the findings past the cap of each rule (check.rs).
     let mut summary = Summary::default();
-    for file in &checked {
+    for file in checked {
         let one = file.summary();
         summary.files += one.files;
         summary.errors += one.errors;
@@ -62,21 +97,16 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         color: context.color_stdout(),
         quiet: context.quiet,
     };
-    let failed = summary.errors > 0 || (args.deny_warnings && summary.warnings > 0);
+    let failed = summary.errors > 0 || (deny_warnings && summary.warnings > 0);
     let exit = if failed { Exit::Findings } else { Exit::Clean };
     // Buffered: a large file can have hundreds of thousands of findings, one line each.
     let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
-    let written = render::render(
-        args.format,
-        &checked,
-        &summary,
-        &mut stdout,
-        &render_options,
-    )
-    .and_then(|()| stdout.flush());
+    let written = render::render(format, checked, &summary, &mut stdout, &render_options)
+        .and_then(|()| stdout.flush());
     match written {
-        // A reader that stops early (`ekb check | head`) is not a failure of the check.
-        Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => Ok(exit),
+        Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => {
+            Err(CommandError::OutputClosed)
+        }
         Err(error) => Err(CommandError::Failed(format!(
             "cannot write the report: {error}"
         ))),

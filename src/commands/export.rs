@@ -9,6 +9,8 @@ use crate::model::export::{ExportView, ExportedKnowledgeBase};
 use crate::reader::{self, export::LoadedExport};
 use crate::render::safe_json as json;
 use crate::render::{self, escape::escape, Format, RenderOptions};
+use crate::streams;
+use crate::write;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -95,7 +97,7 @@ fn export_as_loaded(args: &Args, context: &Context, mut checked: Checked<'_>) ->
 /// Shows `checked`'s findings on standard error, concisely, then `why`: exit 1.
 fn report_to_stderr(checked: Checked<'_>, why: &str, context: &Context) -> CommandResult {
     let summary = checked.summary();
-    let mut stderr = std::io::stderr().lock();
+    let mut stderr = streams::stderr();
     let render_options = RenderOptions {
         color: context.color_stderr(),
         quiet: true,
@@ -119,7 +121,7 @@ fn plural(count: usize, word: &str) -> String {
     }
 }
 
-/// Writes JSON to `output` (atomically: a temporary file, then a rename) or standard output.
+/// Writes JSON to `output` (through [`crate::write`]) or standard output.
 fn write_output(output: Option<&Path>, value: &impl serde::Serialize) -> Result<(), CommandError> {
     let Some(path) = output.filter(|path| *path != Path::new("-")) else {
         let mut stdout = std::io::stdout().lock();
@@ -127,32 +129,6 @@ fn write_output(output: Option<&Path>, value: &impl serde::Serialize) -> Result<
         stdout.flush()?;
         return Ok(());
     };
-    let fail =
-        |reason: String| CommandError::Failed(format!("cannot write {}: {reason}", path.display()));
-    let dir = match path.parent() {
-        Some(parent) if !parent.as_os_str().is_empty() => parent,
-        _ => Path::new("."),
-    };
-    let mut file = tempfile::NamedTempFile::new_in(dir).map_err(|e| fail(e.to_string()))?;
-    json::write(value, &mut file).map_err(|e| fail(e.to_string()))?;
-    // A temporary file is private (0600); the export gets the permissions of the file it
-    // replaces, or those of an ordinary new file.
-    let permissions = match std::fs::metadata(path) {
-        Ok(metadata) => metadata.permissions(),
-        Err(_) => ordinary_permissions(file.as_file()).map_err(|e| fail(e.to_string()))?,
-    };
-    file.as_file()
-        .set_permissions(permissions)
-        .map_err(|e| fail(e.to_string()))?;
-    file.persist(path).map_err(|e| fail(e.error.to_string()))?;
+    write::write_streamed(path, |out| json::write(value, out))?;
     Ok(())
-}
-
-/// The permissions of a new export: the temporary file's (0600) opened up to 0644 on Unix.
-fn ordinary_permissions(temporary: &std::fs::File) -> std::io::Result<std::fs::Permissions> {
-    #[allow(unused_mut)]
-    let mut permissions = temporary.metadata()?.permissions();
-    #[cfg(unix)]
-    std::os::unix::fs::PermissionsExt::set_mode(&mut permissions, 0o644);
-    Ok(permissions)
 }

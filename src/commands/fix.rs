@@ -13,6 +13,7 @@ use crate::reader::Reader;
 use crate::render::escape::escape;
 use crate::rewrite::{self, DiffStyle, Mode};
 use crate::source::SourceFile;
+use crate::stderr_line;
 use crate::syntax::{self, Body};
 
 #[derive(Debug, clap::Args)]
@@ -31,7 +32,7 @@ pub struct Args {
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
-    let paths = context.inputs(&args.files)?;
+    let paths = context.files_to_rewrite(&args.files)?;
     Ok(rewrite::for_each_file(&paths, |path| {
         let mut options = context.read_options(path)?;
         if let Some(target) = args.dialect {
@@ -133,22 +134,22 @@ fn report(
         } else {
             "fixed"
         };
-        eprintln!("{name}: {verb} {}", fixed.join(", "));
+        stderr_line!("{name}: {verb} {}", fixed.join(", "));
     }
-    errors_to_stderr(&mut checked)?;
+    errors_to_stderr(&mut checked);
     if !context.quiet {
         if summary.errors > 0 {
             let s = if summary.errors == 1 { "" } else { "s" };
-            eprintln!(
+            stderr_line!(
                 "{name}: {} error{s} left to correct by hand",
                 summary.errors
             );
         } else if counts.is_empty() {
-            eprintln!("{name}: nothing to fix");
+            stderr_line!("{name}: nothing to fix");
         }
         if summary.warnings > 0 {
             let s = if summary.warnings == 1 { "" } else { "s" };
-            eprintln!(
+            stderr_line!(
                 "{name}: {} warning{s} left (`ekb check` lists them)",
                 summary.warnings
             );

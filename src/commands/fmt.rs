@@ -6,6 +6,7 @@ use super::{CommandError, CommandResult, Context, Exit};
 use crate::canonical::Document;
 use crate::render::escape::escape;
 use crate::rewrite::{self, DiffStyle, Mode};
+use crate::stderr_line;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -23,7 +24,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let style = DiffStyle {
         color: context.color_stdout(),
     };
-    let paths = context.inputs(&args.files)?;
+    let paths = context.files_to_rewrite(&args.files)?;
     let (mut changed, mut done) = (0, 0);
     let worst = rewrite::for_each_file(&paths, |path| {
         let did_change = format_file(path, context, mode, style)?;
@@ -37,7 +38,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         })
     });
     if !context.quiet && done > 0 {
-        eprintln!("{}", summary(mode, changed, done));
+        stderr_line!("{}", summary(mode, changed, done));
     }
     Ok(worst)
 }

@@ -14,6 +14,7 @@ use crate::model::build::Options;
 use crate::model::export::ExportedKnowledgeBase;
 use crate::render::escape::escape;
 use crate::source::SourceFile;
+use crate::stderr_line;
 use crate::write::write_atomically;
 
 #[derive(Debug, clap::Args)]
@@ -63,15 +64,13 @@ fn report_errors(written: &SourceFile, options: &Options, context: &Context) -> 
     if errors == 0 {
         return Ok(Exit::Clean);
     }
-    errors_to_stderr(&mut checked)?;
-    let mut stderr = std::io::stderr().lock();
+    errors_to_stderr(&mut checked);
     if !context.quiet {
         let s = if errors == 1 { "" } else { "s" };
-        writeln!(
-            stderr,
+        stderr_line!(
             "{}: written with {errors} error{s} to correct by hand (`ekb check` lists every finding)",
             escape(written.name())
-        )?;
+        );
     }
     Ok(Exit::Findings)
 }

@@ -13,6 +13,7 @@ use crate::present;
 use crate::reader::{self, Loaded};
 use crate::render::escape::escape;
 use crate::source::SourceFile;
+use crate::stderr_line;
 
 /// Where the lab map comes from: `check`, `map` and `report` take these.
 #[derive(Debug, Clone, Default, clap::Args)]
@@ -65,8 +66,13 @@ pub fn check_on_map<'a>(
     options: &Options,
     map: Option<&LabMap>,
 ) -> (Checked<'a>, Loaded<'a>) {
-    let mut checked = check(source, options);
-    let loaded = reader::load(source.text().as_bytes(), checked.reader);
+    on_map(check(source, options), map)
+}
+
+/// `checked` with the map rules run on it when there is a map, and its file as the reader
+/// it was checked against loads it.
+pub fn on_map<'a>(mut checked: Checked<'a>, map: Option<&LabMap>) -> (Checked<'a>, Loaded<'a>) {
+    let loaded = reader::load(checked.source.text().as_bytes(), checked.reader);
     if let Some(map) = map {
         checked.check_map(map, &loaded);
     }
@@ -142,14 +148,14 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         PictureFormat::Png => {
             let rendered = draw::png::render(&scene).map_err(CommandError::Failed)?;
             for warning in &rendered.warnings {
-                eprintln!("ekb: warning: {warning}");
+                stderr_line!("ekb: warning: {warning}");
             }
             rendered.png
         }
     };
     write_output(output, &bytes)?;
     if let (Some(path), false) = (output, context.quiet) {
-        eprintln!("ekb: wrote {}", escape(&path.display().to_string()));
+        stderr_line!("ekb: wrote {}", escape(&path.display().to_string()));
     }
     Ok(Exit::Clean)
 }

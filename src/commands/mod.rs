@@ -11,6 +11,7 @@ pub mod import;
 pub mod locations;
 pub mod man;
 pub mod map;
+pub mod mission;
 pub mod report;
 pub mod rules;
 pub mod show;
@@ -32,6 +33,8 @@ use crate::render::escape::escape;
 use crate::render::{concise, FileReport, RenderOptions};
 use crate::settings::Settings;
 use crate::source::SourceFile;
+use crate::stderr_line;
+use crate::streams;
 
 /// The exit codes of SPEC §5.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -82,7 +85,7 @@ pub type CommandResult = Result<Exit, CommandError>;
 
 /// Lists the errors of `checked` on standard error, a concise line each, and drops its
 /// other findings (for commands that write a file and tell what a person must still do).
-fn errors_to_stderr(checked: &mut Checked<'_>) -> std::io::Result<()> {
+fn errors_to_stderr(checked: &mut Checked<'_>) {
     checked
         .diagnostics
         .retain(|diagnostic| diagnostic.severity() == Severity::Error);
@@ -90,12 +93,13 @@ fn errors_to_stderr(checked: &mut Checked<'_>) -> std::io::Result<()> {
         color: false,
         quiet: true,
     };
-    concise::render(
+    // Standard error never fails (streams::stderr); a failure is remembered there.
+    let _ = concise::render(
         &[FileReport::new(checked)],
         &Summary::default(),
-        &mut std::io::stderr().lock(),
+        &mut streams::stderr(),
         &findings_only,
-    )
+    );
 }
 
 /// What every command may need: the global options and the configuration (read once, and
@@ -143,7 +147,7 @@ impl Context {
         }
         let config = Config::discover(self.config_path.as_deref())?;
         for warning in &config.warnings {
-            eprintln!("ekb: warning: {}", escape(warning));
+            stderr_line!("ekb: warning: {}", escape(warning));
         }
         Ok(self.config.get_or_init(|| config))
     }
@@ -179,21 +183,78 @@ impl Context {
         if !files.is_empty() {
             return Ok(files.to_vec());
         }
-        Ok(vec![self.config()?.knowledge_base()?.to_path_buf()])
+        Ok(vec![self.configured_knowledge_base()?])
     }
 
     /// The one file to work on: the one given, else the configured knowledge base.
     pub fn input(&self, file: Option<&Path>) -> Result<PathBuf, CommandError> {
         match file {
             Some(file) => Ok(file.to_path_buf()),
-            None => Ok(self.config()?.knowledge_base()?.to_path_buf()),
+            None => self.configured_knowledge_base(),
         }
+    }
+
+    /// The files a command may rewrite in place: [`Context::inputs`], but a configured
+    /// knowledge base outside the configuration's project folder (`knowledgeBase
+    /// /etc/passwd`, or `../../..`) is refused: such a file is rewritten only when named on
+    /// the command line.
+    pub fn files_to_rewrite(&self, files: &[PathBuf]) -> Result<Vec<PathBuf>, CommandError> {
+        let paths = self.inputs(files)?;
+        if !files.is_empty() {
+            return Ok(paths);
+        }
+        let config = self.config()?;
+        match config.locate_knowledge_base() {
+            Some(location) if !location.inside => Err(CommandError::Failed(format!(
+                "the knowledgeBase of configuration {} is {}, outside the configuration's \
+                 project folder {}: ekb rewrites a file outside the project only when you \
+                 name it on the command line",
+                config.path.as_deref().unwrap_or(Path::new("")).display(),
+                location.file.display(),
+                location.project.display()
+            ))),
+            _ => Ok(paths),
+        }
+    }
+
+    /// The configured knowledge base; with `-v`, where it really points.
+    fn configured_knowledge_base(&self) -> Result<PathBuf, CommandError> {
+        let config = self.config()?;
+        let path = config.knowledge_base()?.to_path_buf();
+        if let (true, Some(location)) = (self.verbose(), config.locate_knowledge_base()) {
+            let outside = if location.inside {
+                String::new()
+            } else {
+                format!(
+                    ", outside its project folder {}",
+                    escape(&location.project.display().to_string())
+                )
+            };
+            stderr_line!(
+                "ekb: the knowledgeBase of configuration {} is {}{outside}",
+                escape(
+                    &config
+                        .path
+                        .as_deref()
+                        .unwrap_or(Path::new(""))
+                        .display()
+                        .to_string()
+                ),
+                escape(&location.file.display().to_string())
+            );
+        }
+        Ok(path)
+    }
+
+    /// Whether to tell what is read: `-v` or the configuration's `verboseMode`.
+    fn verbose(&self) -> bool {
+        self.verbose || self.config().is_ok_and(|config| config.verbose)
     }
 
     /// Reads a knowledge base (`-` is standard input).
     pub fn read(&self, path: &Path) -> Result<SourceFile, CommandError> {
-        if self.verbose || self.config()?.verbose {
-            eprintln!("ekb: reading {}", escape(&path.display().to_string()));
+        if self.verbose() {
+            stderr_line!("ekb: reading {}", escape(&path.display().to_string()));
         }
         Ok(SourceFile::read(path)?)
     }

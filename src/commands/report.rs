@@ -6,6 +6,7 @@ use super::map::{check_on_map, write_output, MapArgs};
 use super::{CommandResult, Context, Exit};
 use crate::present;
 use crate::render::escape::escape;
+use crate::stderr_line;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -33,7 +34,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let output = Some(args.output.as_path()).filter(|path| *path != Path::new("-"));
     write_output(output, page.as_bytes())?;
     if let (Some(path), false) = (output, context.quiet) {
-        eprintln!("ekb: wrote {}", escape(&path.display().to_string()));
+        stderr_line!("ekb: wrote {}", escape(&path.display().to_string()));
     }
     Ok(Exit::Clean)
 }

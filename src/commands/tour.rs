@@ -16,6 +16,7 @@ use crate::reader;
 use crate::reader::view::{self, Held};
 use crate::render::escape::escape;
 use crate::render::safe_json as json;
+use crate::stderr_line;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -49,11 +50,11 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     present::note_errors(&checked, context.quiet);
     let file = escape(source.name());
     let Some(tour) = &checked.kb.tour else {
-        eprintln!("ekb: {file} has no tour: add a `tourSpecification` line");
+        stderr_line!("ekb: {file} has no tour: add a `tourSpecification` line");
         return Ok(Exit::Findings);
     };
     if tour.stops.is_empty() {
-        eprintln!("ekb: the tour of {file} has no stops");
+        stderr_line!("ekb: the tour of {file} has no stops");
         return Ok(Exit::Findings);
     }
     let tour = Tour::new(&checked, args.lang);

@@ -92,6 +92,14 @@ impl<'a> FileReport<'a> {
     }
 }
 
+impl FileReport<'_> {
+    /// Whether the file was checked against a version of the environment knowledge base's
+    /// reader (`--reader`); the mission and the culture knowledge base have their own.
+    pub fn read_by_reader(&self) -> bool {
+        self.checked.kind == crate::check::FileKind::EnvironmentKnowledgeBase
+    }
+}
+
 /// A byte offset whose position is known: where a scan can start.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) struct Mark {

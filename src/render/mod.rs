@@ -61,6 +61,7 @@ pub fn render(
 /// summary line: `, checked against reader 2025-06`, or with several `, checked against
 /// readers d5.4.2 for a.dat, …`.
 pub fn reader_note(reports: &[FileReport<'_>]) -> String {
+    let reports: Vec<&FileReport> = reports.iter().filter(|r| r.read_by_reader()).collect();
     let mut readers: Vec<Reader> = reports.iter().map(|r| r.checked.reader).collect();
     readers.dedup();
     match readers.as_slice() {

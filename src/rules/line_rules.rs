@@ -19,7 +19,7 @@ pub struct LineRules {
     /// The findings, at most [`crate::check::kept_at_most`] of each rule.
     found: Diagnostics,
     /// The CRLF endings so far: one finding for all of them, when the file is read.
-    crlf_endings: Vec<Span>,
+    crlf_endings: compat::compat_crlf::CrlfEndings,
     /// Whether the part's lines have a byte that may start a control character: nearly no
     /// file has one, and one pass over all the bytes costs less than a check per value.
     controls_possible: bool,
@@ -31,7 +31,7 @@ impl Findings for Diagnostics {
     fn part(text: &str, range: Range<usize>) -> LineRules {
         LineRules {
             found: Diagnostics::default(),
-            crlf_endings: Vec::new(),
+            crlf_endings: Default::default(),
             controls_possible: structure::control_character::possible_in(&text[range]),
         }
     }
@@ -44,9 +44,8 @@ impl Findings for Diagnostics {
 impl LineFindings for LineRules {
     #[inline]
     fn line(&mut self, line: &Line, text: &str) {
-        let crlf_ending = compat::compat_crlf::ending(line, text);
-        content::trailing_whitespace::check(line, crlf_ending, text, &mut self.found);
-        self.crlf_endings.extend(crlf_ending);
+        content::trailing_whitespace::check(line, text, &mut self.found);
+        self.crlf_endings.add(line, text);
     }
 
     #[inline]
@@ -125,7 +124,7 @@ impl LineFindings for LineRules {
 
     fn append(&mut self, later: LineRules) {
         self.found.append(later.found);
-        self.crlf_endings.extend(later.crlf_endings);
+        self.crlf_endings.append(later.crlf_endings);
     }
 
     fn finish(&mut self) {
@@ -223,5 +222,7 @@ mod tests {
         "  ",
         "robotLocationDescription 0 no id",
         "robotLocationDescription # be\u{7}ll",
+        // `\r\r\n` where a CRLF ending follows.
+        "robotLocationDescription # Hall\r",
     ];
 }

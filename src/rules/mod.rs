@@ -19,8 +19,10 @@ use crate::reader::Reader;
 pub mod compat;
 mod consequence;
 pub mod content;
+pub mod culture;
 pub mod line_rules;
 pub mod map;
+pub mod mission;
 pub mod structure;
 pub mod tour;
 
@@ -59,6 +61,10 @@ pub enum Category {
     Content,
     Compat,
     Map,
+    /// The behaviour tree, and what it needs of both knowledge bases (SPEC §11).
+    Mission,
+    /// The culture knowledge base and its types file (SPEC §11).
+    Culture,
 }
 
 impl Category {
@@ -69,6 +75,8 @@ impl Category {
             Category::Content => "Content",
             Category::Compat => "Reference-reader compatibility",
             Category::Map => "Map",
+            Category::Mission => "Mission",
+            Category::Culture => "Culture knowledge base",
         }
     }
 }
@@ -143,6 +151,25 @@ pub static ALL: &[&Rule] = &[
     &map::pose_outside_map::POSE_OUTSIDE_MAP,
     &map::pose_in_obstacle::POSE_IN_OBSTACLE,
     &map::target_outside_map::TARGET_OUTSIDE_MAP,
+    &mission::mission_invalid_xml::MISSION_INVALID_XML,
+    &mission::mission_unknown_node::MISSION_UNKNOWN_NODE,
+    &mission::mission_bad_children::MISSION_BAD_CHILDREN,
+    &mission::mission_unknown_attribute::MISSION_UNKNOWN_ATTRIBUTE,
+    &mission::mission_unknown_tree::MISSION_UNKNOWN_TREE,
+    &mission::mission_invalid_name::MISSION_INVALID_NAME,
+    &mission::mission_language_invalid::MISSION_LANGUAGE_INVALID,
+    &mission::mission_missing_phrase::MISSION_MISSING_PHRASE,
+    &mission::mission_untranslated_tour::MISSION_UNTRANSLATED_TOUR,
+    &mission::mission_missing_format::MISSION_MISSING_FORMAT,
+    &mission::mission_unreachable_tree::MISSION_UNREACHABLE_TREE,
+    &mission::cultural_knowledge_unknown_key::CULTURAL_KNOWLEDGE_UNKNOWN_KEY,
+    &culture::culture_unknown_key::CULTURE_UNKNOWN_KEY,
+    &culture::culture_type_mismatch::CULTURE_TYPE_MISMATCH,
+    &culture::culture_unknown_type::CULTURE_UNKNOWN_TYPE,
+    &culture::culture_duplicate_key::CULTURE_DUPLICATE_KEY,
+    &culture::culture_line_too_long::CULTURE_LINE_TOO_LONG,
+    &culture::culture_no_final_newline::CULTURE_NO_FINAL_NEWLINE,
+    &culture::culture_crlf::CULTURE_CRLF,
 ];
 
 /// `text` from the file, cut to a length that fits in a one-line message.
