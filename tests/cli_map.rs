@@ -89,7 +89,7 @@ fn the_origin_legend_is_not_an_obstacle() {
 
 /// Writes the lab map's files into a fresh folder, with `change` applied to the file
 /// named, and returns the configuration's path.
-fn broken_map(file: &str, change: impl Fn(&str) -> String) -> (tempfile::TempDir, PathBuf) {
+fn broken_map(file: &str, change: fn(&str) -> String) -> (tempfile::TempDir, PathBuf) {
     let dir = tempfile::tempdir().unwrap();
     for name in [
         "mapGenerationConfiguration.ini",
@@ -123,56 +123,27 @@ fn assert_map_error(config: &Path, expected: &str) {
     );
 }
 
+/// A change to one of the map's files, and what the error says.
+type Broken = (&'static str, fn(&str) -> String, &'static [&'static str]);
+
 #[test]
 fn a_bad_map_is_an_error_at_its_file_line_and_column() {
-    let (_dir, config) = broken_map("obstacles.dat", |text| {
-        text.replace("3.31  5.525", "3.31  5,525")
-    });
-    assert_map_error(
-        &config,
-        "obstacles.dat:5:18: the centre's y `5,525` is not a number",
-    );
-    let (_dir, config) = broken_map("obstacles.dat", |text| format!("{text}WALL 1 2 3 4\n"));
-    assert_map_error(
-        &config,
-        "obstacles.dat:12:1: expected `OBSTACLE cx cy width height`",
-    );
-    let (_dir, config) = broken_map("obstacles.dat", |text| {
-        text.replace("0.40  4.965  0.80 9.93", "0.40 4.965 0.80")
-    });
-    assert_map_error(&config, "obstacles.dat:8:1: an obstacle has 4 numbers");
-    let (_dir, config) = broken_map("mapGenerationConfiguration.ini", |text| {
-        text.replace("0.01", "-0.01")
-    });
-    assert_map_error(
-        &config,
-        "mapGenerationConfiguration.ini:3:12: the resolution `-0.01` is not a positive number",
-    );
-    let (_dir, config) = broken_map("mapGenerationConfiguration.ini", |text| {
-        text.replace("robotRadius 0.3\n", "")
-    });
-    assert_map_error(
-        &config,
-        "no `robotRadius` line; add one, e.g. `robotRadius 0.3`",
-    );
-    let (_dir, config) = broken_map("mapGenerationInput.dat", |text| {
-        text.replace("6.80", "7.00")
-    });
-    assert_map_error(&config, "mapGenerationInput.dat:4:20: ");
-    assert_map_error(
-        &config,
-        "is 680 × 993 pixels, which at a resolution of 0.01 m is 6.80 × 9.93 m, not the 7 × 9.93 m",
-    );
-    let (_dir, config) = broken_map("mapGenerationInput.dat", |text| {
-        text.replace("obstacles.dat", "gone.dat")
-    });
-    assert_map_error(&config, "gone.dat (named at ");
-    assert_map_error(&config, "mapGenerationInput.dat:3:14): no such file");
-    let (_dir, config) = broken_map("environmentMap.png", |_| "not a picture".to_string());
-    assert_map_error(
-        &config,
-        "environmentMap.png: not a PNG image that ekb can read",
-    );
+    let cases: [Broken; 8] = [
+        ("obstacles.dat", |t| t.replace("3.31  5.525", "3.31  5,525"), &["obstacles.dat:5:18: the centre's y `5,525` is not a number"]),
+        ("obstacles.dat", |t| format!("{t}WALL 1 2 3 4\n"), &["obstacles.dat:12:1: expected `OBSTACLE cx cy width height`"]),
+        ("obstacles.dat", |t| t.replace("0.40  4.965  0.80 9.93", "0.40 4.965 0.80"), &["obstacles.dat:8:1: an obstacle has 4 numbers"]),
+        ("mapGenerationConfiguration.ini", |t| t.replace("0.01", "-0.01"), &["mapGenerationConfiguration.ini:3:12: the resolution `-0.01` is not a positive number"]),
+        ("mapGenerationConfiguration.ini", |t| t.replace("robotRadius 0.3\n", ""), &["no `robotRadius` line; add one, e.g. `robotRadius 0.3`"]),
+        ("mapGenerationInput.dat", |t| t.replace("6.80", "7.00"), &["mapGenerationInput.dat:4:20: ", "is 680 × 993 pixels, which at a resolution of 0.01 m is 6.80 × 9.93 m, not the 7 × 9.93 m"]),
+        ("mapGenerationInput.dat", |t| t.replace("obstacles.dat", "gone.dat"), &["gone.dat (named at ", "mapGenerationInput.dat:3:14): no such file"]),
+        ("environmentMap.png", |_| "not a picture".to_string(), &["environmentMap.png: not a PNG image that ekb can read"]),
+    ];
+    for (file, change, expected) in cases {
+        let (_dir, config) = broken_map(file, change);
+        for expected in expected {
+            assert_map_error(&config, expected);
+        }
+    }
     let missing = root().join("tests/fixtures/map/none.ini");
     assert_map_error(&missing, "cannot read map file");
 }
@@ -321,6 +292,10 @@ fn numbers(text: &str) -> Vec<f64> {
         .filter(|s| !s.is_empty())
         .map(|s| s.parse().unwrap())
         .collect()
+}
+
+fn number_attribute(node: roxmltree::Node<'_, '_>, name: &str) -> f64 {
+    node.attribute(name).unwrap().parse().unwrap()
 }
 
 /// Where the plot puts the map's origin, and its pixels per metre.
@@ -532,12 +507,7 @@ fn without_a_map_a_metre_grid_is_fitted_to_the_poses() {
         "no robot radius without a map"
     );
     let ((ox, oy), scale) = origin_and_scale(&doc);
-    let width: f64 = doc
-        .root_element()
-        .attribute("width")
-        .unwrap()
-        .parse()
-        .unwrap();
+    let width = number_attribute(doc.root_element(), "width");
     for pose in with_class(&doc, "pose") {
         let at = numbers(pose.attribute("transform").unwrap());
         assert!(at[0] > 0.0 && at[0] < width && at[1] > 0.0);
@@ -594,40 +564,46 @@ fn any_input_draws_without_failing() {
 // ---------------------------------------------------------------------------------------
 // Drawing: PNG
 
-#[test]
-fn the_png_has_the_arrows_colour_at_each_poses_pixel() {
+/// `ekb map FILE ARGS` as SVG and as PNG: the SVG parsed, and a function giving the
+/// PNG's colour at a pixel.
+fn svg_and_png(file: &str, args: &[&str]) -> (String, impl Fn(f64, f64) -> (u8, u8, u8)) {
     let dir = tempfile::tempdir().unwrap();
     let (svg, png) = (dir.path().join("t.svg"), dir.path().join("t.png"));
     for out in [&svg, &png] {
-        let run = ekb(&[
-            "map",
-            SEED,
-            "--map-config",
-            LAB_MAP,
-            "-o",
-            out.to_str().unwrap(),
-        ]);
+        let mut all = vec!["map", file, "-o", out.to_str().unwrap()];
+        all.extend_from_slice(args);
+        let run = ekb(&all);
         assert_eq!(run.code, 0, "{}", run.stderr);
     }
     let svg = std::fs::read_to_string(svg).unwrap();
-    let doc = roxmltree::Document::parse(&svg).unwrap();
-    let ((ox, oy), scale) = origin_and_scale(&doc);
     let decoder = png::Decoder::new(std::io::Cursor::new(std::fs::read(png).unwrap()));
     let mut reader = decoder.read_info().unwrap();
     let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
     let frame = reader.next_frame(&mut pixels).unwrap();
-    let width: f64 = doc
-        .root_element()
-        .attribute("width")
-        .unwrap()
-        .parse()
-        .unwrap();
-    assert_eq!(frame.width as f64, width, "the PNG is the SVG's size");
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let (width, height) = (
+        number_attribute(doc.root_element(), "width"),
+        number_attribute(doc.root_element(), "height"),
+    );
+    assert_eq!(
+        (frame.width as f64, frame.height as f64),
+        (width, height),
+        "the PNG is the SVG's size"
+    );
     let channels = frame.color_type.samples();
-    let rgb_at = |x: f64, y: f64| {
+    let rgb_at = move |x: f64, y: f64| {
         let at = (y as usize) * frame.line_size + (x as usize) * channels;
         (pixels[at], pixels[at + 1], pixels[at + 2])
     };
+    (svg, rgb_at)
+}
+
+#[test]
+fn the_png_has_the_arrows_colour_at_each_poses_pixel() {
+    let (svg, rgb_at) = svg_and_png(SEED, &["--map-config", LAB_MAP]);
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let ((ox, oy), scale) = origin_and_scale(&doc);
+    assert_eq!(scale, 100.0, "a pixel of the map per pixel");
     for (id, x, y, _) in SEED_POSES {
         assert_eq!(
             rgb_at(ox + x * scale, oy - y * scale),
@@ -647,5 +623,28 @@ fn the_png_has_the_arrows_colour_at_each_poses_pixel() {
     assert!(
         title_row.iter().any(|&(r, _, _)| r < 100),
         "no text in the PNG: install fonts-dejavu-core"
+    );
+}
+
+#[test]
+fn the_png_scales_the_map_when_the_drawing_does() {
+    // A pose off the map widens the drawing: the map is drawn at 80 pixels per metre.
+    let (svg, rgb_at) = svg_and_png(
+        "tests/fixtures/rules/pose-outside-map/bad.dat",
+        &["--map-config", LAB_MAP],
+    );
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let ((ox, oy), scale) = origin_and_scale(&doc);
+    assert_eq!(scale, 80.0);
+    let (wall, floor) = (
+        rgb_at(ox + 0.4 * scale, oy - 5.0 * scale),
+        rgb_at(ox + 4.7 * scale, oy - 2.3 * scale),
+    );
+    assert!(wall.0 < 200 && wall.0 > 100, "{wall:?}");
+    assert_eq!(floor, (255, 255, 255));
+    assert_eq!(
+        rgb_at(ox + 7.5 * scale, oy - 2.0 * scale),
+        (0x1f, 0x5f, 0xbf),
+        "location 1, off the map"
     );
 }

@@ -135,14 +135,9 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
                 .to_string(),
         ));
     }
-    let path = context.input(args.file.as_deref())?;
-    let options = context.read_options(&path)?;
-    // No `[map] config` from ekb.toml here yet: `MapArgs::load` takes it as its argument.
-    let map = args.map.load(None)?;
-    let source = context.read(&path)?;
-    let (checked, loaded) = check_on_map(&source, &options, map.as_ref());
-    present::note_errors(&checked, context.quiet);
-    let scene = Scene::new(&checked, &loaded, map.as_ref());
+    let input = MapInput::read(args.file.as_deref(), &args.map, context)?;
+    let (checked, loaded) = input.check(context.quiet);
+    let scene = Scene::new(&checked, &loaded, input.map.as_ref());
     let bytes = match format {
         PictureFormat::Svg => draw::svg::draw(&scene, MapImage::Embedded).svg.into_bytes(),
         PictureFormat::Png => {
@@ -153,11 +148,56 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
             rendered.png
         }
     };
-    write_output(output, &bytes)?;
+    write_result(output, &bytes, context)?;
+    Ok(Exit::Clean)
+}
+
+/// What `map` and `report` work on: a knowledge base, how to read it, and the map.
+pub struct MapInput {
+    pub source: SourceFile,
+    pub options: Options,
+    pub map: Option<LabMap>,
+}
+
+impl MapInput {
+    /// Reads `file` (else the configured knowledge base) and the map of `map_args`.
+    pub fn read(
+        file: Option<&Path>,
+        map_args: &MapArgs,
+        context: &Context,
+    ) -> Result<MapInput, CommandError> {
+        let path = context.input(file)?;
+        let options = context.read_options(&path)?;
+        // No `[map] config` from ekb.toml here yet: `MapArgs::load` takes it as its argument.
+        let map = map_args.load(None)?;
+        let source = context.read(&path)?;
+        Ok(MapInput {
+            source,
+            options,
+            map,
+        })
+    }
+
+    /// The file checked (with the map rules), and loaded as its reader loads it; unless
+    /// `quiet`, a note on standard error if it has errors.
+    pub fn check(&self, quiet: bool) -> (Checked<'_>, Loaded<'_>) {
+        let (checked, loaded) = check_on_map(&self.source, &self.options, self.map.as_ref());
+        present::note_errors(&checked, quiet);
+        (checked, loaded)
+    }
+}
+
+/// Writes `bytes` to `output` or standard output, and says where unless `--quiet`.
+pub fn write_result(
+    output: Option<&Path>,
+    bytes: &[u8],
+    context: &Context,
+) -> Result<(), CommandError> {
+    write_output(output, bytes)?;
     if let (Some(path), false) = (output, context.quiet) {
         stderr_line!("ekb: wrote {}", escape(&path.display().to_string()));
     }
-    Ok(Exit::Clean)
+    Ok(())
 }
 
 /// Writes `bytes` to `output` (atomically: a temporary file, then a rename), or to standard

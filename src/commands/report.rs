@@ -2,11 +2,8 @@
 
 use std::path::{Path, PathBuf};
 
-use super::map::{check_on_map, write_output, MapArgs};
+use super::map::{write_result, MapArgs, MapInput};
 use super::{CommandResult, Context, Exit};
-use crate::present;
-use crate::render::escape::escape;
-use crate::stderr_line;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -23,18 +20,10 @@ pub struct Args {
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
-    let path = context.input(args.file.as_deref())?;
-    let options = context.read_options(&path)?;
-    // No `[map] config` from ekb.toml here yet: `MapArgs::load` takes it as its argument.
-    let map = args.map.load(None)?;
-    let source = context.read(&path)?;
-    let (checked, loaded) = check_on_map(&source, &options, map.as_ref());
-    present::note_errors(&checked, context.quiet);
-    let page = crate::report::page(&checked, &loaded, map.as_ref());
+    let input = MapInput::read(args.file.as_deref(), &args.map, context)?;
+    let (checked, loaded) = input.check(context.quiet);
+    let page = crate::report::page(&checked, &loaded, input.map.as_ref());
     let output = Some(args.output.as_path()).filter(|path| *path != Path::new("-"));
-    write_output(output, page.as_bytes())?;
-    if let (Some(path), false) = (output, context.quiet) {
-        stderr_line!("ekb: wrote {}", escape(&path.display().to_string()));
-    }
+    write_result(output, page.as_bytes(), context)?;
     Ok(Exit::Clean)
 }

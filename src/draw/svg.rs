@@ -685,19 +685,24 @@ fn label(
             );
             x += 2.0 * BADGE_RADIUS + 3.0;
         }
-        let weight = if line.bold {
-            r#" font-weight="bold""#
-        } else {
-            ""
-        };
-        let _ = write!(
-            svg,
-            r#"<text x="{x:.1}" y="{baseline:.1}" fill="{}"{weight}>{}</text>"#,
-            line.colour,
-            markup(&line.text)
-        );
+        text_line(svg, x, baseline, line);
     }
     svg.push_str("</g>");
+}
+
+/// The text of `line` at (`x`, `baseline`), in its colour and weight.
+fn text_line(svg: &mut String, x: f64, baseline: f64, line: &LabelLine) {
+    let weight = if line.bold {
+        r#" font-weight="bold""#
+    } else {
+        ""
+    };
+    let _ = write!(
+        svg,
+        r#"<text x="{x:.1}" y="{baseline:.1}" fill="{}"{weight}>{}</text>"#,
+        line.colour,
+        markup(&line.text)
+    );
 }
 
 /// The legend's rows of marks: what each mark means.
@@ -835,18 +840,7 @@ fn legend_panel(svg: &mut String, scene: &Scene<'_>, frame: &Frame, x: f64, line
     let bar_y = TOP + 24.0 + rows as f64 * 24.0 + 8.0;
     scale_bar(svg, frame, x, bar_y);
     for (row, line) in lines.iter().enumerate() {
-        let y = bar_y + 48.0 + row as f64 * LINE_HEIGHT;
-        let weight = if line.bold {
-            r#" font-weight="bold""#
-        } else {
-            ""
-        };
-        let _ = write!(
-            svg,
-            r#"<text x="{x:.1}" y="{y:.1}" fill="{}"{weight}>{}</text>"#,
-            line.colour,
-            markup(&line.text)
-        );
+        text_line(svg, x, bar_y + 48.0 + row as f64 * LINE_HEIGHT, line);
     }
     svg.push_str("</g>");
 }

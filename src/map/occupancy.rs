@@ -128,31 +128,34 @@ fn decode(png: &[u8]) -> Result<(usize, usize, Vec<u8>), String> {
     let (width, height) = (frame.width as usize, frame.height as usize);
     let channels = frame.color_type.samples();
     let bytes = &buffer[..frame.buffer_size()];
-    let grey = (0..width * height)
-        .map(|i| {
-            let row_start = (i / width) * frame.line_size;
-            let pixel = &bytes[row_start + (i % width) * channels..][..channels];
-            grey_on_white(pixel)
-        })
-        .collect();
+    let mut grey = Vec::with_capacity(width * height);
+    for row in bytes.chunks(frame.line_size).take(height) {
+        let row = &row[..width * channels];
+        if channels == 1 {
+            // The robot's maps are grey already: one copy per row.
+            grey.extend_from_slice(row);
+        } else {
+            grey.extend(row.chunks_exact(channels).map(grey_on_white));
+        }
+    }
     Ok((width, height, grey))
 }
 
 /// The grey level of one pixel (grey, grey and alpha, RGB or RGBA), laid on white.
 fn grey_on_white(pixel: &[u8]) -> u8 {
     let (grey, alpha) = match *pixel {
-        [grey] => (f64::from(grey), 255.0),
-        [grey, alpha] => (f64::from(grey), f64::from(alpha)),
-        [r, g, b] => (luminance(r, g, b), 255.0),
-        [r, g, b, alpha, ..] => (luminance(r, g, b), f64::from(alpha)),
-        [] => (255.0, 255.0),
+        [grey] => (u32::from(grey), 255),
+        [grey, alpha] => (u32::from(grey), u32::from(alpha)),
+        [r, g, b] => (luminance(r, g, b), 255),
+        [r, g, b, alpha, ..] => (luminance(r, g, b), u32::from(alpha)),
+        [] => (255, 255),
     };
-    let alpha = alpha / 255.0;
-    (grey * alpha + 255.0 * (1.0 - alpha)).round() as u8
+    ((grey * alpha + 255 * (255 - alpha) + 127) / 255) as u8
 }
 
-fn luminance(r: u8, g: u8, b: u8) -> f64 {
-    0.299 * f64::from(r) + 0.587 * f64::from(g) + 0.114 * f64::from(b)
+/// Rec. 601 luma, in integers: 0.299 R + 0.587 G + 0.114 B.
+fn luminance(r: u8, g: u8, b: u8) -> u32 {
+    (299 * u32::from(r) + 587 * u32::from(g) + 114 * u32::from(b) + 500) / 1000
 }
 
 #[cfg(test)]
