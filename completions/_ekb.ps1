@@ -48,6 +48,8 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('map', 'map', [CompletionResultType]::ParameterValue, 'Draw the tour on the lab map, as SVG or PNG')
             [CompletionResult]::new('report', 'report', [CompletionResultType]::ParameterValue, 'Write one HTML page to review: the map, the tour''s messages, the findings')
             [CompletionResult]::new('mission', 'mission', [CompletionResultType]::ParameterValue, 'The behaviour-tree mission with both knowledge bases: check, tree, walk')
+            [CompletionResult]::new('translations', 'translations', [CompletionResultType]::ParameterValue, 'How far each language is translated, message by message')
+            [CompletionResult]::new('set', 'set', [CompletionResultType]::ParameterValue, 'Edit one value in place, losslessly')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -100,7 +102,7 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             break
         }
         'ekb;tour' {
-            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'The language the robot speaks: english, isizulu, kinyarwanda (any case), or en, zu, rw')
+            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'The language the robot speaks: english, isizulu (zulu), kinyarwanda, or an ISO 639 code: en/eng, zu/zul, rw/kin (any case)')
             [CompletionResult]::new('--format', '--format', [CompletionResultType]::ParameterName, 'Output format')
             [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
             [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')
@@ -131,7 +133,8 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             break
         }
         'ekb;export' {
-            [CompletionResult]::new('--format', '--format', [CompletionResultType]::ParameterName, 'Output format (JSON is the only one)')
+            [CompletionResult]::new('--format', '--format', [CompletionResultType]::ParameterName, 'Output format')
+            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'With --format po: the language to translate into: isizulu (zulu), kinyarwanda, or zu/zul, rw/kin (any case)')
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Write to this file instead of standard output (`-` is standard output)')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Write to this file instead of standard output (`-` is standard output)')
             [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
@@ -153,9 +156,14 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
         'ekb;import' {
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Write the knowledge base here (replaced atomically) instead of standard output')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Write the knowledge base here (replaced atomically) instead of standard output')
+            [CompletionResult]::new('--po', '--po', [CompletionResultType]::ParameterName, 'Import the translations of this PO file into FILE, in place: only those messages change')
+            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'With --po: the PO file''s language, if its header has no `Language:` (zu, rw, …)')
             [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
             [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')
             [CompletionResult]::new('--reader', '--reader', [CompletionResultType]::ParameterName, 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]')
+            [CompletionResult]::new('--accept-stale', '--accept-stale', [CompletionResultType]::ParameterName, 'With --po: import entries made for an English text that has changed since')
+            [CompletionResult]::new('--force', '--force', [CompletionResultType]::ParameterName, 'With --po: import translations the robot''s reader would misread, too')
+            [CompletionResult]::new('--diff', '--diff', [CompletionResultType]::ParameterName, 'With --po: write nothing; print the changes as a diff')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
             [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
             [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
@@ -393,6 +401,39 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
         'ekb;mission;help;help' {
             break
         }
+        'ekb;translations' {
+            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'Only this language, and what is left in it, in tour order: english, isizulu (zulu), kinyarwanda, or en/eng, zu/zul, rw/kin (any case)')
+            [CompletionResult]::new('--format', '--format', [CompletionResultType]::ParameterName, 'Output format')
+            [CompletionResult]::new('--fail-under', '--fail-under', [CompletionResultType]::ParameterName, 'Exit 1 when a language shown has fewer than PCT percent of its messages translated (for CI)')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
+            [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')
+            [CompletionResult]::new('--reader', '--reader', [CompletionResultType]::ParameterName, 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('--quiet', '--quiet', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'ekb;set' {
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
+            [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')
+            [CompletionResult]::new('--reader', '--reader', [CompletionResultType]::ParameterName, 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]')
+            [CompletionResult]::new('--force', '--force', [CompletionResultType]::ParameterName, 'Write the value even if the robot''s reader would misread it')
+            [CompletionResult]::new('--diff', '--diff', [CompletionResultType]::ParameterName, 'Write nothing; print the change as a diff')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('--quiet', '--quiet', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
         'ekb;help' {
             [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Validate knowledge-base files against every rule')
             [CompletionResult]::new('locations', 'locations', [CompletionResultType]::ParameterValue, 'A table of all locations')
@@ -410,6 +451,8 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('map', 'map', [CompletionResultType]::ParameterValue, 'Draw the tour on the lab map, as SVG or PNG')
             [CompletionResult]::new('report', 'report', [CompletionResultType]::ParameterValue, 'Write one HTML page to review: the map, the tour''s messages, the findings')
             [CompletionResult]::new('mission', 'mission', [CompletionResultType]::ParameterValue, 'The behaviour-tree mission with both knowledge bases: check, tree, walk')
+            [CompletionResult]::new('translations', 'translations', [CompletionResultType]::ParameterValue, 'How far each language is translated, message by message')
+            [CompletionResult]::new('set', 'set', [CompletionResultType]::ParameterValue, 'Edit one value in place, losslessly')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -471,6 +514,12 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             break
         }
         'ekb;help;mission;walk' {
+            break
+        }
+        'ekb;help;translations' {
+            break
+        }
+        'ekb;help;set' {
             break
         }
         'ekb;help;help' {

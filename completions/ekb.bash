@@ -61,11 +61,17 @@ _ekb() {
             ekb,rules)
                 cmd="ekb__subcmd__rules"
                 ;;
+            ekb,set)
+                cmd="ekb__subcmd__set"
+                ;;
             ekb,show)
                 cmd="ekb__subcmd__show"
                 ;;
             ekb,tour)
                 cmd="ekb__subcmd__tour"
+                ;;
+            ekb,translations)
+                cmd="ekb__subcmd__translations"
                 ;;
             ekb__subcmd__help,check)
                 cmd="ekb__subcmd__help__subcmd__check"
@@ -112,11 +118,17 @@ _ekb() {
             ekb__subcmd__help,rules)
                 cmd="ekb__subcmd__help__subcmd__rules"
                 ;;
+            ekb__subcmd__help,set)
+                cmd="ekb__subcmd__help__subcmd__set"
+                ;;
             ekb__subcmd__help,show)
                 cmd="ekb__subcmd__help__subcmd__show"
                 ;;
             ekb__subcmd__help,tour)
                 cmd="ekb__subcmd__help__subcmd__tour"
+                ;;
+            ekb__subcmd__help,translations)
+                cmd="ekb__subcmd__help__subcmd__translations"
                 ;;
             ekb__subcmd__help__subcmd__mission,check)
                 cmd="ekb__subcmd__help__subcmd__mission__subcmd__check"
@@ -158,7 +170,7 @@ _ekb() {
 
     case "${cmd}" in
         ekb)
-            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version check locations show tour diff export import fmt fix rules explain completions man map report mission help"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -308,14 +320,18 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__export)
-            opts="-o -v -q -h -V --format --output --allow-errors --schema --as-loaded --config --color --verbose --reader --quiet --help --version"
+            opts="-o -v -q -h -V --format --lang --output --allow-errors --schema --as-loaded --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
                 --format)
-                    COMPREPLY=($(compgen -W "json" -- "${cur}"))
+                    COMPREPLY=($(compgen -W "json po pot" -- "${cur}"))
+                    return 0
+                    ;;
+                --lang)
+                    COMPREPLY=($(compgen -W "english isizulu kinyarwanda zulu ikinyarwanda en zu rw eng zul kin" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -402,7 +418,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__help)
-            opts="check locations show tour diff export import fmt fix rules explain completions man map report mission help"
+            opts="check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -667,6 +683,20 @@ _ekb() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        ekb__subcmd__help__subcmd__set)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         ekb__subcmd__help__subcmd__show)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
@@ -695,8 +725,22 @@ _ekb() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        ekb__subcmd__help__subcmd__translations)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         ekb__subcmd__import)
-            opts="-o -v -q -h -V --output --config --color --verbose --reader --quiet --help --version"
+            opts="-o -v -q -h -V --output --po --lang --accept-stale --force --diff --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -708,6 +752,14 @@ _ekb() {
                     ;;
                 -o)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --po)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --lang)
+                    COMPREPLY=($(compgen -W "english isizulu kinyarwanda zulu ikinyarwanda en zu rw eng zul kin" -- "${cur}"))
                     return 0
                     ;;
                 --config)
@@ -1009,7 +1061,7 @@ _ekb() {
                     return 0
                     ;;
                 --lang)
-                    COMPREPLY=($(compgen -W "english isizulu kinyarwanda en zu rw" -- "${cur}"))
+                    COMPREPLY=($(compgen -W "english isizulu kinyarwanda zulu ikinyarwanda en zu rw eng zul kin" -- "${cur}"))
                     return 0
                     ;;
                 --format)
@@ -1063,7 +1115,7 @@ _ekb() {
                     return 0
                     ;;
                 --lang)
-                    COMPREPLY=($(compgen -W "english isizulu kinyarwanda en zu rw" -- "${cur}"))
+                    COMPREPLY=($(compgen -W "english isizulu kinyarwanda zulu ikinyarwanda en zu rw eng zul kin" -- "${cur}"))
                     return 0
                     ;;
                 --format)
@@ -1161,6 +1213,32 @@ _ekb() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        ekb__subcmd__set)
+            opts="-v -q -h -V --force --diff --config --color --verbose --reader --quiet --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --color)
+                    COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
+                    return 0
+                    ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         ekb__subcmd__show)
             opts="-v -q -h -V --config --color --verbose --reader --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
@@ -1195,11 +1273,49 @@ _ekb() {
             fi
             case "${prev}" in
                 --lang)
-                    COMPREPLY=($(compgen -W "english isizulu kinyarwanda en zu rw" -- "${cur}"))
+                    COMPREPLY=($(compgen -W "english isizulu kinyarwanda zulu ikinyarwanda en zu rw eng zul kin" -- "${cur}"))
                     return 0
                     ;;
                 --format)
                     COMPREPLY=($(compgen -W "text json" -- "${cur}"))
+                    return 0
+                    ;;
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --color)
+                    COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
+                    return 0
+                    ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        ekb__subcmd__translations)
+            opts="-v -q -h -V --lang --format --fail-under --config --color --verbose --reader --quiet --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --lang)
+                    COMPREPLY=($(compgen -W "english isizulu kinyarwanda zulu ikinyarwanda en zu rw eng zul kin" -- "${cur}"))
+                    return 0
+                    ;;
+                --format)
+                    COMPREPLY=($(compgen -W "human json csv" -- "${cur}"))
+                    return 0
+                    ;;
+                --fail-under)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --config)

@@ -45,6 +45,8 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand map 'Draw the tour on the lab map, as SVG or PNG'
             cand report 'Write one HTML page to review: the map, the tour''s messages, the findings'
             cand mission 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
+            cand translations 'How far each language is translated, message by message'
+            cand set 'Edit one value in place, losslessly'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'ekb;check'= {
@@ -93,7 +95,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand --version 'Print version'
         }
         &'ekb;tour'= {
-            cand --lang 'The language the robot speaks: english, isizulu, kinyarwanda (any case), or en, zu, rw'
+            cand --lang 'The language the robot speaks: english, isizulu (zulu), kinyarwanda, or an ISO 639 code: en/eng, zu/zul, rw/kin (any case)'
             cand --format 'Output format'
             cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
             cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
@@ -122,7 +124,8 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand --version 'Print version'
         }
         &'ekb;export'= {
-            cand --format 'Output format (JSON is the only one)'
+            cand --format 'Output format'
+            cand --lang 'With --format po: the language to translate into: isizulu (zulu), kinyarwanda, or zu/zul, rw/kin (any case)'
             cand -o 'Write to this file instead of standard output (`-` is standard output)'
             cand --output 'Write to this file instead of standard output (`-` is standard output)'
             cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
@@ -143,9 +146,14 @@ set edit:completion:arg-completer[ekb] = {|@words|
         &'ekb;import'= {
             cand -o 'Write the knowledge base here (replaced atomically) instead of standard output'
             cand --output 'Write the knowledge base here (replaced atomically) instead of standard output'
+            cand --po 'Import the translations of this PO file into FILE, in place: only those messages change'
+            cand --lang 'With --po: the PO file''s language, if its header has no `Language:` (zu, rw, …)'
             cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
             cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
             cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
+            cand --accept-stale 'With --po: import entries made for an English text that has changed since'
+            cand --force 'With --po: import translations the robot''s reader would misread, too'
+            cand --diff 'With --po: write nothing; print the changes as a diff'
             cand -v 'Print what is read, as it is read, on standard error'
             cand --verbose 'Print what is read, as it is read, on standard error'
             cand -q 'Print only findings and errors, no summary'
@@ -365,6 +373,37 @@ set edit:completion:arg-completer[ekb] = {|@words|
         }
         &'ekb;mission;help;help'= {
         }
+        &'ekb;translations'= {
+            cand --lang 'Only this language, and what is left in it, in tour order: english, isizulu (zulu), kinyarwanda, or en/eng, zu/zul, rw/kin (any case)'
+            cand --format 'Output format'
+            cand --fail-under 'Exit 1 when a language shown has fewer than PCT percent of its messages translated (for CI)'
+            cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
+            cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
+            cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
+            cand -v 'Print what is read, as it is read, on standard error'
+            cand --verbose 'Print what is read, as it is read, on standard error'
+            cand -q 'Print only findings and errors, no summary'
+            cand --quiet 'Print only findings and errors, no summary'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
+        &'ekb;set'= {
+            cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
+            cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
+            cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
+            cand --force 'Write the value even if the robot''s reader would misread it'
+            cand --diff 'Write nothing; print the change as a diff'
+            cand -v 'Print what is read, as it is read, on standard error'
+            cand --verbose 'Print what is read, as it is read, on standard error'
+            cand -q 'Print only findings and errors, no summary'
+            cand --quiet 'Print only findings and errors, no summary'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
         &'ekb;help'= {
             cand check 'Validate knowledge-base files against every rule'
             cand locations 'A table of all locations'
@@ -382,6 +421,8 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand map 'Draw the tour on the lab map, as SVG or PNG'
             cand report 'Write one HTML page to review: the map, the tour''s messages, the findings'
             cand mission 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
+            cand translations 'How far each language is translated, message by message'
+            cand set 'Edit one value in place, losslessly'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'ekb;help;check'= {
@@ -424,6 +465,10 @@ set edit:completion:arg-completer[ekb] = {|@words|
         &'ekb;help;mission;tree'= {
         }
         &'ekb;help;mission;walk'= {
+        }
+        &'ekb;help;translations'= {
+        }
+        &'ekb;help;set'= {
         }
         &'ekb;help;help'= {
         }

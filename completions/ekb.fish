@@ -53,6 +53,8 @@ complete -c ekb -n "__fish_ekb_needs_command" -f -a "man" -d 'Print the man page
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "map" -d 'Draw the tour on the lab map, as SVG or PNG'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "report" -d 'Write one HTML page to review: the map, the tour\'s messages, the findings'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "mission" -d 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "translations" -d 'How far each language is translated, message by message'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "set" -d 'Edit one value in place, losslessly'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l format -d 'Output format' -r -f -a "human\t'For people: each finding with the lines around it, underlined, and what to do'
 concise\t'One line per finding: `file:line:col: severity[rule] message`'
@@ -105,12 +107,17 @@ complete -c ekb -n "__fish_ekb_using_subcommand show" -s v -l verbose -d 'Print 
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s V -l version -d 'Print version'
-complete -c ekb -n "__fish_ekb_using_subcommand tour" -l lang -d 'The language the robot speaks: english, isizulu, kinyarwanda (any case), or en, zu, rw' -r -f -a "english\t''
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l lang -d 'The language the robot speaks: english, isizulu (zulu), kinyarwanda, or an ISO 639 code: en/eng, zu/zul, rw/kin (any case)' -r -f -a "english\t''
 isizulu\t''
 kinyarwanda\t''
+zulu\t''
+ikinyarwanda\t''
 en\t''
 zu\t''
-rw\t''"
+rw\t''
+eng\t''
+zul\t''
+kin\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l format -d 'Output format' -r -f -a "text\t'The tour as a script to read'
 json\t'One JSON object'"
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
@@ -141,7 +148,20 @@ complete -c ekb -n "__fish_ekb_using_subcommand diff" -s v -l verbose -d 'Print 
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand diff" -s V -l version -d 'Print version'
-complete -c ekb -n "__fish_ekb_using_subcommand export" -l format -d 'Output format (JSON is the only one)' -r -f -a "json\t'The JSON of SPEC §5'"
+complete -c ekb -n "__fish_ekb_using_subcommand export" -l format -d 'Output format' -r -f -a "json\t'The JSON of SPEC §5'
+po\t'gettext PO of one language (--lang), for translators\' tools (SPEC §8)'
+pot\t'gettext PO template: every English message, no translation'"
+complete -c ekb -n "__fish_ekb_using_subcommand export" -l lang -d 'With --format po: the language to translate into: isizulu (zulu), kinyarwanda, or zu/zul, rw/kin (any case)' -r -f -a "english\t''
+isizulu\t''
+kinyarwanda\t''
+zulu\t''
+ikinyarwanda\t''
+en\t''
+zu\t''
+rw\t''
+eng\t''
+zul\t''
+kin\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s o -l output -d 'Write to this file instead of standard output (`-` is standard output)' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand export" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand export" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
@@ -160,6 +180,18 @@ complete -c ekb -n "__fish_ekb_using_subcommand export" -s q -l quiet -d 'Print 
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand export" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand import" -s o -l output -d 'Write the knowledge base here (replaced atomically) instead of standard output' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand import" -l po -d 'Import the translations of this PO file into FILE, in place: only those messages change' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand import" -l lang -d 'With --po: the PO file\'s language, if its header has no `Language:` (zu, rw, …)' -r -f -a "english\t''
+isizulu\t''
+kinyarwanda\t''
+zulu\t''
+ikinyarwanda\t''
+en\t''
+zu\t''
+rw\t''
+eng\t''
+zul\t''
+kin\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand import" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand import" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
@@ -169,6 +201,9 @@ complete -c ekb -n "__fish_ekb_using_subcommand import" -l reader -d 'The versio
 2026-02\t'The `bc_service` branch, February 2026'
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand import" -l accept-stale -d 'With --po: import entries made for an English text that has changed since'
+complete -c ekb -n "__fish_ekb_using_subcommand import" -l force -d 'With --po: import translations the robot\'s reader would misread, too'
+complete -c ekb -n "__fish_ekb_using_subcommand import" -l diff -d 'With --po: write nothing; print the changes as a diff'
 complete -c ekb -n "__fish_ekb_using_subcommand import" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand import" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand import" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -341,9 +376,14 @@ complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcomm
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l lang -d 'The language the robot speaks [default: the culture knowledge base\'s phraseLanguage]' -r -f -a "english\t''
 isizulu\t''
 kinyarwanda\t''
+zulu\t''
+ikinyarwanda\t''
 en\t''
 zu\t''
-rw\t''"
+rw\t''
+eng\t''
+zul\t''
+kin\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l format -d 'Output format' -r -f -a "text\t'For people'
 json\t'One JSON object'"
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
@@ -367,9 +407,14 @@ complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcomm
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l lang -d 'The language the robot speaks [default: the culture knowledge base\'s phraseLanguage]' -r -f -a "english\t''
 isizulu\t''
 kinyarwanda\t''
+zulu\t''
+ikinyarwanda\t''
 en\t''
 zu\t''
-rw\t''"
+rw\t''
+eng\t''
+zul\t''
+kin\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l format -d 'Output format' -r -f -a "text\t'For people'
 json\t'One JSON object'"
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
@@ -389,23 +434,68 @@ complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcomm
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from help" -f -a "tree" -d 'Print the mission\'s trees, with each node\'s parameter and the phrase each SayText says'
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from help" -f -a "walk" -d 'A dry run of the mission on the happy path: the steps the robot takes, in order'
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "check" -d 'Validate knowledge-base files against every rule'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "locations" -d 'A table of all locations'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "show" -d 'One location in full'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "tour" -d 'The tour in order, as the robot will say it in one language'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "diff" -d 'What changed between two knowledge bases, location by location'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "export" -d 'The typed model as JSON'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "import" -d 'JSON back to a canonical knowledge-base file'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "fmt" -d 'Rewrite files in the canonical layout'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "fix" -d 'Apply the machine-applicable fixes'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "rules" -d 'List the rule catalogue'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "explain" -d 'Show one rule\'s documentation'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "completions" -d 'Print a shell completion script'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "man" -d 'Print the man page'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "map" -d 'Draw the tour on the lab map, as SVG or PNG'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "report" -d 'Write one HTML page to review: the map, the tour\'s messages, the findings'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "mission" -d 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c ekb -n "__fish_ekb_using_subcommand translations" -l lang -d 'Only this language, and what is left in it, in tour order: english, isizulu (zulu), kinyarwanda, or en/eng, zu/zul, rw/kin (any case)' -r -f -a "english\t''
+isizulu\t''
+kinyarwanda\t''
+zulu\t''
+ikinyarwanda\t''
+en\t''
+zu\t''
+rw\t''
+eng\t''
+zul\t''
+kin\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand translations" -l format -d 'Output format' -r -f -a "human\t'The status of each language and the grid of messages (with --lang: what is left)'
+json\t'One JSON object: each file\'s languages and messages'
+csv\t'One row per language and file (with --lang: one row per message left)'"
+complete -c ekb -n "__fish_ekb_using_subcommand translations" -l fail-under -d 'Exit 1 when a language shown has fewer than PCT percent of its messages translated (for CI)' -r
+complete -c ekb -n "__fish_ekb_using_subcommand translations" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand translations" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand translations" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand translations" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand translations" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand translations" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c ekb -n "__fish_ekb_using_subcommand translations" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand set" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand set" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand set" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand set" -l force -d 'Write the value even if the robot\'s reader would misread it'
+complete -c ekb -n "__fish_ekb_using_subcommand set" -l diff -d 'Write nothing; print the change as a diff'
+complete -c ekb -n "__fish_ekb_using_subcommand set" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand set" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand set" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c ekb -n "__fish_ekb_using_subcommand set" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "check" -d 'Validate knowledge-base files against every rule'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "locations" -d 'A table of all locations'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "show" -d 'One location in full'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "tour" -d 'The tour in order, as the robot will say it in one language'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "diff" -d 'What changed between two knowledge bases, location by location'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "export" -d 'The typed model as JSON'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "import" -d 'JSON back to a canonical knowledge-base file'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "fmt" -d 'Rewrite files in the canonical layout'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "fix" -d 'Apply the machine-applicable fixes'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "rules" -d 'List the rule catalogue'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "explain" -d 'Show one rule\'s documentation'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "completions" -d 'Print a shell completion script'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "man" -d 'Print the man page'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "map" -d 'Draw the tour on the lab map, as SVG or PNG'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "report" -d 'Write one HTML page to review: the map, the tour\'s messages, the findings'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "mission" -d 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "translations" -d 'How far each language is translated, message by message'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "set" -d 'Edit one value in place, losslessly'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c ekb -n "__fish_ekb_using_subcommand help; and __fish_seen_subcommand_from mission" -f -a "check" -d 'Check the mission, the culture knowledge base and the environment knowledge base together'
 complete -c ekb -n "__fish_ekb_using_subcommand help; and __fish_seen_subcommand_from mission" -f -a "tree" -d 'Print the mission\'s trees, with each node\'s parameter and the phrase each SayText says'
 complete -c ekb -n "__fish_ekb_using_subcommand help; and __fish_seen_subcommand_from mission" -f -a "walk" -d 'A dry run of the mission on the happy path: the steps the robot takes, in order'

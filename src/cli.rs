@@ -89,6 +89,10 @@ pub enum Command {
     Report(commands::report::Args),
     /// The behaviour-tree mission with both knowledge bases: check, tree, walk
     Mission(commands::mission::Args),
+    /// How far each language is translated, message by message
+    Translations(commands::translations::Args),
+    /// Edit one value in place, losslessly
+    Set(commands::set::Args),
 }
 
 /// Parses the command line, runs the command and turns the outcome into an exit code.
@@ -112,6 +116,8 @@ pub fn main() -> ExitCode {
         Command::Map(args) => commands::map::run(args, &context),
         Command::Report(args) => commands::report::run(args, &context),
         Command::Mission(args) => commands::mission::run(args, &context),
+        Command::Translations(args) => commands::translations::run(args, &context),
+        Command::Set(args) => commands::set::run(args, &context),
     };
     let exit = match outcome {
         Ok(exit) => exit,

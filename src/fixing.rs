@@ -137,6 +137,17 @@ pub fn apply(text: &str, diagnostics: &[Diagnostic]) -> Option<(String, Vec<&'st
     (!applied.is_empty()).then(|| (accepted.apply(text), applied))
 }
 
+/// Applies `edits` to `text`; they must not overlap, and no two may insert at one offset
+/// (for `ekb set` and `ekb import --po`, whose edits are one per line).
+pub fn splice(text: &str, edits: &[Edit]) -> String {
+    let mut all = Edits::default();
+    for edit in edits {
+        debug_assert!(!all.clashes(edit.span), "{edit:?}");
+        all.add(edit);
+    }
+    all.apply(text)
+}
+
 /// `edit`, made to keep the column of the id when it renames the key of a line whose key is
 /// padded with spaces up to the id (as `ekb fmt` writes): `robotLocation` becoming
 /// `robotLocationPose` takes four of its spaces, and the reverse gives them back. Any other

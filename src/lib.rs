@@ -31,6 +31,7 @@ pub mod config;
 pub mod diagnostic;
 pub mod diff;
 pub mod draw;
+pub mod edit;
 pub mod encoding;
 pub mod fixing;
 pub mod generate;
@@ -48,6 +49,7 @@ pub mod settings;
 pub mod source;
 pub mod streams;
 pub mod syntax;
+pub mod translations;
 pub mod write;
 
 pub use check::{check, Checked};

@@ -478,7 +478,7 @@ fn evil_files(dir: &Path) -> (std::path::PathBuf, std::path::PathBuf) {
 fn tables_tours_diffs_and_rewrites_never_print_raw_control_characters() {
     let dir = tempfile::tempdir().unwrap();
     let (old, new) = evil_files(dir.path());
-    let runs: [(&[&str], &[&Path], i32, &str); 8] = [
+    let runs: [(&[&str], &[&Path], i32, &str); 10] = [
         (
             &["locations"],
             &[&old],
@@ -488,6 +488,13 @@ fn tables_tours_diffs_and_rewrites_never_print_raw_control_characters() {
         (&["show", "1"], &[&old], 0, "\\u{001B}]0;pwned\\u{0007}"),
         (&["show", "2"], &[&old], 0, "Lab\\u{200F}"),
         (&["tour", "--lang", "en"], &[&old], 0, "Hi \\u{202E}there"),
+        (&["translations"], &[&old], 0, "Evil\\u{001B}[31m room"),
+        (
+            &["translations", "--lang", "zu", "--format", "csv"],
+            &[&old],
+            0,
+            "Hi \\u{202E}there",
+        ),
         (&["diff"], &[&old, &new], 1, "L\\u{001B}[1mab\\u{200F}"),
         (&["export", "--allow-errors"], &[&old], 0, "a\\u009bb"),
         // The diffs of fmt and fix, coloured as on a terminal.

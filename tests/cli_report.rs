@@ -93,7 +93,7 @@ fn the_page_is_self_contained_accessible_and_printable() {
     // Placeholders, missing messages and failing ones are marked, in words too.
     assert!(page.contains("<td class=\"placeholder\" lang=\"zu\"><span class=\"tag\">placeholder</span> No message in isiZulu"));
     assert!(page.contains(
-        "<td class=\"missing\"><span class=\"tag\">missing</span> the robot says nothing</td>"
+        "<td class=\"missing\"><span class=\"tag\">missing</span> the robot says nothing (line 34 has its key in the wrong case)</td>"
     ));
     assert!(page.contains("<td class=\"failing\" lang=\"en\">Welcome the the robotics lab at Carnegie Mellon University Africa <span class=\"rule\">repeated-word</span>"));
     // The status per language.
@@ -128,6 +128,24 @@ fn the_page_lists_every_location_and_every_finding() {
     for description in ["Entrance", "Pepper robot", "Lynxmotion"] {
         assert!(page.contains(&format!(" · {description}")), "{description}");
     }
+}
+
+#[test]
+fn copies_of_the_english_and_failing_translations_are_marked() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, page) = report(
+        dir.path(),
+        "tests/fixtures/rules/same-as-source/bad.dat",
+        &[],
+    );
+    assert!(
+        page.contains("<td class=\"same failing\" lang=\"zu\"><span class=\"tag\">same as English</span> Welcome to the robotics lab"),
+        "{page}"
+    );
+    let (_, page) = report(dir.path(), "tests/fixtures/rules/double-space/bad.dat", &[]);
+    assert!(page.contains("<td class=\"failing\" lang=\"zu\">Siyakwamukela  elebhu yamarobhothi <span class=\"rule\">double-space</span>"));
+    // The status counts them as the translations command does.
+    assert!(page.contains("<tr><th scope=\"row\">isiZulu</th>"));
 }
 
 // ---------------------------------------------------------------------------------------

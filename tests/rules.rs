@@ -276,6 +276,15 @@ rule_tests! {
     compat_cultural_word_split: "compat-cultural-word-split" => [(10, 33), (20, 33), (20, 39)];
     compat_ignored_key: "compat-ignored-key" [reader(Reader::V2025_06)] => [(4, 1), (15, 1)];
     not_an_environment_knowledge_base: "not-an-environment-knowledge-base" => [(1, 1)];
+    // Translation
+    same_as_source: "same-as-source" => [(6, 33), (22, 33)];
+    end_punctuation_mismatch: "end-punctuation-mismatch" => [(7, 76), (19, 57)];
+    double_space: "double-space" => [(6, 46), (20, 46), (22, 47)];
+    space_before_punctuation: "space-before-punctuation" => [(8, 58), (10, 59)];
+    repeated_punctuation: "repeated-punctuation" => [(8, 58), (9, 67), (10, 58)];
+    unbalanced_delimiters: "unbalanced-delimiters" => [(17, 52), (19, 51), (20, 55)];
+    wrong_language: "wrong-language" => [(6, 33), (22, 33)];
+    length_mismatch: "length-mismatch" => [(9, 33), (22, 33)];
     // Map (with the lab map of tests/fixtures/map/)
     pose_outside_map: "pose-outside-map" => [(2, 33), (14, 33)];
     pose_in_obstacle: "pose-in-obstacle" => [(2, 33), (14, 33)];
@@ -391,6 +400,14 @@ fn the_catalogue_is_the_specified_one() {
         ("culture-line-too-long", Error, false),
         ("culture-no-final-newline", Warning, false),
         ("culture-crlf", Error, false),
+        ("same-as-source", Warning, false),
+        ("end-punctuation-mismatch", Warning, false),
+        ("double-space", Warning, true),
+        ("space-before-punctuation", Warning, true),
+        ("repeated-punctuation", Warning, false),
+        ("unbalanced-delimiters", Warning, false),
+        ("wrong-language", Warning, false),
+        ("length-mismatch", Warning, false),
     ];
     let actual: Vec<(&str, Severity, bool)> = rules::ALL
         .iter()
@@ -784,6 +801,16 @@ fn a_carriage_return_before_a_crlf_ending_is_left_to_a_person() {
 }
 
 #[test]
+fn double_space_fix() {
+    assert_fix_gives_good("double-space", Options::default());
+}
+
+#[test]
+fn space_before_punctuation_fix() {
+    assert_fix_gives_good("space-before-punctuation", Options::default());
+}
+
+#[test]
 fn compat_no_final_newline_fix() {
     assert_fix_gives_good("compat-no-final-newline", Options::default());
 }
@@ -812,6 +839,90 @@ fn all_fixes_of_a_windows_file_together_give_a_clean_file() {
         .flat_map(|fix| &fix.edits)
         .collect();
     assert_eq!(apply(source.text(), &edits), good.text());
+}
+
+#[test]
+fn wrong_language_passes_the_real_kinyarwanda_of_the_robots_files() {
+    // Every Kinyarwanda message of the robot's knowledge base, and every Kinyarwanda phrase
+    // of its culture knowledge base, each put beside an English message.
+    let environment = read("corpus/upstream-2025-06-environmentKnowledgeBaseInput.dat");
+    let culture = read("corpus/upstream-2025-06-cultureKnowledgeBaseInput.dat");
+    let kinyarwanda: Vec<&str> = environment
+        .text()
+        .lines()
+        .filter(|line| line.contains("MessageKinyarwanda"))
+        .map(|line| line.splitn(3, char::is_whitespace).last().unwrap().trim())
+        .chain(
+            culture
+                .text()
+                .lines()
+                .filter(|line| line.contains("Kinyarwanda"))
+                .map(|line| line.split_once(char::is_whitespace).unwrap().1.trim()),
+        )
+        .collect();
+    assert!(kinyarwanda.len() >= 15, "{kinyarwanda:?}");
+    let template = read("rules/wrong-language/good.dat");
+    for sentence in kinyarwanda {
+        let text = template.text().replace(
+            "postGestureMessageKinyarwanda 2 Tuyikoresha mukwigisha mobile robotikisi",
+            &format!(
+                "postGestureMessageKinyarwanda 2 {}",
+                sentence.trim_start_matches(|c: char| c.is_whitespace() || c.is_ascii_digit())
+            ),
+        );
+        let all = findings_of(
+            &SourceFile::from_bytes("rw", text.into_bytes()),
+            Options::default(),
+        );
+        assert!(
+            of_rule(&all, "wrong-language").is_empty(),
+            "{sentence}:\n{}",
+            show(&all)
+        );
+    }
+}
+
+#[test]
+fn wrong_language_finds_english_in_either_language_but_not_a_name() {
+    let template = read("rules/wrong-language/good.dat");
+    let with = |line: &str, text: &str| {
+        let replaced = template
+            .text()
+            .lines()
+            .map(|l| {
+                if l.starts_with(line) {
+                    format!("{line}{text}")
+                } else {
+                    l.to_string()
+                }
+            })
+            .collect::<Vec<_>>()
+            .join("\n");
+        findings_of(
+            &SourceFile::from_bytes("t", (replaced + "\n").into_bytes()),
+            Options::default(),
+        )
+    };
+    let zu = "preGestureMessageIsiZulu      2 ";
+    let english = with(zu, "This is Pepper, our humanoid robot");
+    assert_eq!(
+        of_rule(&english, "wrong-language").len(),
+        1,
+        "{}",
+        show(&english)
+    );
+    // isiZulu with an English name and loanword: not English.
+    for isizulu in [
+        "Lena yirobhothi uPepper",
+        "Sawubona! Siyakwamukela eCarnegie Mellon University Africa",
+    ] {
+        let found = with(zu, isizulu);
+        assert!(
+            of_rule(&found, "wrong-language").is_empty(),
+            "{isizulu}: {}",
+            show(&found)
+        );
+    }
 }
 
 // ---------------------------------------------------------------------------------------

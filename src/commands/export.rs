@@ -6,11 +6,14 @@ use std::path::{Path, PathBuf};
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::export::{ExportView, ExportedKnowledgeBase};
+use crate::model::Language;
 use crate::reader::{self, export::LoadedExport};
 use crate::render::safe_json as json;
 use crate::render::{self, escape::escape, Format, RenderOptions};
 use crate::streams;
+use crate::translations::{po, Catalog};
 use crate::write;
+use crate::write::write_atomically;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -18,9 +21,13 @@ pub struct Args {
     #[arg(value_name = "FILE", conflicts_with = "schema")]
     pub file: Option<PathBuf>,
 
-    /// Output format (JSON is the only one)
+    /// Output format
     #[arg(long, value_enum, default_value_t = ExportFormat::Json)]
     pub format: ExportFormat,
+
+    /// With --format po: the language to translate into: isizulu (zulu), kinyarwanda, or zu/zul, rw/kin (any case)
+    #[arg(long, value_name = "L", ignore_case = true, value_parser = crate::present::language::parser())]
+    pub lang: Option<Language>,
 
     /// Write to this file instead of standard output (`-` is standard output)
     #[arg(short, long, value_name = "OUT")]
@@ -45,6 +52,10 @@ pub struct Args {
 pub enum ExportFormat {
     /// The JSON of SPEC §5
     Json,
+    /// gettext PO of one language (--lang), for translators' tools (SPEC §8)
+    Po,
+    /// gettext PO template: every English message, no translation
+    Pot,
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
@@ -57,6 +68,9 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let options = context.read_options(&path)?;
     let source = context.read(&path)?;
     let checked = check(&source, &options);
+    if matches!(args.format, ExportFormat::Po | ExportFormat::Pot) {
+        return export_po(args, context, &checked);
+    }
     if args.as_loaded {
         return export_as_loaded(args, context, checked);
     }
@@ -71,6 +85,49 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         return report_to_stderr(checked.errors_only(), &why, context);
     }
     write_output(args.output.as_deref(), &ExportView::new(&checked.kb))?;
+    Ok(Exit::Clean)
+}
+
+/// The PO file of `--lang`, or the template: the file's errors do not stop it (a translator
+/// can work while an engineer fixes a pose), but they are noted.
+fn export_po(args: &Args, context: &Context, checked: &Checked<'_>) -> CommandResult {
+    let language = match (args.format, args.lang) {
+        (ExportFormat::Pot, _) => None,
+        (_, Some(Language::English)) => {
+            return Err(CommandError::Failed(
+                "English is the language translations are made from: export isiZulu or \
+                 Kinyarwanda (`--lang zu` or `--lang rw`), or the template (`--format pot`)"
+                    .to_string(),
+            ))
+        }
+        (_, Some(language)) => Some(language),
+        (_, None) => {
+            return Err(CommandError::Failed(
+                "--format po needs the language to translate into: `--lang zu` or `--lang rw` \
+                 (or `--format pot` for the template)"
+                    .to_string(),
+            ))
+        }
+    };
+    crate::present::note_errors(checked, context.quiet);
+    let catalog = Catalog::new(checked);
+    // The translations were last revised when the knowledge base was.
+    let revised = std::fs::metadata(checked.source.name())
+        .and_then(|metadata| metadata.modified())
+        .unwrap_or_else(|_| std::time::SystemTime::now());
+    let po = po::write(&catalog, checked.source.name(), language, revised);
+    match args
+        .output
+        .as_deref()
+        .filter(|path| *path != Path::new("-"))
+    {
+        Some(path) => write_atomically(path, po.as_bytes())?,
+        None => {
+            let mut stdout = std::io::stdout().lock();
+            stdout.write_all(po.as_bytes())?;
+            stdout.flush()?;
+        }
+    }
     Ok(Exit::Clean)
 }
 

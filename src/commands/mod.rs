@@ -14,8 +14,10 @@ pub mod map;
 pub mod mission;
 pub mod report;
 pub mod rules;
+pub mod set;
 pub mod show;
 pub mod tour;
+pub mod translations;
 
 use std::cell::OnceCell;
 
@@ -215,6 +217,14 @@ impl Context {
             ))),
             _ => Ok(paths),
         }
+    }
+
+    /// [`Context::files_to_rewrite`] for a command that rewrites one file (`set`,
+    /// `import --po`).
+    pub fn file_to_rewrite(&self, file: Option<&Path>) -> Result<PathBuf, CommandError> {
+        let named: Vec<PathBuf> = file.map(Path::to_path_buf).into_iter().collect();
+        let mut paths = self.files_to_rewrite(&named)?;
+        Ok(paths.swap_remove(0))
     }
 
     /// The configured knowledge base; with `-v`, where it really points.

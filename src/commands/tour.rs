@@ -24,7 +24,7 @@ pub struct Args {
     #[arg(value_name = "FILE")]
     pub file: Option<PathBuf>,
 
-    /// The language the robot speaks: english, isizulu, kinyarwanda (any case), or en, zu, rw
+    /// The language the robot speaks: english, isizulu (zulu), kinyarwanda, or an ISO 639 code: en/eng, zu/zul, rw/kin (any case)
     #[arg(long, value_name = "L", ignore_case = true, value_parser = language::parser(), default_value = "english")]
     pub lang: Language,
 

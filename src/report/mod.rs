@@ -7,8 +7,6 @@
 //! well on paper (print styles) and to a screen reader (headings, table headers, the
 //! map's title and description).
 
-pub mod status;
-
 use std::collections::HashMap;
 use std::fmt::Write;
 
@@ -17,11 +15,11 @@ use crate::draw::svg::{self, MapImage};
 use crate::draw::Scene;
 use crate::map::LabMap;
 use crate::model::{Language, Location, Phase};
-use crate::present::{self, Gesture, Lines, Message};
+use crate::present::{self, Gesture, Lines};
 use crate::reader::Loaded;
 use crate::render::markup::markup;
 use crate::render::FileReport;
-use status::{count_messages_per_language, LanguageStatus};
+use crate::translations::{Catalog, State, Status, Unit};
 
 const STYLE: &str = include_str!("report.css");
 
@@ -70,9 +68,23 @@ pub fn page(checked: &Checked<'_>, loaded: &Loaded<'_>, map: Option<&LabMap>) ->
         reader = checked.reader.name(),
     );
     map_section(&mut html, checked, loaded, map);
-    tour_section(&mut html, checked, loaded, &lines, &findings_at);
-    let status = count_messages_per_language(&checked.kb, |start| fails(&findings_at(start)));
-    status_section(&mut html, &status);
+    let catalog = Catalog::new(checked);
+    let units: Units = catalog
+        .units
+        .iter()
+        .map(|unit| ((unit.location, unit.phase), unit))
+        .collect();
+    let views = Views {
+        loaded,
+        lines: &lines,
+        units: &units,
+        findings_at: &findings_at,
+    };
+    tour_section(&mut html, checked, &views);
+    status_section(
+        &mut html,
+        &Language::ALL.map(|language| catalog.status(language)),
+    );
     findings_section(&mut html, &report);
     let _ = write!(
         html,
@@ -107,13 +119,18 @@ fn map_section(
     );
 }
 
-fn tour_section(
-    html: &mut String,
-    checked: &Checked<'_>,
-    loaded: &Loaded<'_>,
-    lines: &Lines<'_>,
-    findings_at: &dyn Fn(u32) -> Vec<&'static str>,
-) {
+/// Each location's messages by location and phase, from the translations' catalogue.
+type Units<'c, 'a> = HashMap<(u32, Phase), &'c Unit<'a>>;
+
+/// What the tour's blocks are drawn from.
+struct Views<'v> {
+    loaded: &'v Loaded<'v>,
+    lines: &'v Lines<'v>,
+    units: &'v Units<'v, 'v>,
+    findings_at: &'v dyn Fn(u32) -> Vec<&'static str>,
+}
+
+fn tour_section(html: &mut String, checked: &Checked<'_>, views: &Views<'_>) {
     html.push_str("<section id=\"tour\" aria-labelledby=\"tour-heading\">\n<h2 id=\"tour-heading\">The tour, stop by stop</h2>\n");
     let _ = writeln!(
         html,
@@ -127,15 +144,7 @@ fn tour_section(
     for (index, &id) in stops.iter().enumerate() {
         let heading = format!("Stop {} · location {id}", index + 1);
         match checked.kb.location(id) {
-            Some(location) => location_block(
-                html,
-                &heading,
-                index == 0,
-                location,
-                loaded,
-                lines,
-                findings_at,
-            ),
+            Some(location) => location_block(html, &heading, index == 0, location, views),
             None => {
                 let _ = writeln!(
                     html,
@@ -154,7 +163,7 @@ fn tour_section(
         html.push_str("<h3 class=\"part\">Locations no stop visits</h3>\n");
         for location in unvisited {
             let heading = format!("Location {} (not on the tour)", location.id);
-            location_block(html, &heading, false, location, loaded, lines, findings_at);
+            location_block(html, &heading, false, location, views);
         }
     }
     html.push_str("</section>\n");
@@ -166,10 +175,9 @@ fn location_block(
     heading: &str,
     start: bool,
     location: &Location<'_>,
-    loaded: &Loaded<'_>,
-    lines: &Lines<'_>,
-    findings_at: &dyn Fn(u32) -> Vec<&'static str>,
+    views: &Views<'_>,
 ) {
+    let (loaded, lines) = (views.loaded, views.lines);
     let description = location
         .description()
         .map_or_else(|| "(no description)".to_string(), |d| d.value.to_string());
@@ -208,9 +216,9 @@ fn location_block(
             "<tr><th scope=\"row\">{} pointing</th>",
             capitalised(phase.name())
         );
-        let english = location.message(phase, Language::English).map(|m| m.value);
+        let unit = views.units.get(&(location.id, phase)).copied();
         for language in Language::ALL {
-            message_cell(html, location, phase, language, english, lines, findings_at);
+            message_cell(html, unit, language, views.findings_at);
         }
         html.push_str("</tr>\n");
     }
@@ -219,52 +227,53 @@ fn location_block(
 
 fn message_cell(
     html: &mut String,
-    location: &Location<'_>,
-    phase: Phase,
+    unit: Option<&Unit<'_>>,
     language: Language,
-    english: Option<&str>,
-    lines: &Lines<'_>,
     findings_at: &dyn Fn(u32) -> Vec<&'static str>,
 ) {
     let lang = language_code(language);
-    match Message::of(location, phase, language) {
-        Message::Missing => {
-            let _ = write!(html, "<td class=\"missing\"><span class=\"tag\">missing</span> the robot says nothing</td>");
+    let message = unit.map(|unit| &unit.messages[language.index()]);
+    let (Some(message), Some(value)) = (message, message.and_then(|m| m.value)) else {
+        // Written with its key in the wrong case, the English is there but never said.
+        let miscased = unit
+            .and_then(|unit| unit.source)
+            .filter(|source| source.miscased && language == Language::English)
+            .map(|source| format!(" (line {} has its key in the wrong case)", source.line))
+            .unwrap_or_default();
+        let _ = write!(
+            html,
+            "<td class=\"missing\"><span class=\"tag\">missing</span> the robot says nothing{miscased}</td>"
+        );
+        return;
+    };
+    let rules = findings_at(value.span.start);
+    let mut classes = Vec::new();
+    let mut tags = String::new();
+    match message.state {
+        State::Placeholder => {
+            classes.push("placeholder");
+            tags.push_str("<span class=\"tag\">placeholder</span> ");
         }
-        Message::Placeholder(value) | Message::Written(value) => {
-            let placeholder = matches!(
-                Message::of(location, phase, language),
-                Message::Placeholder(_)
-            );
-            let same =
-                !placeholder && language != Language::English && Some(value.value) == english;
-            let rules = findings_at(value.span.start);
-            let mut classes = Vec::new();
-            let mut tags = String::new();
-            if placeholder {
-                classes.push("placeholder");
-                tags.push_str("<span class=\"tag\">placeholder</span> ");
-            }
-            if same {
-                classes.push("same");
-                tags.push_str("<span class=\"tag\">same as English</span> ");
-            }
-            if fails(&rules) {
-                classes.push("failing");
-            }
-            let findings: String = rules
-                .iter()
-                .map(|rule| format!(" <span class=\"rule\">{rule}</span>"))
-                .collect();
-            let _ = write!(
-                html,
-                "<td class=\"{}\" lang=\"{lang}\">{tags}{}{findings} <span class=\"line\">line {}</span></td>",
-                classes.join(" "),
-                markup(value.value),
-                lines.of(value.span)
-            );
+        State::SameAsSource => {
+            classes.push("same");
+            tags.push_str("<span class=\"tag\">same as English</span> ");
         }
+        State::Translated | State::Missing => {}
     }
+    if fails(&rules) {
+        classes.push("failing");
+    }
+    let findings: String = rules
+        .iter()
+        .map(|rule| format!(" <span class=\"rule\">{rule}</span>"))
+        .collect();
+    let _ = write!(
+        html,
+        "<td class=\"{}\" lang=\"{lang}\">{tags}{}{findings} <span class=\"line\">line {}</span></td>",
+        classes.join(" "),
+        markup(value.value),
+        message.line.unwrap_or_default()
+    );
 }
 
 /// Whether `rules`, found on a message, make it a failing one: a placeholder's
@@ -322,10 +331,10 @@ fn language_code(language: Language) -> &'static str {
     }
 }
 
-fn status_section(html: &mut String, status: &[LanguageStatus]) {
+fn status_section(html: &mut String, status: &[Status]) {
     html.push_str("<section id=\"translations\" aria-labelledby=\"translations-heading\">\n<h2 id=\"translations-heading\">Translation status</h2>\n<table class=\"status\">\n<caption>Messages per language, over every location's two messages</caption>\n<thead><tr><th scope=\"col\">Language</th><th scope=\"col\">Translated</th><th scope=\"col\">Untranslated (placeholder or missing)</th><th scope=\"col\">Same as English</th><th scope=\"col\">With a finding</th><th scope=\"col\">Words translated</th></tr></thead>\n<tbody>\n");
     for language in status {
-        let name = language.language.map_or("", Language::name);
+        let name = language.language;
         let _ = writeln!(
             html,
             "<tr><th scope=\"row\">{name}</th><td><span class=\"bar\" aria-hidden=\"true\"><span style=\"width:{percent:.0}%\"></span></span> {} of {} ({percent}%)</td><td>{}</td><td>{}</td><td>{}</td><td>{} of {}</td></tr>",

@@ -25,6 +25,7 @@ pub mod map;
 pub mod mission;
 pub mod structure;
 pub mod tour;
+pub mod translation;
 
 /// A rule's identity and documentation.
 #[derive(Debug, PartialEq, Eq)]
@@ -65,6 +66,7 @@ pub enum Category {
     Mission,
     /// The culture knowledge base and its types file (SPEC §11).
     Culture,
+    Translation,
 }
 
 impl Category {
@@ -77,6 +79,7 @@ impl Category {
             Category::Map => "Map",
             Category::Mission => "Mission",
             Category::Culture => "Culture knowledge base",
+            Category::Translation => "Translation",
         }
     }
 }
@@ -170,6 +173,14 @@ pub static ALL: &[&Rule] = &[
     &culture::culture_line_too_long::CULTURE_LINE_TOO_LONG,
     &culture::culture_no_final_newline::CULTURE_NO_FINAL_NEWLINE,
     &culture::culture_crlf::CULTURE_CRLF,
+    &translation::same_as_source::SAME_AS_SOURCE,
+    &translation::end_punctuation_mismatch::END_PUNCTUATION_MISMATCH,
+    &translation::double_space::DOUBLE_SPACE,
+    &translation::space_before_punctuation::SPACE_BEFORE_PUNCTUATION,
+    &translation::repeated_punctuation::REPEATED_PUNCTUATION,
+    &translation::unbalanced_delimiters::UNBALANCED_DELIMITERS,
+    &translation::wrong_language::WRONG_LANGUAGE,
+    &translation::length_mismatch::LENGTH_MISMATCH,
 ];
 
 /// `text` from the file, cut to a length that fits in a one-line message.
@@ -265,6 +276,7 @@ fn check_location(location: &Location<'_>, context: &LocationContext<'_>, out: &
     content::gesture_behind_robot::check(location, out);
     compat::compat_too_many_cultural_keys::check(location, out);
     compat::compat_cultural_word_split::check(location, context.reader, out);
+    translation::check(location, out);
 }
 
 #[cfg(test)]

@@ -89,7 +89,7 @@ fn key_before_odd_space(span: Span, written: &str) -> Option<Diagnostic> {
 }
 
 /// The known key closest to `key`, if one is close enough to be a likely typo.
-fn nearest(key: &str) -> Option<Key> {
+pub(crate) fn nearest(key: &str) -> Option<Key> {
     // Long garbage (a pasted paragraph) is no typo, and comparing it would be slow.
     if key.len() > 64 {
         return None;
