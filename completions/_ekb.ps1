@@ -47,6 +47,8 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('explain', 'explain', [CompletionResultType]::ParameterValue, 'Show one rule''s documentation')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script')
             [CompletionResult]::new('man', 'man', [CompletionResultType]::ParameterValue, 'Print the man page')
+            [CompletionResult]::new('map', 'map', [CompletionResultType]::ParameterValue, 'Draw the tour on the lab map, as SVG or PNG')
+            [CompletionResult]::new('report', 'report', [CompletionResultType]::ParameterValue, 'Write one HTML page to review: the map, the tour''s messages, the findings')
             [CompletionResult]::new('mission', 'mission', [CompletionResultType]::ParameterValue, 'The behaviour-tree mission with both knowledge bases: check, tree, walk')
             [CompletionResult]::new('translations', 'translations', [CompletionResultType]::ParameterValue, 'How far each language is translated, message by message')
             [CompletionResult]::new('set', 'set', [CompletionResultType]::ParameterValue, 'Edit one value in place, losslessly')
@@ -62,6 +64,9 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('--ignore', '--ignore', [CompletionResultType]::ParameterName, 'Do not run these rules or categories')
             [CompletionResult]::new('--level', '--level', [CompletionResultType]::ParameterName, 'Show only findings at or above this severity (the summary still counts them all)')
             [CompletionResult]::new('--output-file', '--output-file', [CompletionResultType]::ParameterName, 'Write the report to this file instead of standard output')
+            [CompletionResult]::new('--map-config', '--map-config', [CompletionResultType]::ParameterName, 'The robot''s mapGenerationConfiguration.ini: check poses against its map and draw on it')
+            [CompletionResult]::new('--map-image', '--map-image', [CompletionResultType]::ParameterName, 'A map image instead (PNG: white free, black occupied), with --map-size; the robot''s radius is taken as 0.3 m')
+            [CompletionResult]::new('--map-size', '--map-size', [CompletionResultType]::ParameterName, 'The map image''s width and height, in metres')
             [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
             [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')
             [CompletionResult]::new('--reader', '--reader', [CompletionResultType]::ParameterName, 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]')
@@ -299,6 +304,49 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
+        'ekb;map' {
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Write the drawing to this file: SVG, or PNG if it ends in `.png` [default: SVG on standard output]')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Write the drawing to this file: SVG, or PNG if it ends in `.png` [default: SVG on standard output]')
+            [CompletionResult]::new('--format', '--format', [CompletionResultType]::ParameterName, 'The drawing''s format [default: from OUT''s extension, else svg]')
+            [CompletionResult]::new('--map-config', '--map-config', [CompletionResultType]::ParameterName, 'The robot''s mapGenerationConfiguration.ini: check poses against its map and draw on it')
+            [CompletionResult]::new('--map-image', '--map-image', [CompletionResultType]::ParameterName, 'A map image instead (PNG: white free, black occupied), with --map-size; the robot''s radius is taken as 0.3 m')
+            [CompletionResult]::new('--map-size', '--map-size', [CompletionResultType]::ParameterName, 'The map image''s width and height, in metres')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
+            [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')
+            [CompletionResult]::new('--reader', '--reader', [CompletionResultType]::ParameterName, 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]')
+            [CompletionResult]::new('--settings', '--settings', [CompletionResultType]::ParameterName, 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file''s folder or above')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('--quiet', '--quiet', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('--isolated', '--isolated', [CompletionResultType]::ParameterName, 'Use no settings file: every rule, at its own severity')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'ekb;report' {
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Write the page here (`-` is standard output)')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Write the page here (`-` is standard output)')
+            [CompletionResult]::new('--map-config', '--map-config', [CompletionResultType]::ParameterName, 'The robot''s mapGenerationConfiguration.ini: check poses against its map and draw on it')
+            [CompletionResult]::new('--map-image', '--map-image', [CompletionResultType]::ParameterName, 'A map image instead (PNG: white free, black occupied), with --map-size; the robot''s radius is taken as 0.3 m')
+            [CompletionResult]::new('--map-size', '--map-size', [CompletionResultType]::ParameterName, 'The map image''s width and height, in metres')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
+            [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')
+            [CompletionResult]::new('--reader', '--reader', [CompletionResultType]::ParameterName, 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]')
+            [CompletionResult]::new('--settings', '--settings', [CompletionResultType]::ParameterName, 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file''s folder or above')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('--quiet', '--quiet', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('--isolated', '--isolated', [CompletionResultType]::ParameterName, 'Use no settings file: every rule, at its own severity')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
         'ekb;mission' {
             [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
             [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')
@@ -494,6 +542,8 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('explain', 'explain', [CompletionResultType]::ParameterValue, 'Show one rule''s documentation')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script')
             [CompletionResult]::new('man', 'man', [CompletionResultType]::ParameterValue, 'Print the man page')
+            [CompletionResult]::new('map', 'map', [CompletionResultType]::ParameterValue, 'Draw the tour on the lab map, as SVG or PNG')
+            [CompletionResult]::new('report', 'report', [CompletionResultType]::ParameterValue, 'Write one HTML page to review: the map, the tour''s messages, the findings')
             [CompletionResult]::new('mission', 'mission', [CompletionResultType]::ParameterValue, 'The behaviour-tree mission with both knowledge bases: check, tree, walk')
             [CompletionResult]::new('translations', 'translations', [CompletionResultType]::ParameterValue, 'How far each language is translated, message by message')
             [CompletionResult]::new('set', 'set', [CompletionResultType]::ParameterValue, 'Edit one value in place, losslessly')
@@ -539,6 +589,12 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             break
         }
         'ekb;help;man' {
+            break
+        }
+        'ekb;help;map' {
+            break
+        }
+        'ekb;help;report' {
             break
         }
         'ekb;help;mission' {

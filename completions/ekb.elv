@@ -44,6 +44,8 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand explain 'Show one rule''s documentation'
             cand completions 'Print a shell completion script'
             cand man 'Print the man page'
+            cand map 'Draw the tour on the lab map, as SVG or PNG'
+            cand report 'Write one HTML page to review: the map, the tour''s messages, the findings'
             cand mission 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
             cand translations 'How far each language is translated, message by message'
             cand set 'Edit one value in place, losslessly'
@@ -58,6 +60,9 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand --ignore 'Do not run these rules or categories'
             cand --level 'Show only findings at or above this severity (the summary still counts them all)'
             cand --output-file 'Write the report to this file instead of standard output'
+            cand --map-config 'The robot''s mapGenerationConfiguration.ini: check poses against its map and draw on it'
+            cand --map-image 'A map image instead (PNG: white free, black occupied), with --map-size; the robot''s radius is taken as 0.3 m'
+            cand --map-size 'The map image''s width and height, in metres'
             cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
             cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
             cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
@@ -282,6 +287,47 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand -V 'Print version'
             cand --version 'Print version'
         }
+        &'ekb;map'= {
+            cand -o 'Write the drawing to this file: SVG, or PNG if it ends in `.png` [default: SVG on standard output]'
+            cand --output 'Write the drawing to this file: SVG, or PNG if it ends in `.png` [default: SVG on standard output]'
+            cand --format 'The drawing''s format [default: from OUT''s extension, else svg]'
+            cand --map-config 'The robot''s mapGenerationConfiguration.ini: check poses against its map and draw on it'
+            cand --map-image 'A map image instead (PNG: white free, black occupied), with --map-size; the robot''s radius is taken as 0.3 m'
+            cand --map-size 'The map image''s width and height, in metres'
+            cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
+            cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
+            cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
+            cand --settings 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file''s folder or above'
+            cand -v 'Print what is read, as it is read, on standard error'
+            cand --verbose 'Print what is read, as it is read, on standard error'
+            cand -q 'Print only findings and errors, no summary'
+            cand --quiet 'Print only findings and errors, no summary'
+            cand --isolated 'Use no settings file: every rule, at its own severity'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
+        &'ekb;report'= {
+            cand -o 'Write the page here (`-` is standard output)'
+            cand --output 'Write the page here (`-` is standard output)'
+            cand --map-config 'The robot''s mapGenerationConfiguration.ini: check poses against its map and draw on it'
+            cand --map-image 'A map image instead (PNG: white free, black occupied), with --map-size; the robot''s radius is taken as 0.3 m'
+            cand --map-size 'The map image''s width and height, in metres'
+            cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
+            cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
+            cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
+            cand --settings 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file''s folder or above'
+            cand -v 'Print what is read, as it is read, on standard error'
+            cand --verbose 'Print what is read, as it is read, on standard error'
+            cand -q 'Print only findings and errors, no summary'
+            cand --quiet 'Print only findings and errors, no summary'
+            cand --isolated 'Use no settings file: every rule, at its own severity'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
         &'ekb;mission'= {
             cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
             cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
@@ -464,6 +510,8 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand explain 'Show one rule''s documentation'
             cand completions 'Print a shell completion script'
             cand man 'Print the man page'
+            cand map 'Draw the tour on the lab map, as SVG or PNG'
+            cand report 'Write one HTML page to review: the map, the tour''s messages, the findings'
             cand mission 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
             cand translations 'How far each language is translated, message by message'
             cand set 'Edit one value in place, losslessly'
@@ -496,6 +544,10 @@ set edit:completion:arg-completer[ekb] = {|@words|
         &'ekb;help;completions'= {
         }
         &'ekb;help;man'= {
+        }
+        &'ekb;help;map'= {
+        }
+        &'ekb;help;report'= {
         }
         &'ekb;help;mission'= {
             cand check 'Check the mission, the culture knowledge base and the environment knowledge base together'

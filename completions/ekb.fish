@@ -52,6 +52,8 @@ complete -c ekb -n "__fish_ekb_needs_command" -f -a "rules" -d 'List the rule ca
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "explain" -d 'Show one rule\'s documentation'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "completions" -d 'Print a shell completion script'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "man" -d 'Print the man page'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "map" -d 'Draw the tour on the lab map, as SVG or PNG'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "report" -d 'Write one HTML page to review: the map, the tour\'s messages, the findings'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "mission" -d 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "translations" -d 'How far each language is translated, message by message'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "set" -d 'Edit one value in place, losslessly'
@@ -70,6 +72,9 @@ complete -c ekb -n "__fish_ekb_using_subcommand check" -l level -d 'Show only fi
 warning\t''
 info\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l output-file -d 'Write the report to this file instead of standard output' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l map-config -d 'The robot\'s mapGenerationConfiguration.ini: check poses against its map and draw on it' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l map-image -d 'A map image instead (PNG: white free, black occupied), with --map-size; the robot\'s radius is taken as 0.3 m' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l map-size -d 'The map image\'s width and height, in metres' -r
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
@@ -330,6 +335,46 @@ complete -c ekb -n "__fish_ekb_using_subcommand man" -s q -l quiet -d 'Print onl
 complete -c ekb -n "__fish_ekb_using_subcommand man" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand man" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand man" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand map" -s o -l output -d 'Write the drawing to this file: SVG, or PNG if it ends in `.png` [default: SVG on standard output]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l format -d 'The drawing\'s format [default: from OUT\'s extension, else svg]' -r -f -a "svg\t'Scalable, self-contained, with selectable text'
+png\t'A raster image, rendered with resvg'"
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l map-config -d 'The robot\'s mapGenerationConfiguration.ini: check poses against its map and draw on it' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l map-image -d 'A map image instead (PNG: white free, black occupied), with --map-size; the robot\'s radius is taken as 0.3 m' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l map-size -d 'The map image\'s width and height, in metres' -r
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand map" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand map" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand map" -l isolated -d 'Use no settings file: every rule, at its own severity'
+complete -c ekb -n "__fish_ekb_using_subcommand map" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c ekb -n "__fish_ekb_using_subcommand map" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand report" -s o -l output -d 'Write the page here (`-` is standard output)' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand report" -l map-config -d 'The robot\'s mapGenerationConfiguration.ini: check poses against its map and draw on it' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand report" -l map-image -d 'A map image instead (PNG: white free, black occupied), with --map-size; the robot\'s radius is taken as 0.3 m' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand report" -l map-size -d 'The map image\'s width and height, in metres' -r
+complete -c ekb -n "__fish_ekb_using_subcommand report" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand report" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand report" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand report" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand report" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand report" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand report" -l isolated -d 'Use no settings file: every rule, at its own severity'
+complete -c ekb -n "__fish_ekb_using_subcommand report" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c ekb -n "__fish_ekb_using_subcommand report" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and not __fish_seen_subcommand_from check tree walk help" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and not __fish_seen_subcommand_from check tree walk help" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
@@ -526,25 +571,27 @@ complete -c ekb -n "__fish_ekb_using_subcommand settings" -s q -l quiet -d 'Prin
 complete -c ekb -n "__fish_ekb_using_subcommand settings" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand settings" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand settings" -s V -l version -d 'Print version'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "check" -d 'Validate knowledge-base files against every rule'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "locations" -d 'A table of all locations'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "show" -d 'One location in full'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "tour" -d 'The tour in order, as the robot will say it in one language'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "diff" -d 'What changed between two knowledge bases, location by location'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "export" -d 'The typed model as JSON'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "import" -d 'JSON back to a canonical knowledge-base file'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "fmt" -d 'Rewrite files in the canonical layout'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "fix" -d 'Apply the machine-applicable fixes'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "rules" -d 'List the rule catalogue'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "explain" -d 'Show one rule\'s documentation'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "completions" -d 'Print a shell completion script'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "man" -d 'Print the man page'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "mission" -d 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "translations" -d 'How far each language is translated, message by message'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "set" -d 'Edit one value in place, losslessly'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "lsp" -d 'Run the language server (LSP, on standard input and output) for editors'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "settings" -d 'Print the settings in force for a file, and where each comes from'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man mission translations set lsp settings help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "check" -d 'Validate knowledge-base files against every rule'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "locations" -d 'A table of all locations'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "show" -d 'One location in full'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "tour" -d 'The tour in order, as the robot will say it in one language'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "diff" -d 'What changed between two knowledge bases, location by location'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "export" -d 'The typed model as JSON'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "import" -d 'JSON back to a canonical knowledge-base file'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "fmt" -d 'Rewrite files in the canonical layout'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "fix" -d 'Apply the machine-applicable fixes'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "rules" -d 'List the rule catalogue'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "explain" -d 'Show one rule\'s documentation'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "completions" -d 'Print a shell completion script'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "man" -d 'Print the man page'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "map" -d 'Draw the tour on the lab map, as SVG or PNG'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "report" -d 'Write one HTML page to review: the map, the tour\'s messages, the findings'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "mission" -d 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "translations" -d 'How far each language is translated, message by message'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "set" -d 'Edit one value in place, losslessly'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "lsp" -d 'Run the language server (LSP, on standard input and output) for editors'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "settings" -d 'Print the settings in force for a file, and where each comes from'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c ekb -n "__fish_ekb_using_subcommand help; and __fish_seen_subcommand_from mission" -f -a "check" -d 'Check the mission, the culture knowledge base and the environment knowledge base together'
 complete -c ekb -n "__fish_ekb_using_subcommand help; and __fish_seen_subcommand_from mission" -f -a "tree" -d 'Print the mission\'s trees, with each node\'s parameter and the phrase each SayText says'
 complete -c ekb -n "__fish_ekb_using_subcommand help; and __fish_seen_subcommand_from mission" -f -a "walk" -d 'A dry run of the mission on the happy path: the steps the robot takes, in order'

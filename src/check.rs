@@ -10,9 +10,10 @@
 //! [`MAX_KEPT_PER_RULE`] are kept, so that one run of `fix` applies that many fixes.
 
 use crate::diagnostic::{Diagnostic, RuleCount, Summary};
+use crate::map::LabMap;
 use crate::model::build::{build, Options};
 use crate::model::KnowledgeBase;
-use crate::reader::Reader;
+use crate::reader::{Loaded, Reader};
 use crate::rules::selection::RuleSet;
 use crate::rules::{self, compat, structure, Rule};
 use crate::source::SourceFile;
@@ -140,6 +141,28 @@ impl Checked<'_> {
             })
             .cloned()
             .collect()
+    }
+
+    /// Runs the map rules (SPEC §10) on `loaded`, this file as [`Checked::reader`] loads
+    /// it, and adds their findings as if the check had made them.
+    pub fn check_map(&mut self, map: &LabMap, loaded: &Loaded<'_>) {
+        let mut found = Diagnostics {
+            kept: std::mem::take(&mut self.diagnostics),
+            counts: std::mem::take(&mut self.counts),
+        };
+        let mut on_map = Diagnostics::default();
+        rules::map::check(&self.kb, loaded, map, &mut on_map);
+        on_map.kept.retain(|d| self.rules.is_enabled(d.rule));
+        on_map
+            .counts
+            .0
+            .retain(|(rule, _)| self.rules.is_enabled(rule));
+        found.append(on_map);
+        let Diagnostics { kept, counts } = found;
+        self.diagnostics = kept;
+        sort_by_position(&mut self.diagnostics);
+        self.omitted = omitted_notes(&self.diagnostics, &counts);
+        self.counts = counts;
     }
 
     /// The findings to show, in order: the first [`MAX_SHOWN_PER_RULE`] of each rule, and

@@ -92,6 +92,10 @@ pub enum Command {
     Completions(commands::completions::Args),
     /// Print the man page
     Man(commands::man::Args),
+    /// Draw the tour on the lab map, as SVG or PNG
+    Map(commands::map::Args),
+    /// Write one HTML page to review: the map, the tour's messages, the findings
+    Report(commands::report::Args),
     /// The behaviour-tree mission with both knowledge bases: check, tree, walk
     Mission(commands::mission::Args),
     /// How far each language is translated, message by message
@@ -124,6 +128,8 @@ pub fn main() -> ExitCode {
         Command::Explain(args) => commands::explain::run(args, &context),
         Command::Completions(args) => commands::completions::run(args, &context),
         Command::Man(args) => commands::man::run(args, &context),
+        Command::Map(args) => commands::map::run(args, &context),
+        Command::Report(args) => commands::report::run(args, &context),
         Command::Mission(args) => commands::mission::run(args, &context),
         Command::Translations(args) => commands::translations::run(args, &context),
         Command::Set(args) => commands::set::run(args, &context),

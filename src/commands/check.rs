@@ -3,6 +3,7 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
+use super::map::{on_map, MapArgs};
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::Checked;
 use crate::diagnostic::{Hidden, Severity, Summary};
@@ -50,6 +51,9 @@ pub struct Args {
     /// check clean (to adopt ekb on an existing file); run again, it adds nothing
     #[arg(long)]
     pub add_ignore: bool,
+
+    #[command(flatten)]
+    pub map: MapArgs,
 }
 
 /// `--select`, `--extend-select` and `--ignore`: which rules run, over `ekb.toml`'s choice.
@@ -101,13 +105,22 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
             }
         }
     }
-    if read.is_empty() {
+    let Some((first, ..)) = read.first() else {
         return Ok(Exit::Failure);
-    }
+    };
+    // One map for all the files: that of the first file's `ekb.toml`, unless given.
+    let map_config = context.settings_for(first)?.map.config;
+    let map = args.map.load(map_config.map(|config| config.value))?;
     // A mission or a culture file is recognised by its content and checked alone.
     let checked: Vec<Checked> = read
         .iter()
-        .map(|(_, options, rules, source)| check_file(source, options, rules))
+        .map(|(_, options, rules, source)| {
+            let checked = check_file(source, options, rules);
+            match &map {
+                Some(map) => on_map(checked, Some(map)).0,
+                None => checked,
+            }
+        })
         .collect();
     let exit = if args.add_ignore {
         let paths: Vec<PathBuf> = read.iter().map(|(path, ..)| path.clone()).collect();

@@ -21,6 +21,7 @@ mod consequence;
 pub mod content;
 pub mod culture;
 pub mod line_rules;
+pub mod map;
 pub mod mission;
 pub mod selection;
 pub mod structure;
@@ -61,6 +62,7 @@ pub enum Category {
     Tour,
     Content,
     Compat,
+    Map,
     /// The behaviour tree, and what it needs of both knowledge bases (SPEC §11).
     Mission,
     /// The culture knowledge base and its types file (SPEC §11).
@@ -79,6 +81,7 @@ impl Category {
             Category::Mission => "mission",
             Category::Culture => "culture",
             Category::Translation => "translation",
+            Category::Map => "map",
         }
     }
 
@@ -88,6 +91,7 @@ impl Category {
             Category::Tour => "Tour",
             Category::Content => "Content",
             Category::Compat => "Reference-reader compatibility",
+            Category::Map => "Map",
             Category::Mission => "Mission",
             Category::Culture => "Culture knowledge base",
             Category::Translation => "Translation",
@@ -164,6 +168,9 @@ pub static ALL: &[&Rule] = &[
     &compat::compat_reader_crash::COMPAT_READER_CRASH,
     &compat::compat_slow_load::COMPAT_SLOW_LOAD,
     &compat::compat_ignored_key::COMPAT_IGNORED_KEY,
+    &map::pose_outside_map::POSE_OUTSIDE_MAP,
+    &map::pose_in_obstacle::POSE_IN_OBSTACLE,
+    &map::target_outside_map::TARGET_OUTSIDE_MAP,
     &mission::mission_invalid_xml::MISSION_INVALID_XML,
     &mission::mission_unknown_node::MISSION_UNKNOWN_NODE,
     &mission::mission_bad_children::MISSION_BAD_CHILDREN,
