@@ -1,73 +1,132 @@
 #!/usr/bin/env bash
-# End-to-end test of .pre-commit-hooks.yaml with the real pre-commit tool (from PyPI), in a
-# throwaway git repository: a commit of the seed file is refused with the diagnostics shown;
-# once fixed, it commits. Then the ekb-fix and ekb-fmt hooks repair a file in the commit. Needs network access to PyPI and crates.io (pre-commit builds ekb
-# with `cargo install`). The hooks are taken from this repository's HEAD commit.
+# End-to-end test of the README's two pre-commit set-ups with the real pre-commit tool (the
+# one on the PATH, else installed from PyPI in a throwaway venv), in throwaway git
+# repositories:
+# - "pre-commit builds ekb": the README's snippet as written, its `repo` pointed at a
+#   throwaway clone of this repository in which the snippet's `rev` is a tag on HEAD (the
+#   real tag is pushed with each release);
+# - "an ekb you installed": the README's `repo: local`, `language: system` snippet, with the
+#   ekb of `cargo build` on the PATH.
+# With each, a commit of the seed file is refused with its diagnostics, and once fixed it
+# commits. Then the ekb-fix and ekb-fmt hooks repair a file in a commit.
+#
+# Needs network access to PyPI (unless pre-commit is installed) and crates.io (pre-commit
+# builds ekb with `cargo install`; its build is kept in target/pre-commit between runs).
+# EKB_MEASURE_HOOK_BUILD=1 builds the rust hook from nothing instead, and prints how long
+# pre-commit took to install it (the figure in the README).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-python3 -m venv "$work/venv"
-"$work/venv/bin/pip" install --quiet --disable-pip-version-check pre-commit
-export PATH="$work/venv/bin:$PATH"
-# pre-commit builds ekb with `cargo install`; keep its build between runs.
-export CARGO_TARGET_DIR="$root/target/pre-commit"
-export PRE_COMMIT_HOME="$root/target/pre-commit-home"
-
-repo="$work/content"
-mkdir -p "$repo/data"
-cd "$repo"
-git init --quiet
-git config user.email editor@example.org
-git config user.name "Content Editor"
-# Writes .pre-commit-config.yaml using this repository's hooks with the given ids.
-use_hooks() {
-  {
-    echo "repos:"
-    echo "  - repo: $root"
-    echo "    rev: $(git -C "$root" rev-parse HEAD)"
-    echo "    hooks:"
-    for id in "$@"; do echo "      - id: $id"; done
-  } > .pre-commit-config.yaml
-}
-use_hooks ekb-check
-pre-commit install --install-hooks >/dev/null
-
 fail() { echo "test-pre-commit: FAILED: $*" >&2; exit 1; }
 
-cp "$root/data/environmentKnowledgeBaseInput.dat" data/
-git add .pre-commit-config.yaml data/environmentKnowledgeBaseInput.dat
-if git commit --quiet -m "Add the seed knowledge base" >"$work/refused.log" 2>&1; then
-  cat "$work/refused.log"; fail "the seed file was committed despite its errors"
+if ! command -v pre-commit >/dev/null; then
+  python3 -m venv "$work/venv"
+  "$work/venv/bin/pip" install --quiet --disable-pip-version-check pre-commit
+  export PATH="$work/venv/bin:$PATH"
 fi
-grep -q "key-case" "$work/refused.log" || { cat "$work/refused.log"; fail "the refusal did not show key-case"; }
-grep -q "missing-field" "$work/refused.log" || { cat "$work/refused.log"; fail "the refusal did not show missing-field"; }
-echo "ok: the seed file is refused, with its diagnostics"
+if [ -n "${EKB_MEASURE_HOOK_BUILD:-}" ]; then
+  export CARGO_TARGET_DIR="$work/cargo-target" PRE_COMMIT_HOME="$work/pre-commit-home"
+else
+  export CARGO_TARGET_DIR="$root/target/pre-commit" PRE_COMMIT_HOME="$root/target/pre-commit-home"
+fi
 
-sed -i 's/^postGestureMessageenglish/postGestureMessageEnglish/' data/environmentKnowledgeBaseInput.dat
-git add data/environmentKnowledgeBaseInput.dat
-git commit --quiet -m "Add the fixed knowledge base" >"$work/accepted.log" 2>&1 ||
-  { cat "$work/accepted.log"; fail "the fixed file was refused"; }
-echo "ok: the fixed file commits"
+# The YAML block after `<!-- pre-commit:$1 -->` in the README.
+snippet() {
+  awk -v marker="<!-- pre-commit:$1 -->" '
+    $0 == marker { found = 1; next }
+    found && /^```yaml/ { inside = 1; next }
+    inside && /^```/ { exit }
+    inside { print }' "$root/README.md"
+}
+rust_snippet=$(snippet rust)
+system_snippet=$(snippet system)
+[ -n "$rust_snippet" ] && [ -n "$system_snippet" ] || fail "the README has no pre-commit snippets"
+rev=$(sed -n 's/^ *rev: *\([^ ]*\).*/\1/p' <<<"$rust_snippet")
+url=$(sed -n 's/^ *- repo: *\([^ ]*\).*/\1/p' <<<"$rust_snippet")
 
-use_hooks ekb-fix ekb-fmt ekb-check
-mkdir -p lab2/data
+# This repository's HEAD, with the README's rev as a tag on it.
+hooks="$work/ekb"
+git init --quiet "$hooks"
+git -C "$hooks" fetch --quiet "$root" HEAD
+git -C "$hooks" tag "$rev" FETCH_HEAD
+
+# The ekb of the system hook.
+(cd "$root" && env -u CARGO_TARGET_DIR cargo build --quiet)
+installed="$root/target/debug"
+
+# A new content repository using `config`; prints its path.
+content_repo() {
+  local repo="$work/content-$1"
+  mkdir -p "$repo/data"
+  git -C "$repo" init --quiet
+  git -C "$repo" config user.email editor@example.org
+  git -C "$repo" config user.name "Content Editor"
+  printf '%s\n' "$2" > "$repo/.pre-commit-config.yaml"
+  echo "$repo"
+}
+
+# The seed file is refused with its diagnostics; corrected, it commits.
+refuses_then_accepts() {
+  local repo=$1 style=$2
+  cp "$root/data/environmentKnowledgeBaseInput.dat" "$repo/data/"
+  git -C "$repo" add .pre-commit-config.yaml data/environmentKnowledgeBaseInput.dat
+  if (cd "$repo" && git commit --quiet -m "Add the seed knowledge base") >"$work/refused.log" 2>&1; then
+    cat "$work/refused.log"; fail "$style: the seed file was committed despite its errors"
+  fi
+  for rule in key-case missing-field; do
+    grep -q "$rule" "$work/refused.log" || { cat "$work/refused.log"; fail "$style: the refusal did not show $rule"; }
+  done
+  sed -i 's/^postGestureMessageenglish/postGestureMessageEnglish/' "$repo/data/environmentKnowledgeBaseInput.dat"
+  git -C "$repo" add data/environmentKnowledgeBaseInput.dat
+  (cd "$repo" && git commit --quiet -m "Add the fixed knowledge base") >"$work/accepted.log" 2>&1 ||
+    { cat "$work/accepted.log"; fail "$style: the fixed file was refused"; }
+}
+
+# 1. pre-commit builds ekb: the README's snippet, its repository this one.
+repo=$(content_repo rust "${rust_snippet//$url/$hooks}")
+start=$(date +%s)
+(cd "$repo" && pre-commit install --install-hooks >/dev/null)
+built=$(( $(date +%s) - start ))
+if [ -n "${EKB_MEASURE_HOOK_BUILD:-}" ]; then
+  echo "pre-commit install --install-hooks (builds ekb in release mode): ${built} s"
+fi
+refuses_then_accepts "$repo" "language: rust"
+echo "ok: language: rust, rev $rev: the seed file is refused with its diagnostics; fixed, it commits"
+
+# 2. An ekb you installed: the README's local hook, ekb on the PATH.
+repo=$(content_repo system "$system_snippet")
+(cd "$repo" && pre-commit install >/dev/null)
+PATH="$installed:$PATH" refuses_then_accepts "$repo" "language: system"
+echo "ok: language: system: the seed file is refused with its diagnostics; fixed, it commits"
+
+# 3. ekb-fix and ekb-fmt repair a file in the commit.
+repo=$(content_repo fixes "repos:
+  - repo: $hooks
+    rev: $rev
+    hooks:
+      - id: ekb-fix
+      - id: ekb-fmt
+      - id: ekb-check")
+(cd "$repo" && pre-commit install --install-hooks >/dev/null)
+mkdir -p "$repo/lab2/data"
 # A wrong-case key, trailing blanks, CRLF endings and a misaligned line.
 sed -e 's/^postGestureMessageEnglish     5/PostGestureMessageEnglish     5/' \
     -e 's/^robotLocation  *3 /robotLocation\t3 /' \
-    -e 's/$/  \r/' data/environmentKnowledgeBaseInput.dat > lab2/data/environmentKnowledgeBaseInput.dat
-git add .pre-commit-config.yaml lab2
-if git commit --quiet -m "Add a second lab" >"$work/modified.log" 2>&1; then
+    -e 's/$/  \r/' "$root/data/environmentKnowledgeBaseInput.dat" |
+  sed -e 's/^postGestureMessageenglish/postGestureMessageEnglish/' > "$repo/lab2/data/environmentKnowledgeBaseInput.dat"
+git -C "$repo" add .pre-commit-config.yaml lab2
+if (cd "$repo" && git commit --quiet -m "Add a second lab") >"$work/modified.log" 2>&1; then
   cat "$work/modified.log"; fail "a file the hooks had to repair was committed as it was"
 fi
 grep -q "files were modified by this hook" "$work/modified.log" || { cat "$work/modified.log"; fail "ekb-fix/ekb-fmt did not repair the file"; }
-kb=lab2/data/environmentKnowledgeBaseInput.dat
+kb="$repo/lab2/data/environmentKnowledgeBaseInput.dat"
 grep -q "^postGestureMessageEnglish     5 See you again soon$" "$kb" || fail "ekb-fix did not fix the key"
 grep -q $'\r' "$kb" && fail "ekb-fix left CRLF line endings"
 grep -q "^robotLocation                 3 2.0 6.3 -45$" "$kb" || fail "ekb-fmt did not realign the pose"
-git add lab2
-git commit --quiet -m "Add a second lab" >"$work/repaired.log" 2>&1 ||
+git -C "$repo" add lab2
+(cd "$repo" && git commit --quiet -m "Add a second lab") >"$work/repaired.log" 2>&1 ||
   { cat "$work/repaired.log"; fail "the repaired file was refused"; }
 echo "ok: ekb-fix and ekb-fmt repair a file, which then commits"
 echo "pre-commit hooks: 3 passed, 0 failed"

@@ -9,12 +9,15 @@
 //! output stays bounded whatever the input. Of a rule that `ekb fix` can fix, up to
 //! [`MAX_KEPT_PER_RULE`] are kept, so that one run of `fix` applies that many fixes.
 
-use crate::diagnostic::{Diagnostic, Summary};
+use crate::diagnostic::{Diagnostic, RuleCount, Summary};
+use crate::map::LabMap;
 use crate::model::build::{build, Options};
 use crate::model::KnowledgeBase;
-use crate::reader::Reader;
+use crate::reader::{Loaded, Reader};
+use crate::rules::selection::RuleSet;
 use crate::rules::{self, compat, structure, Rule};
 use crate::source::SourceFile;
+use crate::suppression;
 
 /// The most findings of one rule shown for one file; the rest are summed up in a note.
 pub const MAX_SHOWN_PER_RULE: usize = 1000;
@@ -35,12 +38,28 @@ pub fn kept_at_most(rule: &Rule) -> usize {
     }
 }
 
+/// Which of the robot's files a checked file is (SPEC §11): most are environment knowledge
+/// bases; `ekb check` also takes the mission and the culture knowledge base's two files.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FileKind {
+    EnvironmentKnowledgeBase,
+    /// The behaviour tree (`labTour.xml`).
+    Mission,
+    /// `cultureKnowledgeBaseInput.dat`.
+    CultureKnowledgeBase,
+    /// `cultureKnowledgeValueTypesInput.dat`.
+    CultureValueTypes,
+}
+
 /// A checked file: what the robot would load, and what is wrong with it.
 #[derive(Debug)]
 pub struct Checked<'a> {
     pub source: &'a SourceFile,
+    pub kind: FileKind,
+    /// Empty unless the file is an environment knowledge base.
     pub kb: KnowledgeBase<'a>,
-    /// The version of the robot's reader it was checked against.
+    /// The version of the robot's reader it was checked against (of an environment
+    /// knowledge base; the other kinds of file have readers of their own).
     pub reader: Reader,
     /// The findings (at most [`kept_at_most`] of each rule), sorted by position.
     pub diagnostics: Vec<Diagnostic>,
@@ -49,28 +68,33 @@ pub struct Checked<'a> {
     pub omitted: Vec<Diagnostic>,
     /// How many findings of each rule were reported, kept or not.
     counts: RuleCounts,
-    /// Whether every finding of a fixable rule was kept ([`check_for_fix`]).
-    keeps_every_fix: bool,
+    /// The rules that ran, and their severities.
+    rules: RuleSet,
 }
 
 impl Checked<'_> {
-    /// The counts of findings, including those not kept.
+    /// The counts of findings, including those not kept (counted at their rule's severity).
     pub fn summary(&self) -> Summary {
         let mut summary = Summary {
             files: 1,
             ..Summary::default()
         };
-        self.diagnostics.iter().for_each(|d| summary.add(d));
-        for (rule, count) in &self.counts.0 {
-            let dropped = count.saturating_sub(cap(rule, self.keeps_every_fix));
-            if rule.fixable {
-                // Each one `ekb fix` fixes, kept here or not.
-                summary.fixable += dropped;
-            }
-            match rule.severity {
-                crate::Severity::Error => summary.errors += dropped,
-                crate::Severity::Warning => summary.warnings += dropped,
-                crate::Severity::Info => summary.infos += dropped,
+        let mut kept = RuleCounts::default();
+        for diagnostic in &self.diagnostics {
+            summary.add(diagnostic);
+            kept.bump(diagnostic.rule);
+        }
+        for &(rule, count) in &self.counts.0 {
+            let not_kept = count.saturating_sub(kept.get(rule));
+            if not_kept > 0 {
+                summary.count(RuleCount {
+                    rule,
+                    severity: self.rules.severity(rule),
+                    count: not_kept,
+                    // Each one `ekb fix` fixes, kept here or not.
+                    fixable: if rule.fixable { not_kept } else { 0 },
+                    unsafe_fixable: 0,
+                });
             }
         }
         summary
@@ -89,6 +113,16 @@ impl Checked<'_> {
         self.diagnostics.retain(is_error);
         self.omitted.retain(is_error);
         self
+    }
+
+    /// Adds findings made about this file from another file's point of view (the mission's
+    /// about its tour), keeping them in order.
+    pub fn extend(&mut self, more: Vec<Diagnostic>) {
+        if more.is_empty() {
+            return;
+        }
+        self.diagnostics.extend(more);
+        sort_by_position(&mut self.diagnostics);
     }
 
     /// The findings that say the reader crashes on the file (a tree too deep, two split
@@ -110,6 +144,29 @@ impl Checked<'_> {
             .collect()
     }
 
+    /// Runs the map rules (SPEC §10) on `loaded`, this file as [`Checked::reader`] loads
+    /// it, and adds their findings as if the check had made them.
+    pub fn check_map(&mut self, map: &LabMap, loaded: &Loaded<'_>) {
+        let mut found = Diagnostics {
+            kept: std::mem::take(&mut self.diagnostics),
+            counts: std::mem::take(&mut self.counts),
+            keep_every_fix: false,
+        };
+        let mut on_map = Diagnostics::default();
+        rules::map::check(&self.kb, loaded, map, &mut on_map);
+        on_map.kept.retain(|d| self.rules.is_enabled(d.rule));
+        on_map
+            .counts
+            .0
+            .retain(|(rule, _)| self.rules.is_enabled(rule));
+        found.append(on_map);
+        let Diagnostics { kept, counts, .. } = found;
+        self.diagnostics = kept;
+        sort_by_position(&mut self.diagnostics);
+        self.omitted = omitted_notes(&self.diagnostics, &counts);
+        self.counts = counts;
+    }
+
     /// The findings to show, in order: the first [`MAX_SHOWN_PER_RULE`] of each rule, and
     /// in place of the others the rule's note from [`Checked::omitted`].
     pub fn shown(&self) -> impl Iterator<Item = &Diagnostic> {
@@ -129,29 +186,58 @@ impl Checked<'_> {
 
 /// Builds the model of `source` and runs every rule on it.
 pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
-    check_keeping(source, options, Diagnostics::default())
+    check_with(source, options, &RuleSet::default())
 }
 
-/// [`check`], keeping every finding of a fixable rule, not the first [`MAX_KEPT_PER_RULE`]:
-/// for `ekb fix`, which then applies every fix in one pass over the file, however many
-/// there are (a pass for each ten thousand made a million fixes quadratic). Past the first
-/// [`MAX_KEPT_PER_RULE`], a finding keeps its fix and no words (its message, help and
-/// labels are empty): the memory it takes grows with the number of fixes, as the edits do.
-pub fn check_for_fix<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
+/// Builds the model of `source` and runs the rules of `rules` on it, at their severities;
+/// the file's suppression comments silence what they name. A fix that the robot's reader
+/// would misread the result of is not offered ([`verify_fixes`]).
+pub fn check_with<'a>(source: &'a SourceFile, options: &Options, rules: &RuleSet) -> Checked<'a> {
+    check_verified(source, options, rules, Diagnostics::default())
+}
+
+/// [`check_with`], keeping every finding of a fixable rule, not the first
+/// [`MAX_KEPT_PER_RULE`]: for `ekb fix`, which then applies every fix in one pass over the
+/// file, however many there are (a pass for each ten thousand made a million fixes
+/// quadratic). Past the first [`MAX_KEPT_PER_RULE`], a finding keeps its fix and no words
+/// (its message, help and labels are empty): the memory it takes grows with the number of
+/// fixes, as the edits do.
+pub fn check_for_fix<'a>(
+    source: &'a SourceFile,
+    options: &Options,
+    rules: &RuleSet,
+) -> Checked<'a> {
     let out = Diagnostics {
         keep_every_fix: true,
         ..Diagnostics::default()
     };
-    check_keeping(source, options, out)
+    check_verified(source, options, rules, out)
 }
 
-/// [`check`], reporting into `out` (which says what it keeps).
-fn check_keeping<'a>(
+/// [`check_with`], reporting into `out` (which says what it keeps).
+fn check_verified<'a>(
     source: &'a SourceFile,
     options: &Options,
+    rules: &RuleSet,
+    out: Diagnostics,
+) -> Checked<'a> {
+    let mut checked = check_unverified(source, options, rules, out);
+    verify_fixes(
+        &mut checked.diagnostics,
+        source.text(),
+        options,
+        checked.reader,
+    );
+    checked
+}
+
+/// [`check_verified`], its fixes as the rules made them.
+fn check_unverified<'a>(
+    source: &'a SourceFile,
+    options: &Options,
+    rules: &RuleSet,
     mut out: Diagnostics,
 ) -> Checked<'a> {
-    let keeps_every_fix = out.keep_every_fix;
     structure::invalid_utf8::check(source, &mut out);
     compat::compat_bom::check(source.text(), &mut out);
     // The source keeps the first invalid range of a bounded number of lines only.
@@ -160,45 +246,150 @@ fn check_keeping<'a>(
     if let Some(foreign) = structure::not_a_knowledge_base::check(source.text()) {
         // One finding says it all: each of its lines would be an `unknown-key`.
         out.push(foreign);
-        let Diagnostics {
-            kept: mut diagnostics,
-            counts,
-            ..
-        } = out;
-        sort_by_position(&mut diagnostics);
-        return Checked {
-            keeps_every_fix,
-            source,
-            kb: KnowledgeBase::default(),
-            reader: options
-                .reader
-                .unwrap_or(Reader::default_for(options.dialect)),
-            omitted: omitted_notes(&diagnostics, &counts),
-            diagnostics,
-            counts,
-        };
+        let reader = options
+            .reader
+            .unwrap_or(Reader::default_for(options.dialect));
+        let kind = FileKind::EnvironmentKnowledgeBase;
+        return finish(source, kind, KnowledgeBase::default(), reader, out, rules);
     }
     let kb = build(source.text(), options, &mut out);
     let reader = options
         .reader
         .unwrap_or_else(|| Reader::default_for(options.dialect.or(kb.dialect)));
     rules::check_model(&kb, source.text(), reader, &mut out);
+    finish(
+        source,
+        FileKind::EnvironmentKnowledgeBase,
+        kb,
+        reader,
+        out,
+        rules,
+    )
+}
+
+/// A checked file of `kind`: the findings of `found` that `rules` chose and no suppression
+/// silenced, sorted, at the severities of `rules`. `kb` is empty unless the file is an
+/// environment knowledge base.
+pub fn finish<'a>(
+    source: &'a SourceFile,
+    kind: FileKind,
+    kb: KnowledgeBase<'a>,
+    reader: Reader,
+    found: Diagnostics,
+    rules: &RuleSet,
+) -> Checked<'a> {
     let Diagnostics {
         kept: mut diagnostics,
-        counts,
-        ..
-    } = out;
+        mut counts,
+        keep_every_fix,
+    } = found;
+    if !rules.is_default() {
+        diagnostics.retain(|d| rules.is_enabled(d.rule));
+        counts.0.retain(|(rule, _)| rules.is_enabled(rule));
+    }
     sort_by_position(&mut diagnostics);
+    let not_kept = |rule| counts.get(rule).saturating_sub(cap(rule, keep_every_fix));
+    let suppressed = suppression::apply(source.text(), &mut diagnostics, rules, not_kept);
+    for (rule, n) in suppressed.silenced {
+        counts.subtract(rule, n);
+    }
+    if suppressed.unused > 0 {
+        let unused = &structure::unused_suppression::UNUSED_SUPPRESSION;
+        counts.add(unused, suppressed.unused);
+        sort_by_position(&mut diagnostics);
+    }
+    if !rules.is_default() {
+        for diagnostic in &mut diagnostics {
+            if let Some(severity) = rules.severity_override(diagnostic.rule) {
+                diagnostic.set_severity(severity);
+            }
+        }
+    }
     let omitted = omitted_notes(&diagnostics, &counts);
     Checked {
-        keeps_every_fix,
         source,
+        kind,
         kb,
         reader,
         diagnostics,
         omitted,
         counts,
+        rules: rules.clone(),
     }
+}
+
+/// Drops each fix that guesses (an unsafe one, or one that turns a Unicode space into a
+/// plain one) whose line, once fixed, the robot's `reader` would still misread where the
+/// fix changed it: the fixed line, checked alone, has an error there about how the robot
+/// reads it (`-2.5` as a pose's first number loses its minus on the robot).
+fn verify_fixes(diagnostics: &mut [Diagnostic], text: &str, options: &Options, reader: Reader) {
+    let guesses = |d: &Diagnostic| {
+        let unicode_space = &structure::unicode_space::UNICODE_SPACE;
+        d.fix
+            .as_ref()
+            .is_some_and(|fix| !fix.is_safe() || std::ptr::eq(d.rule, unicode_space))
+    };
+    let options = Options {
+        reader: Some(reader),
+        verbose: false,
+        ..*options
+    };
+    for diagnostic in diagnostics.iter_mut().filter(|d| guesses(d)) {
+        let fix = diagnostic.fix.as_ref().expect("a fix");
+        if misread_once_fixed(text, &fix.edits, &options) {
+            diagnostic.fix = None;
+        }
+    }
+}
+
+/// Whether the line of `edits`, once they are applied, has an error about how the robot
+/// reads it where they changed it. Edits over more than one line are not checked.
+fn misread_once_fixed(text: &str, edits: &[crate::diagnostic::Edit], options: &Options) -> bool {
+    let (Some(first), Some(last)) = (
+        edits.iter().map(|e| e.span.start as usize).min(),
+        edits.iter().map(|e| e.span.end as usize).max(),
+    ) else {
+        return false;
+    };
+    if text[first..last].contains('\n') {
+        return false;
+    }
+    let line_start = text[..first].rfind('\n').map_or(0, |newline| newline + 1);
+    let line_end = text[last..]
+        .find('\n')
+        .map_or(text.len(), |at| last + at + 1);
+    let mut sorted: Vec<&crate::diagnostic::Edit> = edits.iter().collect();
+    sorted.sort_by_key(|edit| edit.span.start);
+    let (mut line, mut changed, mut at) = (String::new(), Vec::new(), line_start);
+    for edit in sorted {
+        line.push_str(&text[at..edit.span.start as usize]);
+        let start = line.len();
+        line.push_str(&edit.replacement);
+        changed.push(crate::syntax::Span::new(start, line.len().max(start + 1)));
+        at = edit.span.end as usize;
+    }
+    line.push_str(&text[at..line_end]);
+    let fixed = SourceFile::from_bytes("the fixed line", line.into_bytes());
+    let about_reading = |d: &Diagnostic| {
+        d.rule.category == rules::Category::Compat
+            || [
+                "invalid-number",
+                "wrong-arity",
+                "unicode-space",
+                "unknown-key",
+                "invalid-id",
+            ]
+            .contains(&d.rule.name)
+    };
+    let overlaps = |d: &Diagnostic| {
+        changed
+            .iter()
+            .any(|span| d.span.start < span.end && span.start < d.span.end.max(d.span.start + 1))
+    };
+    check_unverified(&fixed, options, &RuleSet::default(), Diagnostics::default())
+        .diagnostics
+        .iter()
+        .any(|d| d.severity() == crate::Severity::Error && about_reading(d) && overlaps(d))
 }
 
 /// Where the rules report their findings: it keeps the first [`kept_at_most`] of each
@@ -345,7 +536,7 @@ fn omitted_notes(diagnostics: &[Diagnostic], counts: &RuleCounts) -> Vec<Diagnos
     first_omitted
         .into_iter()
         .map(|first| {
-            let more = counts.get(first.rule) - MAX_SHOWN_PER_RULE;
+            let more = counts.get(first.rule).saturating_sub(MAX_SHOWN_PER_RULE);
             Diagnostic::new(
                 first.rule,
                 first.span,
@@ -355,6 +546,7 @@ fn omitted_notes(diagnostics: &[Diagnostic], counts: &RuleCounts) -> Vec<Diagnos
                 ),
             )
             .with_help("fix the ones shown and run ekb check again; the summary counts them all")
+            .with_severity(first.severity())
         })
         .collect()
 }
@@ -383,6 +575,13 @@ impl RuleCounts {
         }
     }
 
+    /// Counts `n` fewer findings of `rule` (silenced ones).
+    fn subtract(&mut self, rule: &'static Rule, n: usize) {
+        if let Some((_, count)) = self.0.iter_mut().find(|(r, _)| std::ptr::eq(*r, rule)) {
+            *count = count.saturating_sub(n);
+        }
+    }
+
     fn get(&self, rule: &'static Rule) -> usize {
         self.0
             .iter()
@@ -405,7 +604,7 @@ mod tests {
             of_rule.count()
         };
         let checked = check(&source, &Options::default());
-        let for_fix = check_for_fix(&source, &Options::default());
+        let for_fix = check_for_fix(&source, &Options::default(), &RuleSet::default());
         assert_eq!(kept(&checked, "trailing-whitespace"), MAX_KEPT_PER_RULE);
         assert_eq!(kept(&for_fix, "trailing-whitespace"), lines);
         // Past what `check` keeps, a finding keeps its fix and no words.

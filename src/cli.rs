@@ -6,9 +6,12 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::parser::ValueSource;
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand, ValueEnum};
 
 use crate::commands::{self, Context};
+use crate::stderr_line;
+use crate::streams;
 
 /// Author and validate the environment knowledge base of a tour-guide robot.
 #[derive(Debug, Parser)]
@@ -39,6 +42,14 @@ pub struct Cli {
     /// Print only findings and errors, no summary
     #[arg(short, long, global = true)]
     pub quiet: bool,
+
+    /// Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file's folder or above
+    #[arg(long, global = true, value_name = "PATH", conflicts_with = "isolated")]
+    pub settings: Option<PathBuf>,
+
+    /// Use no settings file: every rule, at its own severity
+    #[arg(long, global = true)]
+    pub isolated: bool,
 
     #[command(subcommand)]
     pub command: Command,
@@ -80,12 +91,28 @@ pub enum Command {
     Completions(commands::completions::Args),
     /// Print the man page
     Man(commands::man::Args),
+    /// Draw the tour on the lab map, as SVG or PNG
+    Map(commands::map::Args),
+    /// Write one HTML page to review: the map, the tour's messages, the findings
+    Report(commands::report::Args),
+    /// The behaviour-tree mission with both knowledge bases: check, tree, walk
+    Mission(commands::mission::Args),
+    /// How far each language is translated, message by message
+    Translations(commands::translations::Args),
+    /// Edit one value in place, losslessly
+    Set(commands::set::Args),
+    /// Run the language server (LSP, on standard input and output) for editors
+    Lsp(commands::lsp::Args),
+    /// Print the settings in force for a file, and where each comes from
+    Settings(commands::settings::Args),
 }
 
 /// Parses the command line, runs the command and turns the outcome into an exit code.
 pub fn main() -> ExitCode {
-    let cli = Cli::parse();
-    let context = Context::new(&cli);
+    let matches = Cli::command().get_matches();
+    let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|error| error.exit());
+    let reader_from_env = matches.value_source("reader") == Some(ValueSource::EnvVariable);
+    let context = Context::new(&cli, reader_from_env);
     let outcome = match &cli.command {
         Command::Check(args) => commands::check::run(args, &context),
         Command::Locations(args) => commands::locations::run(args, &context),
@@ -100,13 +127,28 @@ pub fn main() -> ExitCode {
         Command::Explain(args) => commands::explain::run(args, &context),
         Command::Completions(args) => commands::completions::run(args, &context),
         Command::Man(args) => commands::man::run(args, &context),
+        Command::Map(args) => commands::map::run(args, &context),
+        Command::Report(args) => commands::report::run(args, &context),
+        Command::Mission(args) => commands::mission::run(args, &context),
+        Command::Translations(args) => commands::translations::run(args, &context),
+        Command::Set(args) => commands::set::run(args, &context),
+        Command::Lsp(args) => commands::lsp::run(args, &context),
+        Command::Settings(args) => commands::settings::run(args, &context),
     };
-    match outcome {
-        Ok(exit) => exit.into(),
-        Err(commands::CommandError::OutputClosed) => commands::Exit::Clean.into(),
-        Err(error) => {
-            error.report();
+    let exit = outcome.unwrap_or_else(|error| {
+        error.report();
+        commands::Exit::Failure
+    });
+    // A stream that could not be written (`ekb export | head -c1`): what it should have
+    // carried is lost, so the command failed, whatever else it did.
+    match streams::failure() {
+        Some(stream) => {
+            stderr_line!(
+                "ekb: error: cannot write to {stream}: it was closed before ekb finished \
+                 (whoever read it stopped reading)"
+            );
             commands::Exit::Failure.into()
         }
+        None => exit.into(),
     }
 }

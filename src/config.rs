@@ -58,18 +58,16 @@ impl Config {
             .map(PathBuf::from);
         match explicit.map(Path::to_path_buf).or(from_env) {
             Some(path) => Config::load(&path),
-            None if Path::new(DEFAULT_PATH).is_file() => Config::load(Path::new(DEFAULT_PATH)),
+            // Not only a regular file: a FIFO or a folder there is refused, not skipped.
+            None if Path::new(DEFAULT_PATH).exists() => Config::load(Path::new(DEFAULT_PATH)),
             None => Ok(Config::default()),
         }
     }
 
-    /// Reads the configuration at `path`.
+    /// Reads the configuration at `path`, with the guards of a knowledge base (a regular
+    /// file of at most [`crate::source::MAX_SETTINGS_SIZE`], in UTF-8).
     pub fn load(path: &Path) -> Result<Config, ConfigError> {
-        let text = std::fs::read_to_string(path).map_err(|e| {
-            let reason = match e.kind() {
-                std::io::ErrorKind::NotFound => "no such file".to_string(),
-                _ => e.to_string().to_lowercase(),
-            };
+        let text = crate::source::read_settings_text(path).map_err(|reason| {
             ConfigError(format!(
                 "cannot read configuration {}: {reason}",
                 path.display()
@@ -105,6 +103,20 @@ impl Config {
         Ok(config)
     }
 
+    /// Where `knowledgeBase` points, and whether that is inside the configuration's project
+    /// folder; `None` without a configuration file or the key.
+    pub fn locate_knowledge_base(&self) -> Option<KnowledgeBaseLocation> {
+        let config = std::path::absolute(self.path.as_ref()?).ok()?;
+        let config_dir = config.parent()?;
+        let project = real_path(config_dir.parent().unwrap_or(config_dir));
+        let file = real_path(self.knowledge_base.as_ref()?);
+        Some(KnowledgeBaseLocation {
+            inside: file.starts_with(&project),
+            file,
+            project,
+        })
+    }
+
     /// The configured knowledge base, or why there is none.
     pub fn knowledge_base(&self) -> Result<&Path, ConfigError> {
         match (&self.knowledge_base, &self.path) {
@@ -118,6 +130,43 @@ impl Config {
             ))),
         }
     }
+}
+
+/// Where a configured knowledge base is ([`Config::locate_knowledge_base`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct KnowledgeBaseLocation {
+    /// The file, its symbolic links and `..` followed.
+    pub file: PathBuf,
+    /// The project folder: the folder that holds the configuration's folder (the robot's
+    /// `config/` and `data/` are siblings in it).
+    pub project: PathBuf,
+    pub inside: bool,
+}
+
+/// `path` absolute, its symbolic links followed as far as it exists and its `..` taken
+/// away: what it really names, to compare with a folder.
+fn real_path(path: &Path) -> PathBuf {
+    if let Ok(real) = std::fs::canonicalize(path) {
+        return real;
+    }
+    let absolute = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+    let mut real = PathBuf::new();
+    for component in absolute.components() {
+        match component {
+            std::path::Component::ParentDir => {
+                real.pop();
+            }
+            std::path::Component::CurDir => {}
+            other => {
+                real.push(other);
+                // Each existing prefix through its links, as the system will follow them.
+                if let Ok(resolved) = std::fs::canonicalize(&real) {
+                    real = resolved;
+                }
+            }
+        }
+    }
+    real
 }
 
 /// A bare name or relative path is resolved in the `data/` folder beside the configuration's
@@ -304,6 +353,36 @@ mod tests {
             Config::parse("reader = 2024-01").unwrap_err(),
             "reader must be one of d5.4.2, 2025-06, 2026-02, 2026-03, 2026-04, not `2024-01`"
         );
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_knowledge_base_outside_the_project_is_told_apart() {
+        let root = tempfile::tempdir().unwrap();
+        let robot = root.path().join("robot");
+        std::fs::create_dir_all(robot.join("config")).unwrap();
+        std::fs::create_dir_all(robot.join("data")).unwrap();
+        let config_path = robot.join("config/kb.ini");
+        let located = |knowledge_base: &str| {
+            std::fs::write(&config_path, format!("knowledgeBase {knowledge_base}\n")).unwrap();
+            Config::load(&config_path)
+                .unwrap()
+                .locate_knowledge_base()
+                .unwrap()
+        };
+        let project = std::fs::canonicalize(&robot).unwrap();
+        let inside = located("kb.dat");
+        assert_eq!(inside.file, project.join("data/kb.dat"));
+        assert_eq!(inside.project, project);
+        assert!(inside.inside);
+        assert!(located("../other/kb.dat").inside);
+        let outside = located("../../../../../../../../proc/self/environ");
+        assert!(outside.file.starts_with("/proc"), "{outside:?}");
+        assert!(!outside.inside);
+        assert!(!located("/etc/hostname").inside);
+        // A link inside the project to a file outside it is outside.
+        std::os::unix::fs::symlink("/etc/hostname", robot.join("data/link.dat")).unwrap();
+        assert!(!located("link.dat").inside);
     }
 
     #[test]

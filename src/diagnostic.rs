@@ -5,8 +5,8 @@ use serde::Serialize;
 use crate::rules::Rule;
 use crate::syntax::Span;
 
-/// How serious a finding is.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+/// How serious a finding is (graver first: `Error < Warning`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, clap::ValueEnum)]
 #[serde(rename_all = "lowercase")]
 pub enum Severity {
     Error,
@@ -54,11 +54,29 @@ impl Edit {
     }
 }
 
+/// Whether `ekb fix` applies a fix on its own (ruff's split).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Applicability {
+    /// It keeps what the file means: `ekb fix` applies it.
+    Safe,
+    /// It guesses what was meant (a dash was a minus, a comma a decimal point): applied only
+    /// with `ekb fix --unsafe-fixes`.
+    Unsafe,
+}
+
 /// A machine-applicable fix: edits that never overlap one another.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Fix {
     pub message: String,
     pub edits: Vec<Edit>,
+    pub applicability: Applicability,
+}
+
+impl Fix {
+    pub fn is_safe(&self) -> bool {
+        self.applicability == Applicability::Safe
+    }
 }
 
 /// A secondary place a finding points at (e.g. the earlier of two duplicate lines).
@@ -125,8 +143,18 @@ impl Diagnostic {
         self.fix = Some(Fix {
             message: message.into(),
             edits,
+            applicability: Applicability::Safe,
         });
         self
+    }
+
+    /// A fix that guesses what was meant ([`Applicability::Unsafe`]).
+    pub fn with_unsafe_fix(self, message: impl Into<String>, edits: Vec<Edit>) -> Diagnostic {
+        let mut diagnostic = self.with_fix(message, edits);
+        if let Some(fix) = &mut diagnostic.fix {
+            fix.applicability = Applicability::Unsafe;
+        }
+        diagnostic
     }
 
     pub fn with_label(mut self, span: Span, message: impl Into<String>) -> Diagnostic {
@@ -138,8 +166,8 @@ impl Diagnostic {
     }
 }
 
-/// Counts of findings by severity.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
+/// Counts of findings by severity, and by rule.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Serialize)]
 pub struct Summary {
     pub files: usize,
     pub errors: usize,
@@ -147,43 +175,153 @@ pub struct Summary {
     pub infos: usize,
     #[serde(skip)]
     pub fixable: usize,
+    /// How many only `ekb fix --unsafe-fixes` can fix.
+    #[serde(skip)]
+    pub unsafe_fixable: usize,
+    /// How many findings of each rule, at each severity, in catalogue order.
+    #[serde(skip)]
+    pub by_rule: Vec<RuleCount>,
+    /// How many findings are counted but not shown (below `--level`).
+    #[serde(skip)]
+    pub hidden: Option<Hidden>,
+}
+
+/// The findings of one rule at one severity.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RuleCount {
+    pub rule: &'static Rule,
+    pub severity: Severity,
+    pub count: usize,
+    /// How many of them `ekb fix` can fix.
+    pub fixable: usize,
+    /// How many of them only `ekb fix --unsafe-fixes` can fix.
+    pub unsafe_fixable: usize,
+}
+
+/// Findings counted but not shown: those less grave than `level`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Hidden {
+    pub count: usize,
+    pub level: Severity,
 }
 
 impl Summary {
-    pub fn add(&mut self, diagnostic: &Diagnostic) {
-        match diagnostic.severity() {
-            Severity::Error => self.errors += 1,
-            Severity::Warning => self.warnings += 1,
-            Severity::Info => self.infos += 1,
+    /// Counts the findings of `counted`'s rule at its severity.
+    pub fn count(&mut self, counted: RuleCount) {
+        match counted.severity {
+            Severity::Error => self.errors += counted.count,
+            Severity::Warning => self.warnings += counted.count,
+            Severity::Info => self.infos += counted.count,
         }
-        if diagnostic.fix.is_some() {
-            self.fixable += 1;
+        self.fixable += counted.fixable;
+        self.unsafe_fixable += counted.unsafe_fixable;
+        let same = |c: &&mut RuleCount| {
+            std::ptr::eq(c.rule, counted.rule) && c.severity == counted.severity
+        };
+        match self.by_rule.iter_mut().find(same) {
+            Some(known) => {
+                known.count += counted.count;
+                known.fixable += counted.fixable;
+                known.unsafe_fixable += counted.unsafe_fixable;
+            }
+            None => {
+                self.by_rule.push(counted);
+                let place = |c: &RuleCount| crate::rules::index_of(c.rule);
+                self.by_rule.sort_by_key(|c| (place(c), c.severity));
+            }
+        }
+    }
+
+    pub fn add(&mut self, diagnostic: &Diagnostic) {
+        let safe = diagnostic.fix.as_ref().map(Fix::is_safe);
+        self.count(RuleCount {
+            rule: diagnostic.rule,
+            severity: diagnostic.severity(),
+            count: 1,
+            fixable: usize::from(safe == Some(true)),
+            unsafe_fixable: usize::from(safe == Some(false)),
+        });
+    }
+
+    /// Adds the counts of another file (or files).
+    pub fn merge(&mut self, other: &Summary) {
+        self.files += other.files;
+        for &counted in &other.by_rule {
+            self.count(counted);
         }
     }
 
     /// `Found 2 errors, 21 warnings (1 fixable with ekb fix)`, or `No problems found`.
     pub fn sentence(&self) -> String {
+        self.found(|_, count, word| format!("{count} {word}"))
+    }
+
+    /// [`Summary::sentence`] with each severity broken down by rule: `Found 2 errors:
+    /// key-case, missing-field · 21 warnings: 20 untranslated-message, 1 repeated-word (1
+    /// fixable with ekb fix)`. A severity whose rules have one finding each lists only their
+    /// names; otherwise each rule comes with its count, the most frequent first.
+    pub fn breakdown(&self) -> String {
+        self.found(|severity, count, word| {
+            let mut rules: Vec<&RuleCount> = self
+                .by_rule
+                .iter()
+                .filter(|c| c.severity == severity && c.count > 0)
+                .collect();
+            rules.sort_by_key(|c| std::cmp::Reverse(c.count));
+            let singles = rules.iter().all(|c| c.count == 1);
+            let named: Vec<String> = rules
+                .iter()
+                .map(|c| match singles {
+                    true => c.rule.name.to_string(),
+                    false => format!("{} {}", c.count, c.rule.name),
+                })
+                .collect();
+            format!("{count} {word}: {}", named.join(", "))
+        })
+    }
+
+    /// `Found …`, each severity with findings described by `part`.
+    fn found(&self, part: impl Fn(Severity, usize, String) -> String) -> String {
         let mut parts = Vec::new();
-        for (count, word) in [
-            (self.errors, "error"),
-            (self.warnings, "warning"),
-            (self.infos, "info"),
+        for (severity, count) in [
+            (Severity::Error, self.errors),
+            (Severity::Warning, self.warnings),
+            (Severity::Info, self.infos),
         ] {
             if count > 0 {
-                let plural = if count == 1 || word == "info" {
+                let word = severity.name();
+                let plural = if count == 1 || severity == Severity::Info {
                     ""
                 } else {
                     "s"
                 };
-                parts.push(format!("{count} {word}{plural}"));
+                parts.push(part(severity, count, format!("{word}{plural}")));
             }
         }
-        if parts.is_empty() {
-            return "No problems found".to_string();
-        }
-        let mut sentence = format!("Found {}", parts.join(", "));
+        let separator = if parts.iter().any(|p| p.contains(':')) {
+            " · "
+        } else {
+            ", "
+        };
+        let mut sentence = if parts.is_empty() {
+            "No problems found".to_string()
+        } else {
+            format!("Found {}", parts.join(separator))
+        };
+        let mut notes = Vec::new();
         if self.fixable > 0 {
-            sentence.push_str(&format!(" ({} fixable with ekb fix)", self.fixable));
+            notes.push(format!("{} fixable with ekb fix", self.fixable));
+        }
+        if self.unsafe_fixable > 0 {
+            let n = self.unsafe_fixable;
+            notes.push(format!("{n} with ekb fix --unsafe-fixes"));
+        }
+        if let Some(hidden) = self.hidden.filter(|hidden| hidden.count > 0) {
+            let level = hidden.level.name();
+            notes.push(format!("{} below --level {level} not shown", hidden.count));
+        }
+        if !notes.is_empty() {
+            sentence.push_str(&format!(" ({})", notes.join("; ")));
         }
         sentence
     }

@@ -16,9 +16,10 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use crate::canonical::Document;
 use crate::check::check_for_fix;
-use crate::diagnostic::{Diagnostic, Edit};
+use crate::diagnostic::{Diagnostic, Edit, Fix};
 use crate::model::build::Options;
 use crate::rules::compat::compat_reader_crash::COMPAT_READER_CRASH;
+use crate::rules::selection::RuleSet;
 use crate::source::SourceFile;
 use crate::syntax::Span;
 
@@ -33,9 +34,17 @@ pub struct Fixed {
     pub counts: BTreeMap<&'static str, usize>,
 }
 
-/// Applies every fix the checks of `source` offer, pass after pass.
+/// Which fixes to apply: those of the rules that run, and the unsafe ones too or not.
+#[derive(Debug, Clone, Default)]
+pub struct Choice {
+    pub rules: RuleSet,
+    /// `--unsafe-fixes`: apply the fixes that guess what was meant as well.
+    pub unsafe_fixes: bool,
+}
+
+/// Applies every safe fix the checks of `source` offer, pass after pass.
 pub fn fix(source: &SourceFile, options: &Options) -> Fixed {
-    let (text, counts) = fix_unless_clean(source, options);
+    let (text, counts) = fix_unless_clean(source, options, &Choice::default());
     Fixed {
         text: text.unwrap_or_else(|| source.text().to_string()),
         counts,
@@ -48,6 +57,7 @@ pub fn fix(source: &SourceFile, options: &Options) -> Fixed {
 pub fn fix_unless_clean(
     source: &SourceFile,
     options: &Options,
+    choice: &Choice,
 ) -> (Option<String>, BTreeMap<&'static str, usize>) {
     let mut fixed: Option<String> = None;
     let mut counts = BTreeMap::new();
@@ -61,7 +71,12 @@ pub fn fix_unless_clean(
             .as_ref()
             .map(|text| SourceFile::from_bytes(source.name(), text.clone().into_bytes()));
         let file = file.as_ref().unwrap_or(source);
-        let checked = check_for_fix(file, &options);
+        let mut checked = check_for_fix(file, &options, &choice.rules);
+        if !choice.unsafe_fixes {
+            for diagnostic in &mut checked.diagnostics {
+                diagnostic.fix = diagnostic.fix.take().filter(Fix::is_safe);
+            }
+        }
         crashes_reader = checked
             .diagnostics
             .iter()
@@ -76,7 +91,7 @@ pub fn fix_unless_clean(
         }
         fixed = Some(new);
     }
-    if crashes_reader {
+    if crashes_reader && choice.rules.is_enabled(&COMPAT_READER_CRASH) {
         // The one fix that is no edit: the location blocks in a balanced order, which
         // `ekb fmt`'s layout writes.
         let text = fixed.as_deref().unwrap_or(source.text());
@@ -87,6 +102,61 @@ pub fn fix_unless_clean(
         }
     }
     (fixed, counts)
+}
+
+/// `bytes` with every byte that is not part of a UTF-8 sequence read as Windows-1252 (the
+/// Latin-1 of Windows editors), or `None` if they hold a NUL (UTF-16 or UTF-32, more likely)
+/// or a byte Windows-1252 leaves undefined. Valid UTF-8 is kept as it is.
+pub fn from_latin1(bytes: &[u8]) -> Option<String> {
+    /// Windows-1252's characters for 0x80..=0x9F (`None`: undefined).
+    const HIGH: [Option<char>; 32] = [
+        Some('€'),
+        None,
+        Some('‚'),
+        Some('ƒ'),
+        Some('„'),
+        Some('…'),
+        Some('†'),
+        Some('‡'),
+        Some('ˆ'),
+        Some('‰'),
+        Some('Š'),
+        Some('‹'),
+        Some('Œ'),
+        None,
+        Some('Ž'),
+        None,
+        None,
+        Some('‘'),
+        Some('’'),
+        Some('“'),
+        Some('”'),
+        Some('•'),
+        Some('–'),
+        Some('—'),
+        Some('˜'),
+        Some('™'),
+        Some('š'),
+        Some('›'),
+        Some('œ'),
+        None,
+        Some('ž'),
+        Some('Ÿ'),
+    ];
+    if bytes.contains(&0) {
+        return None;
+    }
+    let mut out = String::with_capacity(bytes.len() + bytes.len() / 8);
+    for chunk in bytes.utf8_chunks() {
+        out.push_str(chunk.valid());
+        for &byte in chunk.invalid() {
+            out.push(match byte {
+                0x80..=0x9F => HIGH[usize::from(byte - 0x80)]?,
+                _ => char::from(byte),
+            });
+        }
+    }
+    Some(out)
 }
 
 /// Applies the fixes of `diagnostics` to `text`, each whole or not at all, skipping a fix
@@ -112,6 +182,17 @@ pub fn apply<'d>(text: &str, diagnostics: &'d [Diagnostic]) -> Option<(String, V
         }
     }
     (!applied.is_empty()).then(|| (accepted.apply(text), applied))
+}
+
+/// Applies `edits` to `text`; they must not overlap, and no two may insert at one offset
+/// (for `ekb set` and `ekb import --po`, whose edits are one per line).
+pub fn splice(text: &str, edits: &[Edit]) -> String {
+    let mut all = Edits::default();
+    for edit in edits {
+        debug_assert!(!all.clashes(edit.span), "{edit:?}");
+        all.add(Cow::Borrowed(edit));
+    }
+    all.apply(text)
 }
 
 /// `edit`, made to keep the column of the id when it renames the key of a line whose key is

@@ -204,14 +204,20 @@ fn location(out: &mut String, id: usize, dialect: Dialect, rng: &mut Xorshift) {
         line(out, Key::GestureArm, id, format_args!("{arm}"));
     }
     for phase in Phase::ALL {
-        for language in Language::ALL {
-            let words = match language {
-                Language::English => ENGLISH,
-                Language::IsiZulu => ISIZULU,
-                Language::Kinyarwanda => KINYARWANDA,
-            };
+        let english = sentence(ENGLISH, rng);
+        line(
+            out,
+            Key::for_message(phase, Language::English),
+            id,
+            format_args!("{english}"),
+        );
+        for (language, words) in [
+            (Language::IsiZulu, ISIZULU),
+            (Language::Kinyarwanda, KINYARWANDA),
+        ] {
             let key = Key::for_message(phase, language);
-            line(out, key, id, format_args!("{}", sentence(words, rng)));
+            let translation = translation(words, english.len(), rng);
+            line(out, key, id, format_args!("{translation}"));
         }
     }
     if dialect == Dialect::Current {
@@ -230,18 +236,36 @@ fn location(out: &mut String, id: usize, dialect: Dialect, rng: &mut Xorshift) {
 /// letter (so the robot's reader keeps its first character).
 fn sentence(words: &[&str], rng: &mut Xorshift) -> String {
     let count = 4 + rng.below(4);
-    let mut sentence = String::with_capacity(count * 9);
+    sentence_until(words, rng, |words, _| words == count)
+}
+
+/// A sentence as [`sentence`] makes them, as long as an English one of `english_length`
+/// bytes give or take a word, so that no translation rule (`length-mismatch`) flags it.
+fn translation(words: &[&str], english_length: usize, rng: &mut Xorshift) -> String {
+    sentence_until(words, rng, |_, length| length * 5 >= english_length * 4)
+}
+
+/// Words of `words` joined by spaces until `enough(word count, byte length)`, never the
+/// same word twice in a row, starting with an ASCII letter.
+fn sentence_until(
+    words: &[&str],
+    rng: &mut Xorshift,
+    enough: impl Fn(usize, usize) -> bool,
+) -> String {
+    let mut sentence = String::with_capacity(64);
     let mut previous = usize::MAX;
-    for i in 0..count {
+    let mut count = 0;
+    while count == 0 || !enough(count, sentence.len()) {
         let mut index = rng.below(words.len());
-        if index == previous || (i == 0 && !words[index].is_ascii()) {
+        if index == previous || (count == 0 && !words[index].is_ascii()) {
             index = (index + 1) % words.len();
         }
-        if i > 0 {
+        if count > 0 {
             sentence.push(' ');
         }
         sentence.push_str(words[index]);
         previous = index;
+        count += 1;
     }
     sentence
 }

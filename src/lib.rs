@@ -1,13 +1,15 @@
 //! `ekb`: author and validate the environment knowledge base of a tour-guide robot.
 //!
 //! The layers, from the bytes up:
-//! - [`source`]: a file read from disk (always valid UTF-8 text, invalid bytes recorded);
+//! - [`source`]: a file read from disk (always valid UTF-8 text, invalid bytes recorded;
+//!   UTF-16 and UTF-32, which [`encoding`] recognises, refused);
 //! - [`syntax`]: the lossless line syntax, every byte in a span;
 //! - [`model`]: the typed knowledge base, as written; its builder reports what is wrong
 //!   with a line as facts, through a trait the rules implement, and names no rule;
 //! - [`reader`]: what each version of the robot's reader loads from a file;
 //! - [`rules`]: the rule catalogue, one module per rule; [`mod@check`]: the whole check of a
-//!   file, the model built and every rule run;
+//!   file, the model built and every rule run (or those [`rules::selection`] chooses), less
+//!   what the file's [`suppression`] comments silence;
 //! - [`render`]: output formats for findings;
 //! - [`present`]: how `locations`, `show`, `tour` and `diff` show a knowledge base;
 //! - [`diff`]: the semantic difference of two knowledge bases;
@@ -16,7 +18,12 @@
 //! - [`generate`]: synthetic knowledge bases of any size, for benchmarks and tests;
 //! - [`config`] (the robot's INI) and [`settings`] (`ekb.toml`): where the file is and how
 //!   to check it;
-//! - [`cli`]: the `ekb` command line, one module per command under `commands`.
+//! - [`cli`]: the `ekb` command line, one module per command under `commands`; [`streams`]:
+//!   standard output and error, written without a panic;
+//! - [`lsp`]: `ekb lsp`, the language server, whose handlers ask the layers above.
+
+// Output goes through `streams`, which never panics on a closed stream.
+#![deny(clippy::print_stdout, clippy::print_stderr)]
 
 pub mod canonical;
 pub mod check;
@@ -25,18 +32,28 @@ pub mod commands;
 pub mod config;
 pub mod diagnostic;
 pub mod diff;
+pub mod draw;
+pub mod edit;
+pub mod encoding;
 pub mod fixing;
 pub mod generate;
+pub mod lsp;
+pub mod map;
+pub mod mission;
 pub mod model;
 mod parallel;
 pub mod present;
 pub mod reader;
 pub mod render;
+pub mod report;
 pub mod rewrite;
 pub mod rules;
 pub mod settings;
 pub mod source;
+pub mod streams;
+pub mod suppression;
 pub mod syntax;
+pub mod translations;
 pub mod write;
 
 pub use check::{check, Checked};

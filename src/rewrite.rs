@@ -1,5 +1,13 @@
 //! What `ekb fmt` and `ekb fix` share once they know a file's new text: show it as a diff,
 //! write it in place, or send it to standard output; and the refusals that come before.
+//!
+//! A command that rewrites a knowledge base (`fix`, `fmt`, and `set` or `import --po` to
+//! come) takes its files from [`crate::commands::Context::files_to_rewrite`] (which will
+//! not rewrite a configured file outside the configuration's project unless it is named),
+//! reads each with [`crate::commands::Context::read`], calls [`ensure_rewritable`], then
+//! [`deliver`], which writes through [`crate::write::rewrite`]: refused if the file changed
+//! since it was read, and every other guard of [`crate::write`]. [`for_each_file`] goes
+//! on after a file that failed.
 
 use std::io::{self, Write};
 use std::path::Path;
@@ -11,7 +19,7 @@ use crate::commands::{CommandError, Exit};
 use crate::render::escape::escape;
 use crate::rules::structure::not_a_knowledge_base;
 use crate::source::{LineIndex, SourceFile};
-use crate::write::{write_atomically, write_atomically_with};
+use crate::write;
 
 /// What to do with a file's new text.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -36,7 +44,8 @@ pub fn ensure_rewritable(source: &SourceFile) -> Result<(), CommandError> {
         let position = LineIndex::new(source.text()).position(source.text(), first.start);
         return Err(CommandError::Failed(format!(
             "{} is not valid UTF-8 (line {}, column {}): ekb does not rewrite it, as that would \
-             lose the bad bytes; save it as UTF-8 and run again",
+             lose the bad bytes; save it as UTF-8 and run again (if it is Latin-1, \
+             `ekb fix --unsafe-fixes` converts it)",
             escape(source.name()),
             position.line,
             position.column
@@ -68,17 +77,22 @@ pub fn deliver(
         Mode::Diff if changed => print_diff(source.name(), old, new, style)?,
         Mode::Diff => {}
         Mode::Write if stdin => io::stdout().lock().write_all(new.as_bytes())?,
-        Mode::Write if changed => write_atomically(path, new.as_bytes())?,
+        Mode::Write if changed => match source.stamp() {
+            Some(read_as) => write::rewrite(path, new.as_bytes(), read_as)?,
+            None => write::write_atomically(path, new.as_bytes())?,
+        },
         Mode::Write => {}
     }
     Ok(changed)
 }
 
-/// Writes the new text of the file at `path`, made by `fill` as it is written, in place of
-/// the file (standard output for `-`): for a text too large to hold whole. If `fill` fails,
-/// the file is left as it was.
-pub fn write_new(
+/// Writes the new text of `source`, read from `path`, made by `fill` as it is written, in
+/// place of the file (standard output for `-`): for a text too large to hold whole. Written
+/// through [`crate::write::rewrite_streamed`], so refused as [`deliver`] is if the file
+/// changed since it was read. If `fill` fails, the file is left as it was.
+pub fn deliver_streamed(
     path: &Path,
+    source: &SourceFile,
     fill: impl FnOnce(&mut dyn Write) -> io::Result<()>,
 ) -> Result<(), CommandError> {
     if path == Path::new("-") {
@@ -87,11 +101,15 @@ pub fn write_new(
         stdout.flush()?;
         return Ok(());
     }
-    Ok(write_atomically_with(path, fill)?)
+    match source.stamp() {
+        Some(read_as) => write::rewrite_streamed(path, read_as, fill)?,
+        None => write::write_streamed(path, fill)?,
+    }
+    Ok(())
 }
 
-/// Runs `each` on every path, going on after a failure (reported on standard error), and
-/// returns the worst exit.
+/// Runs `each` on every path, going on after a failure (reported on standard error; a
+/// closed standard output is told once, at the end), and returns the worst exit.
 pub fn for_each_file(
     paths: &[std::path::PathBuf],
     mut each: impl FnMut(&Path) -> Result<Exit, CommandError>,

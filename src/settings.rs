@@ -1,37 +1,154 @@
 //! `ekb.toml` (SPEC §7): how `ekb` checks the files of a project. It is found in the checked
-//! file's folder or the nearest parent folder that has one (`ekb.toml`, else `.ekb.toml`).
+//! file's folder or the nearest parent folder that has one (`ekb.toml`, else `.ekb.toml`);
+//! `--settings PATH` names one, `--isolated` uses none.
 //!
-//! For now it sets the robot's reader (`reader = "2025-06"`); the rest of SPEC §7's keys
-//! are accepted and come into force with their own features.
+//! ```toml
+//! reader = "2025-06"
+//! [check]
+//! select = ["structure", "tour", "compat", "content"]   # rule names or categories
+//! ignore = ["untranslated-message"]
+//! extend-select = []
+//! severity = { untranslated-message = "info" }
+//! per-file-ignores = { "drafts/*.dat" = ["content"] }
+//! [translations]
+//! languages = ["english", "isiZulu", "kinyarwanda"]
+//! [map]
+//! config = "../mapGeneration/config/mapGenerationConfiguration.ini"
+//! [mission]
+//! config-dir = "../behaviorController/config"
+//! ```
+//!
+//! Every key is optional, and every key, rule and category is checked: a misspelt one is an
+//! error that names its line and column and the nearest valid name, never a setting silently
+//! ignored. Paths are resolved relative to the settings file's folder. Each value keeps the
+//! line that set it, for `ekb settings`.
 
+use std::ops::Range;
 use std::path::{Path, PathBuf};
 
-use serde::Deserialize;
+use globset::{GlobBuilder, GlobMatcher};
+use toml_edit::{ImDocument, Item, Key, TableLike, Value};
 
+use crate::diagnostic::Severity;
+use crate::model::Language;
 use crate::reader::Reader;
+use crate::rules::selection::{nearest, Choice, RuleSelector, RuleSet};
 
 /// The names a settings file may have, in order of preference within one folder.
 pub const FILE_NAMES: [&str; 2] = ["ekb.toml", ".ekb.toml"];
 
+/// A value and the line of the settings file that set it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Sourced<T> {
+    pub value: T,
+    pub line: u32,
+}
+
 /// The settings in force for one file.
-#[derive(Debug, Clone, Default, PartialEq, Eq)]
+#[derive(Debug, Clone, Default)]
 pub struct Settings {
     /// The file they were read from, if any.
     pub path: Option<PathBuf>,
-    pub reader: Option<Reader>,
+    pub reader: Option<Sourced<Reader>>,
+    pub check: CheckSettings,
+    pub translations: TranslationSettings,
+    pub map: MapSettings,
+    pub mission: MissionSettings,
 }
 
-/// The file as written.
-#[derive(Debug, Deserialize)]
-struct SettingsFile {
-    reader: Option<toml::Spanned<String>>,
+/// `[check]`: which rules run, and how grave their findings are.
+#[derive(Debug, Clone, Default)]
+pub struct CheckSettings {
+    pub select: Option<Sourced<Vec<RuleSelector>>>,
+    pub extend_select: Option<Sourced<Vec<RuleSelector>>>,
+    pub ignore: Option<Sourced<Vec<RuleSelector>>>,
+    /// `severity`, in the file's order.
+    pub severity: Vec<Sourced<(RuleSelector, Severity)>>,
+    /// `per-file-ignores`, in the file's order.
+    pub per_file_ignores: Vec<Sourced<PerFileIgnore>>,
+}
+
+/// One entry of `per-file-ignores`: rules not to run on the files a glob matches.
+#[derive(Debug, Clone)]
+pub struct PerFileIgnore {
+    /// The glob as written.
+    pub pattern: String,
+    /// The glob resolved against the settings file's folder, matched against a file's
+    /// absolute path; and, for a pattern without a `/`, the glob matched against the file's
+    /// name alone (`"*.draft.dat"` matches in any folder, as in ruff).
+    matchers: Vec<GlobMatcher>,
+    pub rules: Vec<RuleSelector>,
+}
+
+impl PerFileIgnore {
+    pub fn matches(&self, file: &Path) -> bool {
+        let absolute = std::path::absolute(file).unwrap_or_else(|_| file.to_path_buf());
+        let name = file.file_name().map(Path::new);
+        self.matchers.iter().any(|matcher| {
+            matcher.is_match(&absolute) || name.is_some_and(|name| matcher.is_match(name))
+        })
+    }
+}
+
+/// `[translations]`.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct TranslationSettings {
+    /// The languages the knowledge base must have, in order.
+    pub languages: Option<Sourced<Vec<Language>>>,
+}
+
+/// `[map]`.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct MapSettings {
+    /// The lab map's `mapGenerationConfiguration.ini` (SPEC §10), resolved.
+    pub config: Option<Sourced<PathBuf>>,
+}
+
+/// `[mission]`.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct MissionSettings {
+    /// The behaviour controller's configuration folder (SPEC §11), resolved.
+    pub config_dir: Option<Sourced<PathBuf>>,
+}
+
+/// Where the settings come from (`--settings`, `--isolated`, or the file's folder).
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub enum Lookup {
+    /// The nearest `ekb.toml` or `.ekb.toml` from the checked file's folder up.
+    #[default]
+    Discover,
+    /// `--settings PATH`.
+    Explicit(PathBuf),
+    /// `--isolated`: none.
+    Isolated,
+}
+
+impl Lookup {
+    /// The settings for `file` (`-`: the current folder's).
+    pub fn settings_for(&self, file: &Path) -> Result<Settings, String> {
+        match self {
+            Lookup::Discover => Settings::discover(file),
+            Lookup::Explicit(path) => Settings::load(path),
+            Lookup::Isolated => Ok(Settings::default()),
+        }
+    }
 }
 
 impl Settings {
     /// The settings for `file` (`-`: the current folder's).
     pub fn discover(file: &Path) -> Result<Settings, String> {
+        match Settings::find(file)? {
+            Some(path) => Settings::load(&path),
+            None => Ok(Settings::default()),
+        }
+    }
+
+    /// The settings file that applies to `file`, if any; relative to the current folder if
+    /// it is in it (as messages name it).
+    pub fn find(file: &Path) -> Result<Option<PathBuf>, String> {
+        let current = std::env::current_dir().map_err(|e| format!("cannot find ekb.toml: {e}"))?;
         let start = if file == Path::new("-") {
-            std::env::current_dir().map_err(|e| format!("cannot find ekb.toml: {e}"))?
+            current.clone()
         } else {
             std::path::absolute(file)
                 .map_err(|e| format!("cannot find ekb.toml: {e}"))?
@@ -43,45 +160,70 @@ impl Settings {
             FILE_NAMES
                 .iter()
                 .map(|name| folder.join(name))
-                .find(|path| path.is_file())
+                // Not only a regular file: a FIFO or a folder there is refused, not skipped.
+                .find(|path| path.exists())
         });
-        match found {
-            Some(path) => Settings::load(&path),
-            None => Ok(Settings::default()),
-        }
+        Ok(found.map(|path| match path.strip_prefix(&current) {
+            Ok(relative) => relative.to_path_buf(),
+            Err(_) => path,
+        }))
     }
 
-    /// Reads the settings file at `path`.
+    /// Reads the settings file at `path`, with the guards of a knowledge base (a regular
+    /// file of at most [`crate::source::MAX_SETTINGS_SIZE`], in UTF-8).
     pub fn load(path: &Path) -> Result<Settings, String> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| format!("cannot read settings {}: {e}", path.display()))?;
-        let mut settings = Settings::parse(&text)
+        let text = crate::source::read_settings_text(path)
+            .map_err(|reason| format!("cannot read settings {}: {reason}", path.display()))?;
+        // Absolute, so that globs match files named from any folder.
+        let absolute = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+        let folder = absolute.parent().unwrap_or(Path::new(""));
+        let mut settings = Settings::parse_in(&text, folder)
             .map_err(|reason| format!("settings {}:{reason}", path.display()))?;
         settings.path = Some(path.to_path_buf());
         Ok(settings)
     }
 
-    /// Parses settings text; an error starts with its `line:column: `.
+    /// Parses settings text, paths resolved against the current folder; an error starts
+    /// with its `line:column: `.
     pub fn parse(text: &str) -> Result<Settings, String> {
-        let file: SettingsFile = toml::from_str(text).map_err(|error| {
-            let line_column = error
-                .span()
-                .map(|span| position(text, span.start))
-                .unwrap_or_default();
-            format!("{line_column} {}", error.message().trim_end())
+        Settings::parse_in(text, Path::new(""))
+    }
+
+    /// Parses settings text, paths resolved against `folder`.
+    fn parse_in(text: &str, folder: &Path) -> Result<Settings, String> {
+        let document = ImDocument::parse(text).map_err(|error| {
+            let at = error.span().map_or(0, |span| span.start);
+            let message = error.message().trim_end().to_string();
+            Parser { text, folder }.error(at, &message)
         })?;
-        let reader = match file.reader {
-            None => None,
-            Some(written) => Some(Reader::from_name(written.get_ref()).ok_or_else(|| {
-                format!(
-                    "{} `reader` must be one of {}, not `{}`",
-                    position(text, written.span().start),
-                    reader_names(),
-                    written.get_ref()
-                )
-            })?),
+        Parser { text, folder }.settings(document.as_table())
+    }
+
+    /// The rules that run on `file`, and their severities: these settings' choice, then
+    /// `command_line`'s, less the file's `per-file-ignores`.
+    pub fn rules_for(&self, file: &Path, command_line: &Choice) -> RuleSet {
+        let check = &self.check;
+        let ours = Choice {
+            select: check.select.as_ref().map(|s| s.value.clone()),
+            extend_select: check
+                .extend_select
+                .as_ref()
+                .map_or_else(Vec::new, |s| s.value.clone()),
+            ignore: check
+                .ignore
+                .as_ref()
+                .map_or_else(Vec::new, |s| s.value.clone()),
         };
-        Ok(Settings { path: None, reader })
+        let mut rules = RuleSet::chosen(&[&ours, command_line]);
+        for entry in &check.per_file_ignores {
+            if file != Path::new("-") && entry.value.matches(file) {
+                rules.ignore(&entry.value.rules);
+            }
+        }
+        let severities: Vec<(RuleSelector, Severity)> =
+            check.severity.iter().map(|s| s.value).collect();
+        rules.set_severities(&severities);
+        rules
     }
 }
 
@@ -90,30 +232,409 @@ pub fn reader_names() -> String {
     Reader::ALL.map(Reader::name).join(", ")
 }
 
-/// `line:column:` of byte `offset` of `text`, 1-based.
-fn position(text: &str, offset: usize) -> String {
-    let before = &text[..offset.min(text.len())];
-    let line = before.matches('\n').count() + 1;
-    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-    format!("{line}:{column}:")
+/// The keys of each table, for errors and suggestions.
+const TOP_KEYS: [&str; 5] = ["reader", "check", "translations", "map", "mission"];
+const CHECK_KEYS: [&str; 5] = [
+    "select",
+    "ignore",
+    "extend-select",
+    "severity",
+    "per-file-ignores",
+];
+
+/// Reads the parsed document into [`Settings`], each error placed at its line and column.
+struct Parser<'t> {
+    text: &'t str,
+    folder: &'t Path,
+}
+
+type Entry<'d> = (&'d Key, &'d Item);
+
+impl Parser<'_> {
+    fn settings(&self, root: &toml_edit::Table) -> Result<Settings, String> {
+        let mut settings = Settings::default();
+        for (key, item) in self.entries(root) {
+            match key.get() {
+                "reader" => settings.reader = Some(self.reader(item)?),
+                "check" => settings.check = self.check(self.table(key, item)?)?,
+                "translations" => {
+                    let table = self.table(key, item)?;
+                    for (key, item) in self.entries(table) {
+                        match key.get() {
+                            "languages" => {
+                                settings.translations.languages = Some(self.languages(item)?)
+                            }
+                            _ => {
+                                return Err(self.unknown_key(key, "[translations]", &["languages"]))
+                            }
+                        }
+                    }
+                }
+                "map" => {
+                    for (key, item) in self.entries(self.table(key, item)?) {
+                        match key.get() {
+                            "config" => settings.map.config = Some(self.path(item)?),
+                            _ => return Err(self.unknown_key(key, "[map]", &["config"])),
+                        }
+                    }
+                }
+                "mission" => {
+                    for (key, item) in self.entries(self.table(key, item)?) {
+                        match key.get() {
+                            "config-dir" => settings.mission.config_dir = Some(self.path(item)?),
+                            _ => return Err(self.unknown_key(key, "[mission]", &["config-dir"])),
+                        }
+                    }
+                }
+                _ => return Err(self.unknown_key(key, "ekb.toml", &TOP_KEYS)),
+            }
+        }
+        Ok(settings)
+    }
+
+    fn check(&self, table: &dyn TableLike) -> Result<CheckSettings, String> {
+        let mut check = CheckSettings::default();
+        for (key, item) in self.entries(table) {
+            match key.get() {
+                "select" => check.select = Some(self.selectors(key, item)?),
+                "ignore" => check.ignore = Some(self.selectors(key, item)?),
+                "extend-select" => check.extend_select = Some(self.selectors(key, item)?),
+                "severity" => {
+                    for (rule, value) in self.entries(self.table(key, item)?) {
+                        let selector = RuleSelector::parse(rule.get())
+                            .map_err(|reason| self.error(self.start(rule, value), &reason))?;
+                        let severity = self.severity(value)?;
+                        check.severity.push(Sourced {
+                            value: (selector, severity),
+                            line: self.line(self.start(rule, value)),
+                        });
+                    }
+                }
+                "per-file-ignores" => {
+                    for (pattern, rules) in self.entries(self.table(key, item)?) {
+                        check
+                            .per_file_ignores
+                            .push(self.per_file_ignore(pattern, rules)?);
+                    }
+                }
+                _ => return Err(self.unknown_key(key, "[check]", &CHECK_KEYS)),
+            }
+        }
+        Ok(check)
+    }
+
+    fn reader(&self, item: &Item) -> Result<Sourced<Reader>, String> {
+        let (name, at) =
+            self.string(item, "`reader` must be a version's name, e.g. \"2025-06\"")?;
+        let reader = Reader::from_name(name).ok_or_else(|| {
+            self.error(
+                at,
+                &format!("`reader` must be one of {}, not `{name}`", reader_names()),
+            )
+        })?;
+        Ok(Sourced {
+            value: reader,
+            line: self.line(at),
+        })
+    }
+
+    fn selectors(&self, key: &Key, item: &Item) -> Result<Sourced<Vec<RuleSelector>>, String> {
+        let what = format!(
+            "`{}` must be a list of rule names or categories, e.g. [\"content\", \"key-case\"]",
+            key.get()
+        );
+        let names = self.strings(item, &what)?;
+        let selectors = names
+            .iter()
+            .map(|&(name, at)| {
+                RuleSelector::parse(name)
+                    .map_err(|reason| self.error(at, &format!("{reason} (in `{}`)", key.get())))
+            })
+            .collect::<Result<_, _>>()?;
+        Ok(Sourced {
+            value: selectors,
+            line: self.line(self.start(key, item)),
+        })
+    }
+
+    fn severity(&self, item: &Item) -> Result<Severity, String> {
+        let what = "a severity must be \"error\", \"warning\" or \"info\"";
+        let (name, at) = self.string(item, what)?;
+        match name {
+            "error" => Ok(Severity::Error),
+            "warning" => Ok(Severity::Warning),
+            "info" => Ok(Severity::Info),
+            _ => Err(self.error(at, &format!("{what}, not `{name}`"))),
+        }
+    }
+
+    fn per_file_ignore(
+        &self,
+        pattern: &Key,
+        item: &Item,
+    ) -> Result<Sourced<PerFileIgnore>, String> {
+        let at = self.start(pattern, item);
+        // `*` stays within a folder, `**` crosses folders, as in .gitignore.
+        let glob = |pattern: &str| {
+            GlobBuilder::new(pattern)
+                .literal_separator(true)
+                .build()
+                .map(|glob| glob.compile_matcher())
+                .map_err(|e| self.error(at, &format!("`{pattern}` is no glob: {}", e.kind())))
+        };
+        let written = pattern.get();
+        let mut matchers = vec![glob(&self.folder.join(written).to_string_lossy())?];
+        if !written.contains('/') {
+            matchers.push(glob(written)?);
+        }
+        let rules = self.selectors(pattern, item)?;
+        Ok(Sourced {
+            value: PerFileIgnore {
+                pattern: written.to_string(),
+                matchers,
+                rules: rules.value,
+            },
+            line: self.line(at),
+        })
+    }
+
+    fn languages(&self, item: &Item) -> Result<Sourced<Vec<Language>>, String> {
+        let what = "`languages` must be a list of languages, e.g. [\"english\", \"isiZulu\"]";
+        let languages = self
+            .strings(item, what)?
+            .into_iter()
+            .map(|(name, at)| {
+                crate::present::language::parse(name).ok_or_else(|| {
+                    let names = ["english", "isiZulu", "kinyarwanda"];
+                    let hint = match nearest(name, names.into_iter()) {
+                        Some(near) => format!("; did you mean `{near}`?"),
+                        None => format!("; the languages are {}", names.join(", ")),
+                    };
+                    let message = format!("`{name}` is no language of the knowledge base{hint}");
+                    self.error(at, &message)
+                })
+            })
+            .collect::<Result<_, _>>()?;
+        Ok(Sourced {
+            value: languages,
+            line: self.line(item.span().map_or(0, |s| s.start)),
+        })
+    }
+
+    /// A path, resolved against the settings file's folder.
+    fn path(&self, item: &Item) -> Result<Sourced<PathBuf>, String> {
+        let (path, at) = self.string(item, "a path must be a string, e.g. \"../config\"")?;
+        Ok(Sourced {
+            value: self.folder.join(path),
+            line: self.line(at),
+        })
+    }
+
+    /// The entries of `table`, in the file's order.
+    fn entries<'d>(&self, table: &'d dyn TableLike) -> Vec<Entry<'d>> {
+        let mut entries: Vec<Entry<'d>> = table
+            .iter()
+            .filter_map(|(name, _)| table.get_key_value(name))
+            .collect();
+        entries.sort_by_key(|(key, item)| self.start(key, item));
+        entries
+    }
+
+    fn table<'d>(&self, key: &Key, item: &'d Item) -> Result<&'d dyn TableLike, String> {
+        item.as_table_like().ok_or_else(|| {
+            self.error(
+                self.start(key, item),
+                &format!("`{}` must be a table", key.get()),
+            )
+        })
+    }
+
+    fn string<'d>(&self, item: &'d Item, what: &str) -> Result<(&'d str, usize), String> {
+        let at = item.span().map_or(0, |span| span.start);
+        item.as_str()
+            .map(|text| (text, at))
+            .ok_or_else(|| self.error(at, what))
+    }
+
+    /// The strings of an array, each with where it is.
+    fn strings<'d>(&self, item: &'d Item, what: &str) -> Result<Vec<(&'d str, usize)>, String> {
+        let at = item.span().map_or(0, |span| span.start);
+        let array = item.as_array().ok_or_else(|| self.error(at, what))?;
+        array
+            .iter()
+            .map(|value: &Value| {
+                let at = value.span().map_or(at, |span: Range<usize>| span.start);
+                value
+                    .as_str()
+                    .map(|text| (text, at))
+                    .ok_or_else(|| self.error(at, what))
+            })
+            .collect()
+    }
+
+    /// Where an entry starts: its key, else its value.
+    fn start(&self, key: &Key, item: &Item) -> usize {
+        key.span()
+            .or_else(|| item.span())
+            .map_or(0, |span| span.start)
+    }
+
+    fn unknown_key(&self, key: &Key, table: &str, known: &[&str]) -> String {
+        let suggestion = match nearest(key.get(), known.iter().copied()) {
+            Some(near) => format!("; did you mean `{near}`?"),
+            None => format!(
+                "; the keys are {}",
+                known
+                    .iter()
+                    .map(|k| format!("`{k}`"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        };
+        self.error(
+            key.span().map_or(0, |span| span.start),
+            &format!("unknown key `{}` in {table}{suggestion}", key.get()),
+        )
+    }
+
+    /// `line:column: message`, for byte `offset`.
+    fn error(&self, offset: usize, message: &str) -> String {
+        let before = &self.text[..offset.min(self.text.len())];
+        let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+        format!("{}:{column}: {message}", self.line(offset))
+    }
+
+    /// The 1-based line of byte `offset`.
+    fn line(&self, offset: usize) -> u32 {
+        let before = &self.text[..offset.min(self.text.len())];
+        before.matches('\n').count() as u32 + 1
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    const FULL: &str = r#"reader = "2025-06"
+[check]
+select = ["structure", "tour", "compat", "content"]
+ignore = ["untranslated-message"]
+extend-select = []
+severity = { untranslated-message = "info", repeated-word = "error" }
+per-file-ignores = { "drafts/*.dat" = ["content"] }
+[translations]
+languages = ["english", "isiZulu", "kinyarwanda"]
+[map]
+config = "../mapGeneration/config/mapGenerationConfiguration.ini"
+[mission]
+config-dir = "../behaviorController/config"
+"#;
+
     #[test]
-    fn the_reader_is_read_and_checked() {
-        let settings = Settings::parse("reader = \"2026-03\"\n[check]\nignore = []\n").unwrap();
-        assert_eq!(settings.reader, Some(Reader::V2026_03));
-        assert_eq!(Settings::parse("").unwrap(), Settings::default());
-        let error = Settings::parse("\nreader = \"2027\"\n").unwrap_err();
-        assert!(
-            error.starts_with("2:10: `reader` must be one of d5.4.2,"),
-            "{error}"
+    fn every_key_of_spec_7_is_read_with_its_line() {
+        let settings = Settings::parse_in(FULL, Path::new("/lab/project")).unwrap();
+        assert_eq!(settings.reader.unwrap().value, Reader::V2025_06);
+        let check = &settings.check;
+        let names = |s: &Sourced<Vec<RuleSelector>>| -> Vec<&str> {
+            s.value.iter().map(|s| s.name()).collect()
+        };
+        let select = check.select.as_ref().unwrap();
+        assert_eq!(names(select), ["structure", "tour", "compat", "content"]);
+        assert_eq!(select.line, 3);
+        assert_eq!(
+            names(check.ignore.as_ref().unwrap()),
+            ["untranslated-message"]
         );
-        let error = Settings::parse("reader = [").unwrap_err();
-        assert!(error.starts_with("1:"), "{error}");
+        assert!(check.extend_select.as_ref().unwrap().value.is_empty());
+        let severities: Vec<(&str, Severity, u32)> = check
+            .severity
+            .iter()
+            .map(|s| (s.value.0.name(), s.value.1, s.line))
+            .collect();
+        assert_eq!(
+            severities,
+            [
+                ("untranslated-message", Severity::Info, 6),
+                ("repeated-word", Severity::Error, 6)
+            ]
+        );
+        let drafts = &check.per_file_ignores[0].value;
+        assert_eq!(drafts.pattern, "drafts/*.dat");
+        assert!(drafts.matches(Path::new("/lab/project/drafts/kb.dat")));
+        assert!(!drafts.matches(Path::new("/lab/project/kb.dat")));
+        assert!(!drafts.matches(Path::new("/elsewhere/drafts/kb.dat")));
+        assert!(!drafts.matches(Path::new("/lab/project/drafts/old/kb.dat")));
+        assert_eq!(
+            settings.translations.languages.unwrap().value,
+            [Language::English, Language::IsiZulu, Language::Kinyarwanda]
+        );
+        assert_eq!(
+            settings.map.config.unwrap().value,
+            Path::new("/lab/project/../mapGeneration/config/mapGenerationConfiguration.ini")
+        );
+        let mission = settings.mission.config_dir.unwrap();
+        assert_eq!(
+            mission.value,
+            Path::new("/lab/project/../behaviorController/config")
+        );
+        assert_eq!(mission.line, 13);
+    }
+
+    #[test]
+    fn the_rules_for_a_file_follow_the_settings() {
+        let settings = Settings::parse_in(FULL, Path::new("/lab/project")).unwrap();
+        let untranslated = crate::rules::by_name("untranslated-message").unwrap();
+        let repeated = crate::rules::by_name("repeated-word").unwrap();
+        let rules = settings.rules_for(Path::new("/lab/project/kb.dat"), &Choice::default());
+        assert!(!rules.is_enabled(untranslated));
+        assert!(rules.is_enabled(repeated));
+        assert_eq!(rules.severity_override(repeated), Some(Severity::Error));
+        let draft = settings.rules_for(Path::new("/lab/project/drafts/kb.dat"), &Choice::default());
+        assert!(!draft.is_enabled(repeated));
+        // A pattern without a folder matches a file's name anywhere.
+        let any = Settings::parse("[check]\nper-file-ignores = { \"*.draft.dat\" = [\"tour\"] }")
+            .unwrap();
+        let tour_missing = crate::rules::by_name("tour-missing").unwrap();
+        let rules = any.rules_for(Path::new("a/b/x.draft.dat"), &Choice::default());
+        assert!(!rules.is_enabled(tour_missing));
+    }
+
+    #[test]
+    fn mistakes_name_their_line_and_column_and_the_nearest_name() {
+        let error = |text: &str| Settings::parse(text).unwrap_err();
+        assert_eq!(
+            error("[check]\nignore = [\"untranslated-mesage\"]\n"),
+            "2:11: `untranslated-mesage` is no rule or category; did you mean \
+             `untranslated-message`? (in `ignore`)"
+        );
+        assert_eq!(
+            error("[check]\n\nselct = []\n"),
+            "3:1: unknown key `selct` in [check]; did you mean `select`?"
+        );
+        assert_eq!(
+            error("[chek]\nselect = []\n"),
+            "1:2: unknown key `chek` in ekb.toml; did you mean `check`?"
+        );
+        assert_eq!(
+            error("colour = \"red\"\n"),
+            "1:1: unknown key `colour` in ekb.toml; the keys are `reader`, `check`, \
+             `translations`, `map`, `mission`"
+        );
+        assert_eq!(
+            error("[check]\nseverity = { key-case = \"fatal\" }\n"),
+            "2:25: a severity must be \"error\", \"warning\" or \"info\", not `fatal`"
+        );
+        assert_eq!(
+            error("[check]\nselect = \"content\"\n"),
+            "2:10: `select` must be a list of rule names or categories, e.g. [\"content\", \"key-case\"]"
+        );
+        assert_eq!(
+            error("[translations]\nlanguages = [\"isizul\"]\n"),
+            "2:14: `isizul` is no language of the knowledge base; did you mean `isiZulu`?"
+        );
+        assert!(error("\nreader = \"2027\"\n").starts_with("2:10: `reader` must be one of d5.4.2,"));
+        assert!(error("reader = [").starts_with("1:"));
+        assert!(Settings::parse("").unwrap().reader.is_none());
     }
 
     #[test]
@@ -124,10 +645,11 @@ mod tests {
         std::fs::write(root.path().join("ekb.toml"), "reader = \"2026-02\"\n").unwrap();
         let file = inner.join("kb.dat");
         let found = Settings::discover(&file).unwrap();
-        assert_eq!(found.reader, Some(Reader::V2026_02));
+        assert_eq!(found.reader.unwrap().value, Reader::V2026_02);
         std::fs::write(root.path().join("a/.ekb.toml"), "reader = \"d5.4.2\"\n").unwrap();
         let found = Settings::discover(&file).unwrap();
-        assert_eq!(found.reader, Some(Reader::D542));
+        assert_eq!(found.reader.unwrap().value, Reader::D542);
         assert_eq!(found.path, Some(root.path().join("a/.ekb.toml")));
+        assert!(Lookup::Isolated.settings_for(&file).unwrap().path.is_none());
     }
 }

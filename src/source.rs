@@ -13,16 +13,21 @@
 //! UTF-8. Standard input, small files and files that are not UTF-8 are read into memory.
 
 use std::fmt;
-use std::fs::File;
+use std::fs::{File, Metadata};
 use std::io::Read;
 use std::path::{Path, PathBuf};
+use std::time::SystemTime;
 
 use crate::check::MAX_KEPT_PER_RULE;
+use crate::encoding;
 use crate::syntax::Span;
 
 /// The largest file `ekb` reads. Larger inputs (or endless ones such as `/dev/zero`) are
 /// refused with a clear message instead of exhausting memory.
 pub const MAX_FILE_SIZE: u64 = 512 * 1024 * 1024;
+
+/// The largest configuration or settings file `ekb` reads (they are a few lines).
+pub const MAX_SETTINGS_SIZE: u64 = 1024 * 1024;
 
 /// Files smaller than this are read: mapping one costs more than copying it.
 const MIN_MAPPED_SIZE: u64 = 64 * 1024;
@@ -38,6 +43,43 @@ pub struct SourceFile {
     invalid_utf8: Vec<Span>,
     /// How many lines have invalid UTF-8 (`invalid_utf8` holds the first of them only).
     invalid_utf8_lines: usize,
+    /// The file as it was on disk when read (none for standard input or bytes in memory).
+    stamp: Option<FileStamp>,
+}
+
+/// What a file on disk was when ekb read it: enough to tell, before writing it back, that
+/// another program changed it meanwhile ([`crate::write`] compares it).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FileStamp {
+    device: u64,
+    inode: u64,
+    len: u64,
+    modified: Option<SystemTime>,
+    /// The time of the last change of its status (permissions, owner, links), in seconds
+    /// and nanoseconds.
+    status_changed: (i64, i64),
+}
+
+impl FileStamp {
+    pub fn of(metadata: &Metadata) -> FileStamp {
+        #[cfg(unix)]
+        use std::os::unix::fs::MetadataExt;
+        #[cfg(unix)]
+        let (device, inode, status_changed) = (
+            metadata.dev(),
+            metadata.ino(),
+            (metadata.ctime(), metadata.ctime_nsec()),
+        );
+        #[cfg(not(unix))]
+        let (device, inode, status_changed) = (0, 0, (0, 0));
+        FileStamp {
+            device,
+            inode,
+            len: metadata.len(),
+            modified: metadata.modified().ok(),
+            status_changed,
+        }
+    }
 }
 
 /// Why a file could not be read at all (exit code 2).
@@ -60,13 +102,7 @@ impl SourceFile {
     pub fn from_bytes(name: impl Into<String>, bytes: Vec<u8>) -> SourceFile {
         let name = name.into();
         match String::from_utf8(bytes) {
-            Ok(text) => SourceFile {
-                name,
-                path: None,
-                text: Text::Owned(text),
-                invalid_utf8: Vec::new(),
-                invalid_utf8_lines: 0,
-            },
+            Ok(text) => SourceFile::from_text(name, text),
             Err(err) => {
                 let (text, invalid_utf8, invalid_utf8_lines) = sanitize(err.into_bytes());
                 SourceFile {
@@ -75,44 +111,56 @@ impl SourceFile {
                     text: Text::Owned(text),
                     invalid_utf8,
                     invalid_utf8_lines,
+                    stamp: None,
                 }
             }
         }
     }
 
-    /// Reads a file from disk, or standard input for `-`.
+    /// Wraps text already in memory (valid UTF-8 by its type: not checked again, which on a
+    /// 60 MB document the language server edits would be a pass over it for every key typed).
+    pub fn from_text(name: impl Into<String>, text: String) -> SourceFile {
+        SourceFile {
+            name: name.into(),
+            path: None,
+            text: Text::Owned(text),
+            invalid_utf8: Vec::new(),
+            invalid_utf8_lines: 0,
+            stamp: None,
+        }
+    }
+
+    /// Reads a file from disk, or standard input for `-`. A file in UTF-16 or UTF-32 is
+    /// refused ([`crate::encoding`]).
     pub fn read(path: &Path) -> Result<SourceFile, ReadError> {
         let fail = |reason: String| ReadError {
             path: path.to_path_buf(),
             reason,
         };
         if path == Path::new("-") {
-            let bytes = read_limited(std::io::stdin().lock(), 0).map_err(fail)?;
+            let bytes = read_limited(std::io::stdin().lock(), 0, MAX_FILE_SIZE).map_err(fail)?;
+            refuse_wide(&bytes).map_err(fail)?;
             return Ok(SourceFile::from_bytes("<stdin>", bytes));
         }
-        let metadata = std::fs::metadata(path).map_err(|e| fail(describe_io_error(&e)))?;
-        if metadata.is_dir() {
-            return Err(fail("it is a directory; give a knowledge-base file".into()));
-        }
-        // A FIFO would block until a writer comes (possibly never) and a device such as
-        // /dev/zero never ends: read only regular files by name, and streams through `-`.
-        if !metadata.is_file() {
-            return Err(fail(
-                "it is not a regular file (a pipe, socket or device); to check a stream, \
-                 pipe it to `ekb check -`"
-                    .into(),
-            ));
-        }
-        if metadata.len() > MAX_FILE_SIZE {
-            return Err(fail(too_large()));
-        }
-        let file = File::open(path).map_err(|e| fail(describe_io_error(&e)))?;
+        let (file, metadata) = open_regular(path, MAX_FILE_SIZE).map_err(|reason| {
+            // A FIFO would block until a writer comes (possibly never) and a device such
+            // as /dev/zero never ends: streams come through `-`.
+            fail(match reason {
+                Refusal::Directory => "it is a directory; give a knowledge-base file".into(),
+                Refusal::NotRegular => {
+                    format!("{NOT_REGULAR}; to check a stream, pipe it to `ekb check -`")
+                }
+                Refusal::Other(reason) => reason,
+            })
+        })?;
         let name = path.display().to_string();
+        let stamp = Some(FileStamp::of(&metadata));
         if metadata.len() >= MIN_MAPPED_SIZE {
             if let Some(map) = map(&file) {
                 if map.len() as u64 > MAX_FILE_SIZE {
-                    return Err(fail(too_large()));
+                    return Err(fail(too_large(MAX_FILE_SIZE)));
                 }
+                refuse_wide(&map).map_err(fail)?;
                 if is_utf8(&map) {
                     return Ok(SourceFile {
                         name,
@@ -120,6 +168,7 @@ impl SourceFile {
                         text: Text::Mapped(map),
                         invalid_utf8: Vec::new(),
                         invalid_utf8_lines: 0,
+                        stamp,
                     });
                 }
                 // Not UTF-8: the text is a sanitized copy, read below once the mapping is
@@ -128,11 +177,18 @@ impl SourceFile {
         }
         // One allocation of the right size: the text is the largest thing ekb holds, so
         // growing it by doubling would cost up to twice the file in peak memory.
-        let bytes = read_limited(file, metadata.len() as usize).map_err(fail)?;
+        let bytes = read_limited(file, metadata.len() as usize, MAX_FILE_SIZE).map_err(fail)?;
+        refuse_wide(&bytes).map_err(fail)?;
         Ok(SourceFile {
             path: Some(path.to_path_buf()),
+            stamp,
             ..SourceFile::from_bytes(name, bytes)
         })
+    }
+
+    /// The file as it was on disk when read; `None` for standard input.
+    pub fn stamp(&self) -> Option<&FileStamp> {
+        self.stamp.as_ref()
     }
 
     pub fn name(&self) -> &str {
@@ -142,6 +198,15 @@ impl SourceFile {
     /// The path it was read from, if it was read from a file.
     pub fn path(&self) -> Option<&Path> {
         self.path.as_deref()
+    }
+
+    /// The text, owned (a mapped file's is copied): to edit it, as the language server
+    /// does with an open document.
+    pub fn into_text(self) -> String {
+        match self.text {
+            Text::Owned(text) => text,
+            Text::Mapped(map) => String::from_utf8_lossy(&map).into_owned(),
+        }
     }
 
     pub fn text(&self) -> &str {
@@ -204,24 +269,87 @@ fn map(file: &File) -> Option<memmap2::Mmap> {
     unsafe { memmap2::MmapOptions::new().populate().map(file) }.ok()
 }
 
-fn too_large() -> String {
+fn too_large(limit: u64) -> String {
     format!(
-        "it is larger than {} MiB, the most ekb reads; is it really a knowledge base?",
-        MAX_FILE_SIZE / (1024 * 1024)
+        "it is larger than {} MiB, the most ekb reads of such a file; is it the right file?",
+        limit / (1024 * 1024)
     )
 }
 
-/// Reads everything, up to [`MAX_FILE_SIZE`] bytes; `expected` is the size if known (a file
-/// may still grow or shrink while it is read, so it is only a hint).
-fn read_limited(reader: impl Read, expected: usize) -> Result<Vec<u8>, String> {
+/// Why [`open_regular`] refused a path. Each caller says what to give instead of a folder
+/// or a stream.
+enum Refusal {
+    Directory,
+    /// A pipe, a socket or a device.
+    NotRegular,
+    Other(String),
+}
+
+const NOT_REGULAR: &str = "it is not a regular file (a pipe, socket or device)";
+
+/// Opens a regular file of at most `limit` bytes, with its metadata as opened.
+fn open_regular(path: &Path, limit: u64) -> Result<(File, Metadata), Refusal> {
+    // Looked at before opening: opening a FIFO blocks until a writer comes.
+    let metadata = std::fs::metadata(path).map_err(|e| Refusal::Other(describe_io_error(&e)))?;
+    if metadata.is_dir() {
+        return Err(Refusal::Directory);
+    }
+    if !metadata.is_file() {
+        return Err(Refusal::NotRegular);
+    }
+    if metadata.len() > limit {
+        return Err(Refusal::Other(too_large(limit)));
+    }
+    let file = File::open(path).map_err(|e| Refusal::Other(describe_io_error(&e)))?;
+    // The metadata of the file opened, which is what the stamp must describe.
+    let metadata = file
+        .metadata()
+        .map_err(|e| Refusal::Other(describe_io_error(&e)))?;
+    Ok((file, metadata))
+}
+
+/// Reads a configuration or settings file with the guards of a knowledge base: a regular
+/// file (not a FIFO that would hang, nor `/dev/zero`), of at most [`MAX_SETTINGS_SIZE`],
+/// in UTF-8.
+pub fn read_settings_text(path: &Path) -> Result<String, String> {
+    let (file, metadata) =
+        open_regular(path, MAX_SETTINGS_SIZE).map_err(|reason| match reason {
+            Refusal::Directory => "it is a directory; give a file".into(),
+            Refusal::NotRegular => format!("{NOT_REGULAR}; give a regular file"),
+            Refusal::Other(reason) => reason,
+        })?;
+    let bytes = read_limited(file, metadata.len() as usize, MAX_SETTINGS_SIZE)?;
+    refuse_wide(&bytes)?;
+    String::from_utf8(bytes).map_err(|error| {
+        let offset = error.utf8_error().valid_up_to();
+        let text = std::str::from_utf8(&error.as_bytes()[..offset]).unwrap_or_default();
+        let position = LineIndex::new(text).position(text, offset as u32);
+        format!(
+            "it is not valid UTF-8 (line {}, column {}); save it as UTF-8",
+            position.line, position.column
+        )
+    })
+}
+
+/// Refuses text in UTF-16 or UTF-32.
+fn refuse_wide(bytes: &[u8]) -> Result<(), String> {
+    match encoding::detect(bytes) {
+        Some(wide) => Err(wide.to_string()),
+        None => Ok(()),
+    }
+}
+
+/// Reads everything, up to `limit` bytes; `expected` is the size if known (a file may still
+/// grow or shrink while it is read, so it is only a hint).
+fn read_limited(reader: impl Read, expected: usize, limit: u64) -> Result<Vec<u8>, String> {
     // One byte more than expected, so that reading up to the end needs no reallocation.
     let mut bytes = Vec::with_capacity(expected + 1);
     reader
-        .take(MAX_FILE_SIZE + 1)
+        .take(limit + 1)
         .read_to_end(&mut bytes)
         .map_err(|e| describe_io_error(&e))?;
-    if bytes.len() as u64 > MAX_FILE_SIZE {
-        return Err(too_large());
+    if bytes.len() as u64 > limit {
+        return Err(too_large(limit));
     }
     Ok(bytes)
 }

@@ -1,103 +1,362 @@
-//! Safe writes for `ekb fmt`, `ekb fix` and `ekb import -o`: a file is either left as it was
-//! or replaced whole, never half-written.
+//! Every file ekb writes goes through here: `fix` and `fmt` (and `set`, `import --po`)
+//! rewriting a knowledge base they read, and `import -o`, `export -o` (and `map -o`,
+//! `report -o`) writing an output. A file is either left as it was or replaced whole.
 //!
-//! The new contents go to a temporary file in the same folder (so the final rename stays on
-//! one file system), are flushed to disk, get the original's permissions, and then replace
-//! the original by a rename. A read-only file is refused even though a rename could replace
-//! it: an editor would refuse too, and the owner made it read-only for a reason.
+//! # The API
+//! - [`write_atomically`]`(path, bytes)`: writes an output, new or replacing a file.
+//! - [`write_streamed`]`(path, produce)`: the same, `produce` writing the contents (a large
+//!   export is never held in memory whole).
+//! - [`rewrite`]`(path, bytes, read_as)`: writes back a file ekb read, whose
+//!   [`FileStamp`] (from [`crate::source::SourceFile::stamp`]) says what it was then.
+//!   [`crate::rewrite::deliver`] calls it for `fix` and `fmt`; a command that rewrites a
+//!   knowledge base calls `deliver` too.
+//! - [`rewrite_streamed`]`(path, read_as, produce)`: the same, `produce` writing the new
+//!   contents (`fmt` streams a formatted file; see [`crate::rewrite::deliver_streamed`]).
+//!
+//! # What is refused, the file left unchanged and the error saying why
+//! - a path that is not a regular file: a folder, a FIFO, a socket, a device (`-o
+//!   /dev/null` would otherwise replace `/dev/null` with a regular file, as root);
+//! - a path that reaches its file through `/proc`, such as `/dev/stdin` or
+//!   `/proc/self/fd/3`: it names a file that ekb has open (`ekb fix /dev/stdin < kb.dat`
+//!   would rewrite `kb.dat`), not a file of its own;
+//! - a read-only file, by its permission bits, even as root (whom the bits do not stop);
+//! - a file ekb may not open for writing;
+//! - a file that changed since ekb read it (or, for an output, since ekb looked at it):
+//!   another size, modification or status-change time, or inode. The last look is just
+//!   before the rename, so the window left is that of one system call.
+//!
+//! # How
+//! A symbolic link is followed: its target is written and the link stays a link. The new
+//! contents go to a temporary file in the target's folder (so that the rename stays on one
+//! file system), are flushed to disk, get the original's owner, group and permissions, and
+//! then replace the original by a rename. A file with more than one hard link, or whose
+//! owner and group ekb cannot give to a new file (a user writing a group-writable file of
+//! another), is written in place instead, as editors do, so that it stays the same file to
+//! every link and keeps its owner: the temporary file is copied into it. If that copy
+//! fails half-way, the temporary file is kept and the error names it.
 
 use std::fmt;
-use std::fs;
-use std::io::{self, Write};
+use std::fs::{self, Metadata};
+use std::io::{self, BufWriter, Seek, Write};
 use std::path::{Path, PathBuf};
 
-/// Why a file could not be written; the original is intact.
+use tempfile::NamedTempFile;
+
+use crate::source::FileStamp;
+
+/// Why a file could not be written.
 #[derive(Debug)]
 pub struct WriteError {
     pub path: PathBuf,
     pub reason: String,
+    /// Whether the file is as it was (not so after a copy in place that failed half-way).
+    pub left_unchanged: bool,
 }
 
 impl fmt::Display for WriteError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "cannot write {}: {}; it is left unchanged",
-            self.path.display(),
-            self.reason
-        )
+        write!(f, "cannot write {}: {}", self.path.display(), self.reason)?;
+        if self.left_unchanged {
+            f.write_str("; it is left unchanged")?;
+        }
+        Ok(())
     }
 }
 
 impl std::error::Error for WriteError {}
 
-/// Replaces (or creates) `path` with `contents`, atomically. A symbolic link is followed, so
-/// the file it points at is replaced and the link stays a link.
+/// Writes `contents` to `path`, an output: a new file, or one replaced whole.
 pub fn write_atomically(path: &Path, contents: &[u8]) -> Result<(), WriteError> {
-    write_atomically_with(path, |out| out.write_all(contents))
+    write_streamed(path, |out| out.write_all(contents))
 }
 
-/// [`write_atomically`], the contents written by `fill` as they are made (a formatted file
-/// several times the size of the original is never held whole). If `fill` fails, `path` is
-/// left as it was.
-pub fn write_atomically_with(
+/// [`write_atomically`], the contents written by `produce` as they are made (a large export,
+/// or a formatted file several times the size of the original, is never held whole). If
+/// `produce` fails, `path` is left as it was.
+pub fn write_streamed(
     path: &Path,
-    fill: impl FnOnce(&mut dyn Write) -> io::Result<()>,
+    produce: impl FnOnce(&mut dyn Write) -> io::Result<()>,
+) -> Result<(), WriteError> {
+    write(path, None, produce)
+}
+
+/// Writes `contents` over `path`, which ekb read as `read_as` says; refused if it changed
+/// since.
+pub fn rewrite(path: &Path, contents: &[u8], read_as: &FileStamp) -> Result<(), WriteError> {
+    rewrite_streamed(path, read_as, |out| out.write_all(contents))
+}
+
+/// [`rewrite`], the new contents written by `produce` as they are made.
+pub fn rewrite_streamed(
+    path: &Path,
+    read_as: &FileStamp,
+    produce: impl FnOnce(&mut dyn Write) -> io::Result<()>,
+) -> Result<(), WriteError> {
+    write(path, Some(read_as), produce)
+}
+
+/// How many symbolic links a path may go through (as Linux allows).
+const MAX_LINKS: usize = 40;
+
+/// The buffer between `produce` and the temporary file: few system calls for a large file.
+const BUFFER: usize = 1 << 16;
+
+const CHANGED: &str = "it changed while ekb was working on it (its size, times or inode are \
+                       not those ekb saw): another program is writing it; run ekb again";
+
+fn write(
+    path: &Path,
+    read_as: Option<&FileStamp>,
+    produce: impl FnOnce(&mut dyn Write) -> io::Result<()>,
 ) -> Result<(), WriteError> {
     let fail = |reason: String| WriteError {
         path: path.to_path_buf(),
         reason,
+        left_unchanged: true,
     };
-    let target = match fs::canonicalize(path) {
-        Ok(target) => target,
-        Err(err) if err.kind() == io::ErrorKind::NotFound => path.to_path_buf(),
-        Err(err) => return Err(fail(describe(&err))),
-    };
-    let existing = match fs::metadata(&target) {
-        Ok(metadata) => Some(metadata),
-        Err(err) if err.kind() == io::ErrorKind::NotFound => None,
-        Err(err) => return Err(fail(describe(&err))),
-    };
-    if let Some(metadata) = &existing {
-        if !metadata.is_file() {
-            return Err(fail("it is not a regular file".into()));
-        }
-        // Opening for writing changes nothing, but tells whether we may write it.
-        fs::OpenOptions::new()
-            .write(true)
-            .open(&target)
-            .map_err(|err| fail(format!("{} (is it read-only?)", describe(&err))))?;
+    let target = resolve(path).map_err(fail)?;
+    if let Some(existing) = &target.existing {
+        ensure_replaceable(&target.path, existing).map_err(fail)?;
     }
-    let folder = match target.parent() {
+    // A file read earlier must still be as it was read; an output, as it was just found.
+    let expected = read_as
+        .copied()
+        .or_else(|| target.existing.as_ref().map(FileStamp::of));
+    ensure_unchanged(&target.path, expected.as_ref()).map_err(fail)?;
+    let folder = match target.path.parent() {
         Some(parent) if !parent.as_os_str().is_empty() => parent,
         _ => Path::new("."),
     };
-    let mut temp = temporary_file(folder, existing.is_none()).map_err(|err| {
+    let mut temp = temporary_file(folder, target.existing.is_none()).map_err(|err| {
         fail(format!(
             "cannot create a file in folder {}: {}",
             folder.display(),
             describe(&err)
         ))
     })?;
-    let mut buffered = io::BufWriter::with_capacity(1 << 16, temp.as_file_mut());
-    let filled = fill(&mut buffered).and_then(|()| buffered.flush());
-    drop(buffered);
-    let written = filled.and_then(|()| {
-        if let Some(metadata) = &existing {
-            temp.as_file().set_permissions(metadata.permissions())?;
-        }
-        temp.as_file().sync_all()
-    });
-    written.map_err(|err| fail(describe(&err)))?;
-    temp.persist(&target)
-        .map_err(|err| fail(describe(&err.error)))?;
+    let mut out = BufWriter::with_capacity(BUFFER, temp.as_file_mut());
+    produce(&mut out)
+        .and_then(|()| out.flush())
+        .map_err(|err| fail(describe(&err)))?;
+    drop(out);
+    let in_place = match &target.existing {
+        Some(existing) => !take_identity(temp.as_file(), existing).map_err(fail)?,
+        None => false,
+    };
+    temp.as_file()
+        .sync_all()
+        .map_err(|err| fail(describe(&err)))?;
+    ensure_unchanged(&target.path, expected.as_ref()).map_err(fail)?;
+    if in_place {
+        return copy_in_place(temp, &target.path).map_err(|(reason, left_unchanged)| WriteError {
+            left_unchanged,
+            ..fail(reason)
+        });
+    }
+    let persisted = match target.existing {
+        Some(_) => temp.persist(&target.path),
+        // Not created meanwhile by another program, which the rename would replace.
+        None => temp.persist_noclobber(&target.path),
+    };
+    persisted.map_err(|err| match err.error.kind() {
+        io::ErrorKind::AlreadyExists => fail(CHANGED.into()),
+        _ => fail(describe(&err.error)),
+    })?;
     sync_folder(folder);
     Ok(())
 }
 
+/// The file a path names once its symbolic links are followed, and its metadata if it
+/// exists.
+struct Target {
+    path: PathBuf,
+    existing: Option<Metadata>,
+}
+
+/// Follows `path`'s symbolic links one by one, so that a link (even a dangling one) is
+/// written through and one through `/proc` is seen.
+fn resolve(path: &Path) -> Result<Target, String> {
+    let mut current = std::path::absolute(path).map_err(|err| describe(&err))?;
+    for _ in 0..MAX_LINKS {
+        let (Some(folder), Some(name)) = (current.parent(), current.file_name()) else {
+            return Err("it is a folder; name a file".into());
+        };
+        let folder = fs::canonicalize(folder).map_err(|err| {
+            format!(
+                "cannot create a file in folder {}: {}",
+                folder.display(),
+                describe(&err)
+            )
+        })?;
+        let full = folder.join(name);
+        if folder.starts_with("/proc") {
+            return Err(format!(
+                "it leads to {}, a file that ekb has open (as `/dev/stdin` names what is \
+                 redirected to it), not a file of its own: name the file itself, or give `-` \
+                 to read standard input and write standard output",
+                full.display()
+            ));
+        }
+        match fs::symlink_metadata(&full) {
+            Ok(metadata) if metadata.file_type().is_symlink() => {
+                let link = fs::read_link(&full).map_err(|err| describe(&err))?;
+                current = folder.join(link);
+            }
+            Ok(metadata) => {
+                return Ok(Target {
+                    path: full,
+                    existing: Some(metadata),
+                })
+            }
+            Err(err) if err.kind() == io::ErrorKind::NotFound => {
+                return Ok(Target {
+                    path: full,
+                    existing: None,
+                })
+            }
+            Err(err) => return Err(describe(&err)),
+        }
+    }
+    Err(format!(
+        "it goes through more than {MAX_LINKS} symbolic links (a loop?)"
+    ))
+}
+
+/// Refuses to replace what is not a regular file, or is read-only, or may not be written.
+fn ensure_replaceable(path: &Path, existing: &Metadata) -> Result<(), String> {
+    if !existing.is_file() {
+        return Err(format!(
+            "it is {}, not a regular file: ekb writes only regular files (`-` writes \
+             standard output)",
+            kind_of(existing)
+        ));
+    }
+    if let Some(mode) = read_only_mode(existing) {
+        return Err(format!(
+            "it is read-only ({mode}); ekb does not replace a read-only file, even as root: \
+             make it writable first (`chmod u+w`) if it should change"
+        ));
+    }
+    // Opening for writing changes nothing (no truncation), but tells whether we may.
+    fs::OpenOptions::new()
+        .write(true)
+        .open(path)
+        .map(drop)
+        .map_err(|err| describe(&err))
+}
+
+/// What a file that is not a regular file is, for a message.
+fn kind_of(metadata: &Metadata) -> &'static str {
+    let kind = metadata.file_type();
+    if kind.is_dir() {
+        return "a folder";
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if kind.is_fifo() {
+            return "a named pipe (FIFO)";
+        }
+        if kind.is_char_device() {
+            return "a character device";
+        }
+        if kind.is_block_device() {
+            return "a block device";
+        }
+        if kind.is_socket() {
+            return "a socket";
+        }
+    }
+    "a special file"
+}
+
+/// `mode 0444` if no one may write the file by its permission bits.
+fn read_only_mode(metadata: &Metadata) -> Option<String> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let mode = metadata.permissions().mode();
+        (mode & 0o222 == 0).then(|| format!("mode {:04o}", mode & 0o7777))
+    }
+    #[cfg(not(unix))]
+    metadata
+        .permissions()
+        .readonly()
+        .then(|| "read-only attribute".to_string())
+}
+
+/// Refuses if the file at `path` is not as `expected` (`None`: that there is none).
+fn ensure_unchanged(path: &Path, expected: Option<&FileStamp>) -> Result<(), String> {
+    let now = match fs::metadata(path) {
+        Ok(metadata) => Some(FileStamp::of(&metadata)),
+        Err(err) if err.kind() == io::ErrorKind::NotFound => None,
+        Err(err) => return Err(describe(&err)),
+    };
+    if now.as_ref() == expected {
+        Ok(())
+    } else {
+        Err(CHANGED.into())
+    }
+}
+
+/// Gives the temporary file the original's owner, group and permissions. Returns `false`
+/// if the original must be written in place instead: it has other hard links, or its
+/// owner and group are not ours to give.
+fn take_identity(temp: &fs::File, original: &Metadata) -> Result<bool, String> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        if original.nlink() > 1 {
+            return Ok(false);
+        }
+        let ours = temp.metadata().map_err(|err| describe(&err))?;
+        if (ours.uid(), ours.gid()) != (original.uid(), original.gid()) {
+            match std::os::unix::fs::fchown(temp, Some(original.uid()), Some(original.gid())) {
+                Ok(()) => {}
+                Err(err) if err.kind() == io::ErrorKind::PermissionDenied => return Ok(false),
+                Err(err) => return Err(describe(&err)),
+            }
+        }
+    }
+    // After the owner: changing the owner clears the set-user-id and set-group-id bits.
+    temp.set_permissions(original.permissions())
+        .map_err(|err| describe(&err))?;
+    Ok(true)
+}
+
+/// Copies the temporary file into the original, which keeps its inode, links and owner.
+/// The error says whether the original is still as it was.
+fn copy_in_place(mut temp: NamedTempFile, original: &Path) -> Result<(), (String, bool)> {
+    let mut file = fs::OpenOptions::new()
+        .write(true)
+        .open(original)
+        .map_err(|err| (describe(&err), true))?;
+    let copied = temp
+        .as_file_mut()
+        .rewind()
+        .and_then(|()| io::copy(temp.as_file_mut(), &mut file))
+        .and_then(|len| file.set_len(len))
+        .and_then(|()| file.sync_all());
+    let Err(err) = copied else {
+        return Ok(());
+    };
+    let kept = match temp.keep() {
+        Ok((_, path)) => format!("they are kept in {}", path.display()),
+        Err(_) => "they could not be kept".to_string(),
+    };
+    Err((
+        format!(
+            "{} while writing it in place (it has other hard links, or an owner ekb cannot \
+             give to a new file), so it may be partly written; its new contents: {kept}",
+            describe(&err)
+        ),
+        false,
+    ))
+}
+
 /// A temporary file in `folder`; a brand-new file gets the usual permissions (0666 less the
 /// umask) rather than the temporary file's private 0600.
-fn temporary_file(folder: &Path, new: bool) -> io::Result<tempfile::NamedTempFile> {
+fn temporary_file(folder: &Path, new: bool) -> io::Result<NamedTempFile> {
     let mut builder = tempfile::Builder::new();
     builder.prefix(".ekb-").suffix(".tmp");
     #[cfg(unix)]

@@ -478,7 +478,7 @@ fn evil_files(dir: &Path) -> (std::path::PathBuf, std::path::PathBuf) {
 fn tables_tours_diffs_and_rewrites_never_print_raw_control_characters() {
     let dir = tempfile::tempdir().unwrap();
     let (old, new) = evil_files(dir.path());
-    let runs: [(&[&str], &[&Path], i32, &str); 8] = [
+    let runs: [(&[&str], &[&Path], i32, &str); 10] = [
         (
             &["locations"],
             &[&old],
@@ -494,6 +494,13 @@ fn tables_tours_diffs_and_rewrites_never_print_raw_control_characters() {
         ),
         (
             &["tour", "--lang", "en"],
+            &[&old],
+            0,
+            "Hi \\u{202E RIGHT-TO-LEFT OVERRIDE}there",
+        ),
+        (&["translations"], &[&old], 0, "Evil\\u{001B}[31m room"),
+        (
+            &["translations", "--lang", "zu", "--format", "csv"],
             &[&old],
             0,
             "Hi \\u{202E RIGHT-TO-LEFT OVERRIDE}there",

@@ -194,9 +194,27 @@ fn run_concise(files: &[&str]) -> Run {
 }
 
 #[test]
-fn one_unreadable_file_among_several_exits_2() {
-    let run = run(ekb().args(["check", "clean-seed.dat", "no-such.dat"]));
-    assert_failure(&run, "no-such.dat");
+fn one_unreadable_file_among_several_is_told_and_the_others_are_checked() {
+    // Issue 12: the files before and after the missing one are reported; the exit is 2.
+    let run = run(ekb().args([
+        "check",
+        "--format",
+        "concise",
+        "clean-seed.dat",
+        "no-such.dat",
+        "seed.dat",
+    ]));
+    assert_eq!(run.code, 2, "{}", run.stderr);
+    assert_eq!(
+        run.stderr,
+        "ekb: error: cannot read no-such.dat: no such file\n"
+    );
+    assert!(run.stdout.starts_with(&seed_concise()), "{}", run.stdout);
+    // Only unreadable files: no report at all.
+    let none = self::run(ekb().args(["check", "no-such.dat", "nor-this.dat"]));
+    assert_eq!(none.code, 2);
+    assert_eq!(none.stdout, "");
+    assert_eq!(none.stderr.lines().count(), 2, "{}", none.stderr);
 }
 
 #[test]
@@ -304,7 +322,9 @@ fn json_has_the_exact_shape_of_the_spec() {
                 "edits": [{
                     "line": 34, "column": 1, "end_line": 34, "end_column": 26,
                     "replacement": "postGestureMessageEnglish"
-                }]
+                }],
+                // ekb's addition to SPEC §5, as ruff's: `unsafe` only with --unsafe-fixes.
+                "applicability": "safe"
             }
         })
     );
@@ -439,8 +459,10 @@ fn human_is_the_default_and_says_what_to_change() {
         assert!(out.contains(expected), "missing {expected:?} in\n{out}");
     }
     assert_eq!(out.matches("warning[untranslated-message]").count(), 20);
+    // The summary leads with what matters: each severity, broken down by rule.
     assert!(out.ends_with(
-        "\nFound 2 errors, 21 warnings (1 fixable with ekb fix), checked against reader d5.4.2\n"
+        "\nFound 2 errors: key-case, missing-field · 21 warnings: 20 untranslated-message, \
+         1 repeated-word (1 fixable with ekb fix), checked against reader d5.4.2\n"
     ));
     assert_eq!(run.stderr, "");
 }

@@ -117,16 +117,40 @@ fn every_rule_can_be_explained() {
 }
 
 #[test]
-fn an_unknown_rule_exits_2_with_a_suggestion() {
+fn explain_takes_any_case_and_a_unique_prefix() {
+    for query in ["KEY-CASE", "Key-Case", "key-ca"] {
+        let out = stdout_of(ekb().args(["explain", query]));
+        assert!(
+            out.starts_with("# key-case (error, Structure)\n"),
+            "{query}: {out}"
+        );
+    }
+    let out = stdout_of(ekb().args(["explain", "untranslated"]));
+    assert!(out.starts_with("# untranslated-message (warning, Content)\n"));
     let assert = ekb()
-        .args(["explain", "key-cas"])
+        .args(["explain", "compat-c"])
         .assert()
         .code(2)
         .stdout("");
     let stderr = String::from_utf8(assert.get_output().stderr.clone()).unwrap();
     assert_eq!(
         stderr,
-        "ekb: error: no rule named `key-cas`; did you mean `key-case`?\n"
+        "ekb: error: `compat-c` starts the names of 2 rules (compat-crlf, \
+         compat-cultural-word-split); give more of the name\n"
+    );
+}
+
+#[test]
+fn an_unknown_rule_exits_2_with_a_suggestion() {
+    let assert = ekb()
+        .args(["explain", "key-cose"])
+        .assert()
+        .code(2)
+        .stdout("");
+    let stderr = String::from_utf8(assert.get_output().stderr.clone()).unwrap();
+    assert_eq!(
+        stderr,
+        "ekb: error: no rule named `key-cose`; did you mean `key-case`?\n"
     );
     let assert = ekb().args(["explain", "zzzzzzzzzzzzzz"]).assert().code(2);
     let stderr = String::from_utf8(assert.get_output().stderr.clone()).unwrap();

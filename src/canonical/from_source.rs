@@ -14,6 +14,7 @@ use crate::model::build::{parse_id, tour_items};
 use crate::model::{IdMap, Key, ValueKind};
 use crate::render::escape::escape;
 use crate::rewrite::{name_lines, NAMED_LINES};
+use crate::suppression;
 use crate::syntax::{self, Body, Line, Span};
 
 /// Lines ending in a carriage return that is not part of a CRLF: written before the
@@ -89,6 +90,8 @@ impl Layout {
     fn read(text: &str) -> Result<Layout, Unformattable> {
         let mut layout = Layout::default();
         let mut seen_entry = false;
+        // Where the first `# ekb: ignore[…]` comment before any entry starts.
+        let mut first_suppression = None;
         let mut stray_returns = Unformattable::default();
         for line in syntax::lines(text) {
             if ends_in_stray_return(text, &line) {
@@ -112,6 +115,14 @@ impl Layout {
                     layout.header_end = line.span.end;
                     continue;
                 }
+                Body::Comment(comment)
+                    if !seen_entry
+                        && first_suppression.is_none()
+                        && suppression::is_for_next_line(comment.text(text)) =>
+                {
+                    first_suppression = Some(line.span.start);
+                    continue;
+                }
                 Body::Blank | Body::Comment(_) => continue,
                 Body::Entry { key, args } => (key, args),
             };
@@ -132,6 +143,10 @@ impl Layout {
         if !seen_entry {
             // Without entries there is nothing to set a header apart from: it is all footer.
             layout.header_end = 0;
+        }
+        // A suppression is for the line below it, blank lines or not: never the header's.
+        if let Some(start) = first_suppression {
+            layout.header_end = layout.header_end.min(start);
         }
         Ok(layout)
     }
@@ -395,6 +410,21 @@ mod tests {
              robotLocation                 1 1 2 3\n\
              \n\
              # end\n"
+        );
+    }
+
+    #[test]
+    fn a_suppression_above_the_first_entry_moves_with_it() {
+        let text = "# header\n# ekb: ignore-file[tour-missing]\n# ekb: ignore[repeated-word]\n\n\
+                    robotLocation 2 1 2 3\nrobotLocationDescription 2 the the\n";
+        assert_eq!(
+            format(text),
+            "# header\n\
+             # ekb: ignore-file[tour-missing]\n\
+             \n\
+             robotLocationDescription      2 the the\n\
+             # ekb: ignore[repeated-word]\n\
+             robotLocation                 2 1 2 3\n"
         );
     }
 

@@ -56,6 +56,24 @@ const UNKNOWN_SLOT: u8 = Key::CulturalKnowledge as u8 + 1;
 /// The widest padding a key gets (`VALUE_COLUMN - 1` spaces, for a key of one character).
 const PADDING: &str = "                              ";
 
+/// `text` in the canonical layout, `None` when it is in it already; or why it cannot be.
+/// (`ekb fmt` writing a file streams it with [`Document::write_checked`] instead.)
+pub fn format(text: &str) -> Result<Option<String>, String> {
+    let document = Document::parse(text).map_err(|e| e.to_string())?;
+    if document.renders_as(text) {
+        return Ok(None);
+    }
+    // The layout keeps every line and value: each line written is read back as it is
+    // written (without reading a second document).
+    let mut formatted = Vec::with_capacity(text.len() + text.len() / 4);
+    document
+        .write_checked(&mut formatted)
+        .map_err(|e| e.to_string())?;
+    Ok(Some(
+        String::from_utf8(formatted).expect("the layout writes text"),
+    ))
+}
+
 /// A knowledge base as lines to write, in canonical order (see the module documentation).
 ///
 /// Lean on purpose (`ekb fmt` holds one for a whole file of any size): it keeps only where
@@ -144,6 +162,17 @@ fn known_key(name: &str) -> Option<Key> {
 pub enum WriteError {
     NotReadBack,
     Io(io::Error),
+}
+
+impl std::fmt::Display for WriteError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            WriteError::NotReadBack => f.write_str(
+                "the canonical layout would change its content (a bug in ekb; please report it)",
+            ),
+            WriteError::Io(error) => error.fmt(f),
+        }
+    }
 }
 
 impl From<io::Error> for WriteError {

@@ -1,14 +1,17 @@
 //! `ekb check [FILE...]`: validate knowledge bases.
 
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
+use super::map::{on_map, MapArgs};
 use super::{CommandError, CommandResult, Context, Exit};
-use crate::check::{check, Checked};
-use crate::diagnostic::Summary;
-use crate::model::build::Options;
-use crate::render::{self, Format, RenderOptions};
-use crate::source::SourceFile;
+use crate::check::Checked;
+use crate::diagnostic::{Hidden, Severity, Summary};
+use crate::mission::check::check_file;
+use crate::render::{self, escape::escape, statistics, Format, RenderOptions};
+use crate::rewrite::{self, DiffStyle, Mode};
+use crate::rules::selection::{Choice, RuleSelector};
+use crate::{stderr_line, suppression};
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -23,56 +26,208 @@ pub struct Args {
     /// Exit 1 on warnings too
     #[arg(long)]
     pub deny_warnings: bool,
+
+    #[command(flatten)]
+    pub rules: RuleArgs,
+
+    /// Show only findings at or above this severity (the summary still counts them all)
+    #[arg(long, value_enum, value_name = "SEVERITY")]
+    pub level: Option<Severity>,
+
+    /// Instead of the findings, one line per rule: its count, and whether `ekb fix` can fix
+    /// it, the most frequent first
+    #[arg(long, conflicts_with = "add_ignore")]
+    pub statistics: bool,
+
+    /// Exit 0 even when there are findings (2 still means ekb could not do its job)
+    #[arg(long)]
+    pub exit_zero: bool,
+
+    /// Write the report to this file instead of standard output
+    #[arg(long, value_name = "PATH", conflicts_with = "add_ignore")]
+    pub output_file: Option<PathBuf>,
+
+    /// Write a `# ekb: ignore[RULE]` comment above every line with findings, so that the files
+    /// check clean (to adopt ekb on an existing file); run again, it adds nothing
+    #[arg(long)]
+    pub add_ignore: bool,
+
+    #[command(flatten)]
+    pub map: MapArgs,
+}
+
+/// `--select`, `--extend-select` and `--ignore`: which rules run, over `ekb.toml`'s choice.
+#[derive(Debug, Clone, Default, clap::Args)]
+pub struct RuleArgs {
+    /// Run only these rules or categories (comma-separated), instead of those ekb.toml selects
+    #[arg(long, value_delimiter = ',', value_name = "RULE", value_parser = RuleSelector::parse)]
+    pub select: Option<Vec<RuleSelector>>,
+
+    /// Run these rules or categories as well
+    #[arg(long, value_delimiter = ',', value_name = "RULE", value_parser = RuleSelector::parse)]
+    pub extend_select: Vec<RuleSelector>,
+
+    /// Do not run these rules or categories
+    #[arg(long, value_delimiter = ',', value_name = "RULE", value_parser = RuleSelector::parse)]
+    pub ignore: Vec<RuleSelector>,
+}
+
+impl RuleArgs {
+    /// The command line's layer of choices.
+    pub fn choice(&self) -> Choice {
+        Choice {
+            select: self.select.clone(),
+            extend_select: self.extend_select.clone(),
+            ignore: self.ignore.clone(),
+        }
+    }
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
     let paths = context.inputs(&args.files)?;
-    let options = paths
+    // A bad configuration fails every file alike: once, here.
+    context.config()?;
+    let choice = args.rules.choice();
+    // A file that cannot be read is told at once and the others are checked all the same;
+    // the exit is 2 then. If none can be read, there is no report.
+    let mut unreadable = false;
+    let mut read = Vec::with_capacity(paths.len());
+    for path in &paths {
+        let plan = context.read_options(path).and_then(|options| {
+            let rules = context.rules_for(path, &choice)?;
+            Ok((path.clone(), options, rules, context.read(path)?))
+        });
+        match plan {
+            Ok(plan) => read.push(plan),
+            Err(error) => {
+                stderr_line!("ekb: error: {}", escape(&error.to_string()));
+                unreadable = true;
+            }
+        }
+    }
+    let Some((first, ..)) = read.first() else {
+        return Ok(Exit::Failure);
+    };
+    // One map for all the files: that of the first file's `ekb.toml`, unless given.
+    let map_config = context.settings_for(first)?.map.config;
+    let map = args.map.load(map_config.map(|config| config.value))?;
+    // A mission or a culture file is recognised by its content and checked alone.
+    let checked: Vec<Checked> = read
         .iter()
-        .map(|path| context.read_options(path))
-        .collect::<Result<Vec<Options>, _>>()?;
-    let sources = paths
-        .iter()
-        .map(|path| context.read(path))
-        .collect::<Result<Vec<SourceFile>, _>>()?;
-    let checked: Vec<Checked> = sources
-        .iter()
-        .zip(&options)
-        .map(|(source, options)| check(source, options))
+        .map(|(_, options, rules, source)| {
+            let checked = check_file(source, options, rules);
+            match &map {
+                Some(map) => on_map(checked, Some(map)).0,
+                None => checked,
+            }
+        })
         .collect();
+    let exit = if args.add_ignore {
+        let paths: Vec<PathBuf> = read.iter().map(|(path, ..)| path.clone()).collect();
+        add_ignores(&paths, &checked, context)?
+    } else {
+        let shown = Shown {
+            format: args.format,
+            deny_warnings: args.deny_warnings,
+            exit_zero: args.exit_zero,
+            level: args.level,
+            statistics: args.statistics,
+            output_file: args.output_file.as_deref(),
+        };
+        report(checked, &shown, context)?
+    };
+    Ok(if unreadable { Exit::Failure } else { exit })
+}
+
+/// How a report is shown, and what makes it fail.
+#[derive(Debug, Default)]
+pub struct Shown<'a> {
+    pub format: Format,
+    pub deny_warnings: bool,
+    pub exit_zero: bool,
+    pub level: Option<Severity>,
+    pub statistics: bool,
+    pub output_file: Option<&'a Path>,
+}
+
+/// Renders the findings of `checked` as `shown` says, on standard output or in its file,
+/// and gives the exit code of SPEC §5.
+pub fn report(mut checked: Vec<Checked<'_>>, shown: &Shown, context: &Context) -> CommandResult {
     // Checked::summary also counts the findings past the cap of each rule (check.rs).
     let mut summary = Summary::default();
     for file in &checked {
-        let one = file.summary();
-        summary.files += one.files;
-        summary.errors += one.errors;
-        summary.warnings += one.warnings;
-        summary.infos += one.infos;
-        summary.fixable += one.fixable;
+        summary.merge(&file.summary());
     }
+    let failed = summary.errors > 0 || (shown.deny_warnings && summary.warnings > 0);
+    let exit = if failed && !shown.exit_zero {
+        Exit::Findings
+    } else {
+        Exit::Clean
+    };
+    if let Some(level) = shown.level {
+        let at_level = |severity: Severity| severity <= level;
+        for file in &mut checked {
+            file.diagnostics.retain(|d| at_level(d.severity()));
+            file.omitted.retain(|d| at_level(d.severity()));
+        }
+        let below = summary.by_rule.iter().filter(|c| !at_level(c.severity));
+        summary.hidden = Some(Hidden {
+            count: below.map(|c| c.count).sum(),
+            level,
+        });
+    }
+    let to_file = shown.output_file.filter(|p| *p != Path::new("-"));
     let render_options = RenderOptions {
-        color: context.color_stdout(),
+        color: to_file.is_none() && context.color_stdout(),
         quiet: context.quiet,
         width: render::stdout_width(),
     };
-    let failed = summary.errors > 0 || (args.deny_warnings && summary.warnings > 0);
-    let exit = if failed { Exit::Findings } else { Exit::Clean };
+    let render = |out: &mut dyn Write| {
+        if shown.statistics {
+            let level = shown.level.unwrap_or(Severity::Info);
+            statistics::render(shown.format, &summary, level, out, &render_options)
+        } else {
+            render::render(shown.format, &checked, &summary, out, &render_options)
+        }
+    };
+    if let Some(path) = to_file {
+        crate::write::write_streamed(path, |out| render(out))?;
+        return Ok(exit);
+    }
     // Buffered: a large file can have hundreds of thousands of findings, one line each.
     let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
-    let written = render::render(
-        args.format,
-        &checked,
-        &summary,
-        &mut stdout,
-        &render_options,
-    )
-    .and_then(|()| stdout.flush());
+    let written = render(&mut stdout).and_then(|()| stdout.flush());
     match written {
-        // A reader that stops early (`ekb check | head`) is not a failure of the check.
-        Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => Ok(exit),
+        Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => {
+            Err(CommandError::OutputClosed)
+        }
         Err(error) => Err(CommandError::Failed(format!(
             "cannot write the report: {error}"
         ))),
         Ok(()) => Ok(exit),
     }
+}
+
+/// `--add-ignore`: writes a suppression above each line with findings, file by file, and
+/// says how many on standard error.
+fn add_ignores(paths: &[PathBuf], checked: &[Checked<'_>], context: &Context) -> CommandResult {
+    let style = DiffStyle {
+        color: context.color_stdout(),
+    };
+    let mut files = checked.iter();
+    Ok(rewrite::for_each_file(paths, |path| {
+        let checked = files.next().expect("one check per path");
+        let source = checked.source;
+        rewrite::ensure_rewritable(source)?;
+        let (text, added) = suppression::add_ignores(source.text(), &checked.diagnostics);
+        rewrite::deliver(path, source, &text, Mode::Write, style)?;
+        if !context.quiet {
+            let s = if added == 1 { "" } else { "s" };
+            stderr_line!(
+                "{}: added {added} suppression comment{s}",
+                escape(source.name())
+            );
+        }
+        Ok(Exit::Clean)
+    }))
 }

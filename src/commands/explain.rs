@@ -7,27 +7,17 @@ use crate::rules;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// The rule's name, e.g. `key-case` (see `ekb rules`)
+    /// The rule's name in any case, or the start of it, e.g. `key-case`, `untranslated` (see `ekb rules`)
     #[arg(value_name = "RULE")]
     pub rule: String,
 }
 
 pub fn run(args: &Args, _context: &Context) -> CommandResult {
-    let Some(rule) = rules::by_name(&args.rule) else {
-        let nearest = rules::ALL
-            .iter()
-            .map(|rule| (strsim::levenshtein(rule.name, &args.rule), rule.name))
-            .min()
-            .filter(|&(distance, _)| distance <= 4)
-            .map(|(_, name)| format!("; did you mean `{name}`?"))
-            .unwrap_or_else(|| "; `ekb rules` lists them".to_string());
-        return Err(CommandError::Failed(format!(
-            "no rule named `{}`{nearest}",
-            args.rule
-        )));
-    };
+    let rule = rules::lookup(&args.rule).map_err(CommandError::Failed)?;
     let fix = if rule.fixable {
         "Fix: `ekb fix` repairs it."
+    } else if rule.doc.contains("## Fix (unsafe)") {
+        "Fix: only a guess, applied by `ekb fix --unsafe-fixes` (see below)."
     } else {
         "Fix: none automatic; edit the file."
     };

@@ -6,9 +6,14 @@ use std::path::{Path, PathBuf};
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::export::{ExportView, ExportedKnowledgeBase};
+use crate::model::Language;
 use crate::reader::{self, export::LoadedExport};
 use crate::render::safe_json as json;
 use crate::render::{self, escape::escape, Format, RenderOptions};
+use crate::streams;
+use crate::translations::{po, Catalog};
+use crate::write;
+use crate::write::write_atomically;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -16,9 +21,13 @@ pub struct Args {
     #[arg(value_name = "FILE", conflicts_with = "schema")]
     pub file: Option<PathBuf>,
 
-    /// Output format (JSON is the only one)
+    /// Output format
     #[arg(long, value_enum, default_value_t = ExportFormat::Json)]
     pub format: ExportFormat,
+
+    /// With --format po: the language to translate into: isizulu (zulu), kinyarwanda, or zu/zul, rw/kin (any case)
+    #[arg(long, value_name = "L", ignore_case = true, value_parser = crate::present::language::parser())]
+    pub lang: Option<Language>,
 
     /// Write to this file instead of standard output (`-` is standard output)
     #[arg(short, long, value_name = "OUT")]
@@ -43,6 +52,10 @@ pub struct Args {
 pub enum ExportFormat {
     /// The JSON of SPEC §5
     Json,
+    /// gettext PO of one language (--lang), for translators' tools (SPEC §8)
+    Po,
+    /// gettext PO template: every English message, no translation
+    Pot,
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
@@ -55,6 +68,9 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let options = context.read_options(&path)?;
     let source = context.read(&path)?;
     let checked = check(&source, &options);
+    if matches!(args.format, ExportFormat::Po | ExportFormat::Pot) {
+        return export_po(args, context, &checked);
+    }
     if args.as_loaded {
         return export_as_loaded(args, context, checked);
     }
@@ -69,6 +85,49 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         return report_to_stderr(checked.errors_only(), &why, context);
     }
     write_output(args.output.as_deref(), &ExportView::new(&checked.kb))?;
+    Ok(Exit::Clean)
+}
+
+/// The PO file of `--lang`, or the template: the file's errors do not stop it (a translator
+/// can work while an engineer fixes a pose), but they are noted.
+fn export_po(args: &Args, context: &Context, checked: &Checked<'_>) -> CommandResult {
+    let language = match (args.format, args.lang) {
+        (ExportFormat::Pot, _) => None,
+        (_, Some(Language::English)) => {
+            return Err(CommandError::Failed(
+                "English is the language translations are made from: export isiZulu or \
+                 Kinyarwanda (`--lang zu` or `--lang rw`), or the template (`--format pot`)"
+                    .to_string(),
+            ))
+        }
+        (_, Some(language)) => Some(language),
+        (_, None) => {
+            return Err(CommandError::Failed(
+                "--format po needs the language to translate into: `--lang zu` or `--lang rw` \
+                 (or `--format pot` for the template)"
+                    .to_string(),
+            ))
+        }
+    };
+    crate::present::note_errors(checked, context.quiet);
+    let catalog = Catalog::new(checked);
+    // The translations were last revised when the knowledge base was.
+    let revised = std::fs::metadata(checked.source.name())
+        .and_then(|metadata| metadata.modified())
+        .unwrap_or_else(|_| std::time::SystemTime::now());
+    let po = po::write(&catalog, checked.source.name(), language, revised);
+    match args
+        .output
+        .as_deref()
+        .filter(|path| *path != Path::new("-"))
+    {
+        Some(path) => write_atomically(path, po.as_bytes())?,
+        None => {
+            let mut stdout = std::io::stdout().lock();
+            stdout.write_all(po.as_bytes())?;
+            stdout.flush()?;
+        }
+    }
     Ok(Exit::Clean)
 }
 
@@ -95,7 +154,7 @@ fn export_as_loaded(args: &Args, context: &Context, mut checked: Checked<'_>) ->
 /// Shows `checked`'s findings on standard error, concisely, then `why`: exit 1.
 fn report_to_stderr(checked: Checked<'_>, why: &str, context: &Context) -> CommandResult {
     let summary = checked.summary();
-    let mut stderr = std::io::stderr().lock();
+    let mut stderr = streams::stderr();
     let render_options = RenderOptions {
         color: context.color_stderr(),
         quiet: true,
@@ -120,7 +179,7 @@ fn plural(count: usize, word: &str) -> String {
     }
 }
 
-/// Writes JSON to `output` (atomically: a temporary file, then a rename) or standard output.
+/// Writes JSON to `output` (through [`crate::write`]) or standard output.
 fn write_output(output: Option<&Path>, value: &impl serde::Serialize) -> Result<(), CommandError> {
     let Some(path) = output.filter(|path| *path != Path::new("-")) else {
         let mut stdout = std::io::stdout().lock();
@@ -128,32 +187,6 @@ fn write_output(output: Option<&Path>, value: &impl serde::Serialize) -> Result<
         stdout.flush()?;
         return Ok(());
     };
-    let fail =
-        |reason: String| CommandError::Failed(format!("cannot write {}: {reason}", path.display()));
-    let dir = match path.parent() {
-        Some(parent) if !parent.as_os_str().is_empty() => parent,
-        _ => Path::new("."),
-    };
-    let mut file = tempfile::NamedTempFile::new_in(dir).map_err(|e| fail(e.to_string()))?;
-    json::write(value, &mut file).map_err(|e| fail(e.to_string()))?;
-    // A temporary file is private (0600); the export gets the permissions of the file it
-    // replaces, or those of an ordinary new file.
-    let permissions = match std::fs::metadata(path) {
-        Ok(metadata) => metadata.permissions(),
-        Err(_) => ordinary_permissions(file.as_file()).map_err(|e| fail(e.to_string()))?,
-    };
-    file.as_file()
-        .set_permissions(permissions)
-        .map_err(|e| fail(e.to_string()))?;
-    file.persist(path).map_err(|e| fail(e.error.to_string()))?;
+    write::write_streamed(path, |out| json::write(value, out))?;
     Ok(())
-}
-
-/// The permissions of a new export: the temporary file's (0600) opened up to 0644 on Unix.
-fn ordinary_permissions(temporary: &std::fs::File) -> std::io::Result<std::fs::Permissions> {
-    #[allow(unused_mut)]
-    let mut permissions = temporary.metadata()?.permissions();
-    #[cfg(unix)]
-    std::os::unix::fs::PermissionsExt::set_mode(&mut permissions, 0o644);
-    Ok(permissions)
 }

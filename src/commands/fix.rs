@@ -4,15 +4,19 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+use super::check::RuleArgs;
 use super::{errors_to_stderr, CommandError, CommandResult, Context, Exit};
-use crate::check::check;
+use crate::check::check_with;
 use crate::fixing;
 use crate::model::build::Options;
 use crate::model::{Dialect, Key};
 use crate::reader::Reader;
 use crate::render::escape::escape;
 use crate::rewrite::{self, DiffStyle, Mode};
+use crate::rules::selection::RuleSet;
+use crate::rules::structure::invalid_utf8::INVALID_UTF8;
 use crate::source::SourceFile;
+use crate::stderr_line;
 use crate::syntax::{self, Body};
 
 #[derive(Debug, clap::Args)]
@@ -28,18 +32,31 @@ pub struct Args {
     /// Migrate to this dialect (`current`: robotLocation becomes robotLocationPose; `seed`: the reverse)
     #[arg(long, value_enum, value_name = "DIALECT")]
     pub dialect: Option<Dialect>,
+
+    /// Apply the unsafe fixes too, which guess what was meant: a dash before a number becomes a
+    /// minus, a decimal comma a point, a file that is not UTF-8 is read as Latin-1
+    #[arg(long)]
+    pub unsafe_fixes: bool,
+
+    #[command(flatten)]
+    pub rules: RuleArgs,
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
-    let paths = context.inputs(&args.files)?;
+    let paths = context.files_to_rewrite(&args.files)?;
+    let rules = args.rules.choice();
     Ok(rewrite::for_each_file(&paths, |path| {
+        let choice = fixing::Choice {
+            rules: context.rules_for(path, &rules)?,
+            unsafe_fixes: args.unsafe_fixes,
+        };
         let mut options = context.read_options(path)?;
         if let Some(target) = args.dialect {
             // Migrating is fixing `legacy-key` against the target dialect's reader.
             options.dialect = Some(target);
             options.reader = Some(Reader::default_for(Some(target)));
         }
-        fix_file(path, args, context, &options)
+        fix_file(path, args, context, &options, &choice)
     }))
 }
 
@@ -48,25 +65,36 @@ fn fix_file(
     args: &Args,
     context: &Context,
     options: &Options,
+    choice: &fixing::Choice,
 ) -> Result<Exit, CommandError> {
-    let source = context.read(path)?;
-    rewrite::ensure_rewritable(&source)?;
+    let read = context.read(path)?;
+    // Read as Latin-1, the file is UTF-8 text to fix further; `read` is what is replaced.
+    let converted = match args.unsafe_fixes && !read.invalid_utf8().is_empty() {
+        true => Some(from_latin1(path, &read)?),
+        false => None,
+    };
+    let source = converted.as_ref().unwrap_or(&read);
+    rewrite::ensure_rewritable(source)?;
     if let Some(target) = args.dialect {
-        refuse_inexpressible(&source, target)?;
+        refuse_inexpressible(source, target)?;
     }
-    let (fixed, counts) = fixing::fix_unless_clean(&source, options);
+    let (fixed, mut counts) = fixing::fix_unless_clean(source, options, choice);
+    if converted.is_some() {
+        counts.insert(INVALID_UTF8.name, read.invalid_utf8_lines());
+    }
     let mode = if args.diff { Mode::Diff } else { Mode::Write };
     let style = DiffStyle {
         color: context.color_stdout(),
     };
     let new_text = fixed.as_deref().unwrap_or(source.text());
-    let changed = rewrite::deliver(path, &source, new_text, mode, style)?;
+    let changed = rewrite::deliver(path, &read, new_text, mode, style)?;
     // Nothing fixed: the file is what is left, without a copy of it.
     let after = fixed.map(|text| SourceFile::from_bytes(source.name(), text.into_bytes()));
     let errors_left = report(
-        after.as_ref().unwrap_or(&source),
+        after.as_ref().unwrap_or(source),
         &counts,
         options,
+        &choice.rules,
         context,
         mode,
     )?;
@@ -75,6 +103,28 @@ fn fix_file(
         Mode::Write if errors_left => Exit::Findings,
         _ => Exit::Clean,
     })
+}
+
+/// The file at `path`, not UTF-8, read as Latin-1 (Windows-1252): `--unsafe-fixes` guesses
+/// that this is what a file saved by an older editor is.
+fn from_latin1(path: &Path, read: &SourceFile) -> Result<SourceFile, CommandError> {
+    let name = escape(read.name());
+    if path == Path::new("-") {
+        return Err(CommandError::Failed(format!(
+            "{name} is not UTF-8, and standard input cannot be read again to convert it from \
+             Latin-1; give the file's path"
+        )));
+    }
+    let bytes = std::fs::read(path).map_err(|e| {
+        CommandError::Failed(format!("cannot read {name} again to convert it: {e}"))
+    })?;
+    let text = fixing::from_latin1(&bytes).ok_or_else(|| {
+        CommandError::Failed(format!(
+            "{name} is neither UTF-8 nor Latin-1 text (it has NUL bytes or bytes Windows-1252 \
+             leaves undefined; UTF-16?): save it as UTF-8 and run again"
+        ))
+    })?;
+    Ok(SourceFile::from_bytes(read.name(), text.into_bytes()))
 }
 
 /// Refuses to migrate a file with lines the target dialect has no key for: dropping them
@@ -111,17 +161,16 @@ fn report(
     after: &SourceFile,
     counts: &BTreeMap<&'static str, usize>,
     options: &Options,
+    rules: &RuleSet,
     context: &Context,
     mode: Mode,
 ) -> Result<bool, CommandError> {
     let name = escape(after.name());
-    let mut checked = check(
-        after,
-        &Options {
-            verbose: false,
-            ..*options
-        },
-    );
+    let options = Options {
+        verbose: false,
+        ..*options
+    };
+    let mut checked = check_with(after, &options, rules);
     let summary = checked.summary();
     if !context.quiet && !counts.is_empty() {
         let fixed: Vec<String> = counts
@@ -133,22 +182,22 @@ fn report(
         } else {
             "fixed"
         };
-        eprintln!("{name}: {verb} {}", fixed.join(", "));
+        stderr_line!("{name}: {verb} {}", fixed.join(", "));
     }
-    errors_to_stderr(&mut checked)?;
+    errors_to_stderr(&mut checked);
     if !context.quiet {
         if summary.errors > 0 {
             let s = if summary.errors == 1 { "" } else { "s" };
-            eprintln!(
+            stderr_line!(
                 "{name}: {} error{s} left to correct by hand",
                 summary.errors
             );
         } else if counts.is_empty() {
-            eprintln!("{name}: nothing to fix");
+            stderr_line!("{name}: nothing to fix");
         }
         if summary.warnings > 0 {
             let s = if summary.warnings == 1 { "" } else { "s" };
-            eprintln!(
+            stderr_line!(
                 "{name}: {} warning{s} left (`ekb check` lists them)",
                 summary.warnings
             );

@@ -1,12 +1,13 @@
 //! `ekb fmt [FILE...] [--check]`: rewrite files in the canonical layout ([`crate::canonical`]).
 
-use std::io::{self, Write};
+use std::io;
 use std::path::{Path, PathBuf};
 
 use super::{CommandError, CommandResult, Context, Exit};
-use crate::canonical::{Document, WriteError};
+use crate::canonical::{self, Document, WriteError};
 use crate::render::escape::escape;
 use crate::rewrite::{self, DiffStyle, Mode};
+use crate::stderr_line;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -24,7 +25,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let style = DiffStyle {
         color: context.color_stdout(),
     };
-    let paths = context.inputs(&args.files)?;
+    let paths = context.files_to_rewrite(&args.files)?;
     let (mut changed, mut done) = (0, 0);
     let worst = rewrite::for_each_file(&paths, |path| {
         let did_change = format_file(path, context, mode, style)?;
@@ -38,7 +39,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         })
     });
     if !context.quiet && done > 0 {
-        eprintln!("{}", summary(mode, changed, done));
+        stderr_line!("{}", summary(mode, changed, done));
     }
     Ok(worst)
 }
@@ -55,45 +56,34 @@ fn format_file(
     let cannot = |reason: String| {
         CommandError::Failed(format!("cannot format {}: {reason}", escape(source.name())))
     };
+    if mode == Mode::Diff {
+        let formatted = canonical::format(source.text()).map_err(cannot)?;
+        let formatted = formatted.as_deref().unwrap_or(source.text());
+        return rewrite::deliver(path, &source, formatted, mode, style);
+    }
     let document = Document::parse(source.text()).map_err(|e| cannot(e.to_string()))?;
     if document.renders_as(source.text()) {
         // Already canonical: reading it back is reading the file again, which gave `document`.
         return rewrite::deliver(path, &source, source.text(), mode, style);
     }
-    // The layout keeps every line and value: each line written must read back as the line
-    // meant (checked as it is written, without reading a second document).
+    // A formatted file can be several times the original (every id padded to column 31): it
+    // is written as it is made, never held whole; each line is read back as it is written
+    // (the layout keeps every line and value).
     let mut read_back = true;
-    let mut write_checked = |mut out: &mut dyn Write| {
+    let written = rewrite::deliver_streamed(path, &source, |mut out| {
         document
             .write_checked(&mut out)
             .map_err(|error| match error {
                 WriteError::Io(error) => error,
                 WriteError::NotReadBack => {
                     read_back = false;
-                    io::Error::other("a line does not read back")
+                    io::Error::other(WriteError::NotReadBack.to_string())
                 }
             })
-    };
-    let written = match mode {
-        Mode::Diff => {
-            let mut formatted = Vec::with_capacity(source.text().len() * 5 / 4);
-            write_checked(&mut formatted)
-                .map(|()| formatted)
-                .map_err(CommandError::from)
-        }
-        // A formatted file can be several times the original (every id padded to column
-        // 31): it is written as it is made, never held whole.
-        Mode::Write => rewrite::write_new(path, write_checked).map(|()| Vec::new()),
-    };
+    });
     match written {
-        _ if !read_back => Err(cannot(
-            "the canonical layout would change its content (a bug in ekb; please report it)".into(),
-        )),
-        Ok(formatted) if mode == Mode::Diff => {
-            let formatted = String::from_utf8(formatted).expect("the layout writes text");
-            rewrite::deliver(path, &source, &formatted, mode, style)
-        }
-        Ok(_) => Ok(true),
+        _ if !read_back => Err(cannot(WriteError::NotReadBack.to_string())),
+        Ok(()) => Ok(true),
         Err(error) => Err(error),
     }
 }

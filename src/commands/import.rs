@@ -1,6 +1,10 @@
 //! `ekb import JSON [-o OUT]`: the JSON of `ekb export` back to a knowledge base, in the
 //! canonical layout of `ekb fmt` (both are written by [`crate::canonical::Document`]).
 //!
+//! `ekb import --po PO [FILE]`: a translator's PO file back into the knowledge base, in
+//! place (SPEC §8): only that language's messages change ([`crate::translations::import`]
+//! decides which, [`crate::edit`] makes the edits).
+//!
 //! JSON can hold what the robot cannot read (a 300-byte message, a negative first number):
 //! the file is written all the same, for a person to correct, and its errors are told.
 
@@ -10,25 +14,58 @@ use std::path::{Path, PathBuf};
 use super::{errors_to_stderr, CommandError, CommandResult, Context, Exit};
 use crate::canonical::Document;
 use crate::check::check;
+use crate::edit::{self, ValueEdit};
 use crate::model::build::Options;
 use crate::model::export::ExportedKnowledgeBase;
+use crate::model::Language;
 use crate::render::escape::escape;
+use crate::rewrite::{self, DiffStyle, Mode};
 use crate::source::SourceFile;
+use crate::stderr_line;
+use crate::translations::{import, po, Catalog};
 use crate::write::write_atomically;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// The JSON of `ekb export` (`-` for standard input)
-    #[arg(value_name = "JSON")]
-    pub input: PathBuf,
+    /// The JSON of `ekb export` (`-` for standard input); with --po, the knowledge base to import into [default: the configured knowledgeBase]
+    #[arg(value_name = "JSON|FILE", required_unless_present = "po")]
+    pub input: Option<PathBuf>,
 
     /// Write the knowledge base here (replaced atomically) instead of standard output
-    #[arg(short, long, value_name = "OUT")]
+    #[arg(short, long, value_name = "OUT", conflicts_with = "po")]
     pub output: Option<PathBuf>,
+
+    /// Import the translations of this PO file into FILE, in place: only those messages change
+    #[arg(long, value_name = "PO")]
+    pub po: Option<PathBuf>,
+
+    /// With --po: the PO file's language, if its header has no `Language:` (zu, rw, …)
+    #[arg(long, value_name = "L", ignore_case = true, value_parser = crate::present::language::parser(), requires = "po")]
+    pub lang: Option<Language>,
+
+    /// With --po: import entries made for an English text that has changed since
+    #[arg(long, requires = "po")]
+    pub accept_stale: bool,
+
+    /// With --po: import translations the robot's reader would misread, too
+    #[arg(long, requires = "po")]
+    pub force: bool,
+
+    /// With --po: write nothing; print the changes as a diff
+    #[arg(long, requires = "po")]
+    pub diff: bool,
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
-    let json = SourceFile::read(&args.input)?;
+    if let Some(po) = &args.po {
+        return import_po(args, po, context);
+    }
+    let Some(input) = &args.input else {
+        return Err(CommandError::Failed(
+            "name the JSON of `ekb export` to import (or give --po)".to_string(),
+        ));
+    };
+    let json = SourceFile::read(input)?;
     let name = escape(json.name()).into_owned();
     if !json.invalid_utf8().is_empty() {
         return Err(CommandError::Failed(format!("{name} is not valid UTF-8")));
@@ -56,6 +93,127 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     )
 }
 
+/// `ekb import --po`: exit 1 when an entry was not imported (stale, refused), 2 when the PO
+/// file cannot be read or belongs to another knowledge base (nothing is written then).
+fn import_po(args: &Args, po_path: &Path, context: &Context) -> CommandResult {
+    let po_source = SourceFile::read(po_path)?;
+    let po_name = escape(po_source.name()).into_owned();
+    if let Some(bad) = po_source.invalid_utf8().first() {
+        let line = crate::source::LineIndex::new(po_source.text()).line(bad.start);
+        return Err(CommandError::Failed(format!(
+            "{po_name}:{line}: not UTF-8: save the PO file as UTF-8 (its header should say charset=UTF-8)"
+        )));
+    }
+    let fail_at = |line: u32, message: &str| {
+        CommandError::Failed(format!("{po_name}:{line}: {}", escape(message)))
+    };
+    let po = po::parse(po_source.text()).map_err(|e| fail_at(e.line, &e.message))?;
+    let language = import::language_of(&po, args.lang).map_err(|e| fail_at(e.line, &e.message))?;
+    let path = context.file_to_rewrite(args.input.as_deref())?;
+    let options = context.read_options(&path)?;
+    let source = context.read(&path)?;
+    rewrite::ensure_rewritable(&source)?;
+    let name = escape(source.name()).into_owned();
+    let checked = check(&source, &options);
+    let catalog = Catalog::new(&checked);
+    let plan = import::plan(&po, &catalog, language, args.accept_stale)
+        .map_err(|e| fail_at(e.line, &format!("{} (nothing was imported)", e.message)))?;
+    let mut changes = plan.changes.clone();
+    let mut misread = Vec::new();
+    let edited = loop {
+        let edits: Vec<ValueEdit> = changes.iter().map(|(_, edit)| edit.clone()).collect();
+        let edited = edit::apply_checked(&source, &options, &edits)
+            .map_err(|error| CommandError::Failed(format!("{name}: {error}")))?;
+        if args.force || edited.edits.iter().all(|e| e.errors.is_empty()) {
+            break edited;
+        }
+        // Leave out what the reader would misread, and make the rest again.
+        let mut kept = Vec::new();
+        for (change, done) in changes.into_iter().zip(edited.edits) {
+            match done.errors.is_empty() {
+                true => kept.push(change),
+                false => misread.push((change.0, done.errors)),
+            }
+        }
+        changes = kept;
+    };
+    let mode = if args.diff { Mode::Diff } else { Mode::Write };
+    let style = DiffStyle {
+        color: context.color_stdout(),
+    };
+    rewrite::deliver(&path, &source, &edited.text, mode, style)?;
+    let mut stderr = std::io::stderr().lock();
+    for (entry, english) in &plan.stale {
+        let now = match english {
+            Some(english) => format!("its English is now {}", crate::present::quoted(english)),
+            None => "the message has no English now".to_string(),
+        };
+        writeln!(
+            stderr,
+            "{po_name}:{}: stale, not imported: `{}` was translated from {}; {now}",
+            entry.line,
+            escape(entry.msgctxt.as_deref().unwrap_or_default()),
+            crate::present::quoted(&entry.msgid)
+        )?;
+    }
+    for (entry, why) in &plan.refused {
+        writeln!(stderr, "{po_name}:{}: not imported: {why}", entry.line)?;
+    }
+    for (entry, errors) in &misread {
+        for error in errors {
+            writeln!(
+                stderr,
+                "{po_name}:{}: not imported: error[{}] {} (--force imports it)",
+                entry.line,
+                error.rule.name,
+                escape(&error.message)
+            )?;
+        }
+    }
+    if !context.quiet {
+        let verb = match mode {
+            Mode::Diff => "would import",
+            Mode::Write => "imported",
+        };
+        let lines: Vec<String> = edited.edits.iter().map(|e| e.line.to_string()).collect();
+        let at = match lines.is_empty() {
+            true => String::new(),
+            false => format!(
+                " (line{} {})",
+                if lines.len() == 1 { "" } else { "s" },
+                lines.join(", ")
+            ),
+        };
+        let mut parts = vec![format!(
+            "{verb} {} {} message{}{at}",
+            edited.edits.len(),
+            language.name(),
+            if edited.edits.len() == 1 { "" } else { "s" }
+        )];
+        for (count, what) in [
+            (plan.unchanged, "already in the file"),
+            (plan.empty, "untranslated (empty msgstr)"),
+            (plan.fuzzy, "fuzzy, not imported"),
+            (
+                plan.stale.len(),
+                "stale, not imported (--accept-stale imports them)",
+            ),
+            (plan.refused.len() + misread.len(), "refused"),
+        ] {
+            if count > 0 {
+                parts.push(format!("{count} {what}"));
+            }
+        }
+        writeln!(stderr, "{name}: {}", parts.join("; "))?;
+    }
+    let left_out = plan.stale.len() + plan.refused.len() + misread.len();
+    Ok(if left_out > 0 {
+        Exit::Findings
+    } else {
+        Exit::Clean
+    })
+}
+
 /// Tells, on standard error, the errors of the knowledge base written: exit 1 if it has any.
 fn report_errors(written: &SourceFile, options: &Options, context: &Context) -> CommandResult {
     let mut checked = check(written, options);
@@ -63,15 +221,13 @@ fn report_errors(written: &SourceFile, options: &Options, context: &Context) -> 
     if errors == 0 {
         return Ok(Exit::Clean);
     }
-    errors_to_stderr(&mut checked)?;
-    let mut stderr = std::io::stderr().lock();
+    errors_to_stderr(&mut checked);
     if !context.quiet {
         let s = if errors == 1 { "" } else { "s" };
-        writeln!(
-            stderr,
+        stderr_line!(
             "{}: written with {errors} error{s} to correct by hand (`ekb check` lists every finding)",
             escape(written.name())
-        )?;
+        );
     }
     Ok(Exit::Findings)
 }

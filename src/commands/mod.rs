@@ -9,10 +9,17 @@ pub mod fix;
 pub mod fmt;
 pub mod import;
 pub mod locations;
+pub mod lsp;
 pub mod man;
+pub mod map;
+pub mod mission;
+pub mod report;
 pub mod rules;
+pub mod set;
+pub mod settings;
 pub mod show;
 pub mod tour;
+pub mod translations;
 
 use std::cell::OnceCell;
 
@@ -28,8 +35,11 @@ use crate::model::build::Options;
 use crate::reader::Reader;
 use crate::render::escape::escape;
 use crate::render::{concise, FileReport, RenderOptions};
-use crate::settings::Settings;
+use crate::rules::selection::{Choice, RuleSet};
+use crate::settings::{Lookup, Settings};
 use crate::source::SourceFile;
+use crate::stderr_line;
+use crate::streams;
 
 /// The exit codes of SPEC §5.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -78,9 +88,15 @@ impl<E: std::error::Error + 'static> From<E> for CommandError {
 
 impl CommandError {
     /// Tells on standard error why the command failed, `ekb: error: …` on one line, escaped:
-    /// errors quote file names and file text.
+    /// errors quote file names and file text. A closed standard output is only remembered,
+    /// to be told once, at the end ([`crate::streams::failure`]).
     pub fn report(&self) {
-        eprintln!("ekb: error: {}", escape(&self.to_string()));
+        match self {
+            CommandError::OutputClosed => crate::streams::stdout_failed(),
+            CommandError::Failed(message) => {
+                crate::stderr_line!("ekb: error: {}", escape(message));
+            }
+        }
     }
 }
 
@@ -88,7 +104,7 @@ pub type CommandResult = Result<Exit, CommandError>;
 
 /// Lists the errors of `checked` on standard error, a concise line each, and drops its
 /// other findings (for commands that write a file and tell what a person must still do).
-fn errors_to_stderr(checked: &mut Checked<'_>) -> std::io::Result<()> {
+fn errors_to_stderr(checked: &mut Checked<'_>) {
     checked
         .diagnostics
         .retain(|diagnostic| diagnostic.severity() == Severity::Error);
@@ -97,12 +113,13 @@ fn errors_to_stderr(checked: &mut Checked<'_>) -> std::io::Result<()> {
         quiet: true,
         ..RenderOptions::default()
     };
-    concise::render(
+    // Standard error never fails (streams::stderr); a failure is remembered there.
+    let _ = concise::render(
         &[FileReport::new(checked)],
         &Summary::default(),
-        &mut std::io::stderr().lock(),
+        &mut streams::stderr(),
         &findings_only,
-    )
+    );
 }
 
 /// What every command may need: the global options and the configuration (read once, and
@@ -115,17 +132,28 @@ pub struct Context {
     pub quiet: bool,
     /// `--reader` (or `EKB_READER`), which overrides `ekb.toml`.
     pub reader: Option<Reader>,
+    /// Whether `reader` came from `EKB_READER` rather than `--reader`.
+    pub reader_from_env: bool,
+    /// Where the settings come from: `--settings`, `--isolated`, or each file's folder.
+    pub settings: Lookup,
     config: OnceCell<Config>,
 }
 
 impl Context {
-    pub fn new(cli: &Cli) -> Context {
+    pub fn new(cli: &Cli, reader_from_env: bool) -> Context {
+        let settings = match (&cli.settings, cli.isolated) {
+            (Some(path), _) => Lookup::Explicit(path.clone()),
+            (None, true) => Lookup::Isolated,
+            (None, false) => Lookup::Discover,
+        };
         Context {
             config_path: cli.config.clone(),
             color: cli.color,
             verbose: cli.verbose,
             quiet: cli.quiet,
             reader: cli.reader,
+            reader_from_env,
+            settings,
             config: OnceCell::new(),
         }
     }
@@ -138,6 +166,8 @@ impl Context {
             verbose: false,
             quiet: false,
             reader: None,
+            reader_from_env: false,
+            settings: Lookup::Discover,
             config: OnceCell::from(config),
         }
     }
@@ -150,9 +180,21 @@ impl Context {
         }
         let config = Config::discover(self.config_path.as_deref())?;
         for warning in &config.warnings {
-            eprintln!("ekb: warning: {}", escape(warning));
+            stderr_line!("ekb: warning: {}", escape(warning));
         }
         Ok(self.config.get_or_init(|| config))
+    }
+
+    /// The settings for the file at `path` (see [`Lookup`]).
+    pub fn settings_for(&self, path: &Path) -> Result<Settings, CommandError> {
+        self.settings
+            .settings_for(path)
+            .map_err(CommandError::Failed)
+    }
+
+    /// The rules to run on the file at `path`: its settings' choice, then `command_line`'s.
+    pub fn rules_for(&self, path: &Path, command_line: &Choice) -> Result<RuleSet, CommandError> {
+        Ok(self.settings_for(path)?.rules_for(path, command_line))
     }
 
     /// How to read the knowledge base at `path`: the configuration's dialect and verbosity
@@ -162,9 +204,10 @@ impl Context {
         let config = self.config()?;
         let reader = match self.reader {
             Some(reader) => Some(reader),
-            None => Settings::discover(path)
-                .map_err(CommandError::Failed)?
+            None => self
+                .settings_for(path)?
                 .reader
+                .map(|reader| reader.value)
                 .or(config.reader),
         };
         Ok(Options {
@@ -186,21 +229,86 @@ impl Context {
         if !files.is_empty() {
             return Ok(files.to_vec());
         }
-        Ok(vec![self.config()?.knowledge_base()?.to_path_buf()])
+        Ok(vec![self.configured_knowledge_base()?])
     }
 
     /// The one file to work on: the one given, else the configured knowledge base.
     pub fn input(&self, file: Option<&Path>) -> Result<PathBuf, CommandError> {
         match file {
             Some(file) => Ok(file.to_path_buf()),
-            None => Ok(self.config()?.knowledge_base()?.to_path_buf()),
+            None => self.configured_knowledge_base(),
         }
+    }
+
+    /// The files a command may rewrite in place: [`Context::inputs`], but a configured
+    /// knowledge base outside the configuration's project folder (`knowledgeBase
+    /// /etc/passwd`, or `../../..`) is refused: such a file is rewritten only when named on
+    /// the command line.
+    pub fn files_to_rewrite(&self, files: &[PathBuf]) -> Result<Vec<PathBuf>, CommandError> {
+        let paths = self.inputs(files)?;
+        if !files.is_empty() {
+            return Ok(paths);
+        }
+        let config = self.config()?;
+        match config.locate_knowledge_base() {
+            Some(location) if !location.inside => Err(CommandError::Failed(format!(
+                "the knowledgeBase of configuration {} is {}, outside the configuration's \
+                 project folder {}: ekb rewrites a file outside the project only when you \
+                 name it on the command line",
+                config.path.as_deref().unwrap_or(Path::new("")).display(),
+                location.file.display(),
+                location.project.display()
+            ))),
+            _ => Ok(paths),
+        }
+    }
+
+    /// [`Context::files_to_rewrite`] for a command that rewrites one file (`set`,
+    /// `import --po`).
+    pub fn file_to_rewrite(&self, file: Option<&Path>) -> Result<PathBuf, CommandError> {
+        let named: Vec<PathBuf> = file.map(Path::to_path_buf).into_iter().collect();
+        let mut paths = self.files_to_rewrite(&named)?;
+        Ok(paths.swap_remove(0))
+    }
+
+    /// The configured knowledge base; with `-v`, where it really points.
+    fn configured_knowledge_base(&self) -> Result<PathBuf, CommandError> {
+        let config = self.config()?;
+        let path = config.knowledge_base()?.to_path_buf();
+        if let (true, Some(location)) = (self.verbose(), config.locate_knowledge_base()) {
+            let outside = if location.inside {
+                String::new()
+            } else {
+                format!(
+                    ", outside its project folder {}",
+                    escape(&location.project.display().to_string())
+                )
+            };
+            stderr_line!(
+                "ekb: the knowledgeBase of configuration {} is {}{outside}",
+                escape(
+                    &config
+                        .path
+                        .as_deref()
+                        .unwrap_or(Path::new(""))
+                        .display()
+                        .to_string()
+                ),
+                escape(&location.file.display().to_string())
+            );
+        }
+        Ok(path)
+    }
+
+    /// Whether to tell what is read: `-v` or the configuration's `verboseMode`.
+    fn verbose(&self) -> bool {
+        self.verbose || self.config().is_ok_and(|config| config.verbose)
     }
 
     /// Reads a knowledge base (`-` is standard input).
     pub fn read(&self, path: &Path) -> Result<SourceFile, CommandError> {
-        if self.verbose || self.config()?.verbose {
-            eprintln!("ekb: reading {}", escape(&path.display().to_string()));
+        if self.verbose() {
+            stderr_line!("ekb: reading {}", escape(&path.display().to_string()));
         }
         Ok(SourceFile::read(path)?)
     }

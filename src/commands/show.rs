@@ -9,10 +9,8 @@ use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::build::parse_id;
 use crate::model::{Dialect, Location};
-use crate::present::field::Field;
 use crate::present::{self, robot, table, Lines};
 use crate::reader;
-use crate::reader::view;
 use crate::render::escape::escape;
 
 #[derive(Debug, clap::Args)]
@@ -83,26 +81,11 @@ fn render(checked: &Checked<'_>, location: &Location<'_>) -> String {
     let text = checked.source.text().as_bytes();
     let loaded = reader::load(text, checked.reader);
     let mut table = table::new(&["line", "field", "value"]);
-    for field in Field::ALL {
-        let given = field.has_line(location);
-        if field.is_current_only() && !given && dialect == Dialect::Seed {
-            continue;
-        }
-        let key = match field {
-            Field::Pose => location.pose_key.unwrap_or(dialect.pose_key()),
-            other => other.key(dialect),
-        };
-        let held = view::held(&loaded, text, location.id, key);
-        let (line, value) = match field.get(location) {
-            Some((value, span)) => (
-                lines.of(span).to_string(),
-                robot::as_loaded(field, &value, &held, checked.reader),
-            ),
-            None if given => ("–".into(), "invalid: see the findings below".into()),
-            None if field.is_current_only() => ("–".into(), "(not given)".into()),
-            None => ("–".into(), "MISSING".into()),
-        };
-        table.add_row([line, key.name().to_string(), value]);
+    for row in robot::rows(location, dialect, &loaded, text) {
+        let line = row
+            .span
+            .map_or("–".into(), |span| lines.of(span).to_string());
+        table.add_row([line, row.key.name().to_string(), row.value]);
     }
     out.push_str(&format!("{table}\n"));
     // As `check` shows them: the first findings of each rule, then how many more.

@@ -16,6 +16,7 @@ use crate::reader;
 use crate::reader::view::{self, Held};
 use crate::render::escape::escape;
 use crate::render::safe_json as json;
+use crate::stderr_line;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -23,7 +24,7 @@ pub struct Args {
     #[arg(value_name = "FILE")]
     pub file: Option<PathBuf>,
 
-    /// The language the robot speaks: english, isizulu, kinyarwanda (any case), or en, zu, rw
+    /// The language the robot speaks: english, isizulu (zulu), kinyarwanda, or an ISO 639 code: en/eng, zu/zul, rw/kin (any case)
     #[arg(long, value_name = "L", ignore_case = true, value_parser = language::parser(), default_value = "english")]
     pub lang: Language,
 
@@ -49,11 +50,11 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     present::note_errors(&checked, context.quiet);
     let file = escape(source.name());
     let Some(tour) = &checked.kb.tour else {
-        eprintln!("ekb: {file} has no tour: add a `tourSpecification` line");
+        stderr_line!("ekb: {file} has no tour: add a `tourSpecification` line");
         return Ok(Exit::Findings);
     };
     if tour.stops.is_empty() {
-        eprintln!("ekb: the tour of {file} has no stops");
+        stderr_line!("ekb: the tour of {file} has no stops");
         return Ok(Exit::Findings);
     }
     // The text shows the first stops, as `check` shows the first findings of a rule; the
@@ -225,19 +226,10 @@ impl<'a> Tour<'a> {
                 }
             }
         }
-        let written_tour: Vec<Option<i32>> = checked
-            .kb
-            .tour_stops()
-            .map(|id| i32::try_from(id).ok())
-            .collect();
-        let robot_tour = loaded
-            .tour
-            .as_ref()
-            .map_or_else(Vec::new, |tour| tour.stops.clone());
         Tour {
             language,
             reader: checked.reader.name(),
-            robot_tour: (robot_tour != written_tour).then_some(robot_tour),
+            robot_tour: robot::other_tour(&checked.kb, &loaded),
             messages: total * 2,
             stops,
             translated,
@@ -257,15 +249,9 @@ impl<'a> Tour<'a> {
             self.reader
         );
         if let Some(robot_tour) = &self.robot_tour {
-            let stops = robot_tour
-                .iter()
-                .map(|stop| stop.map_or("?".to_string(), |id| id.to_string()));
-            let stops = match robot_tour.is_empty() {
-                true => "no tour at all".to_string(),
-                false => present::listed(stops, " → "),
-            };
             out.push_str(&format!(
-                "The robot's reader loads another tour: {stops} (`ekb check` says why)\n"
+                "The robot's reader loads another tour: {} (`ekb check` says why)\n",
+                robot::tour_text(robot_tour)
             ));
         }
         for stop in &self.stops {

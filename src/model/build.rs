@@ -386,7 +386,7 @@ impl<'a> Builder<'a> {
         };
         if self.options.verbose {
             // File text, so escaped: it must not drive the terminal.
-            eprintln!("ekb: read {key_text} {}", escape(args.text(self.text)));
+            crate::stderr_line!("ekb: read {key_text} {}", escape(args.text(self.text)));
         }
         self.facts.key_lines[key as usize] += 1;
         if key == Key::TourSpecification {

@@ -244,6 +244,44 @@ impl Key {
         }
     }
 
+    /// What the key's value means, for people (SPEC §1's table).
+    pub fn meaning(self) -> &'static str {
+        match self {
+            Key::RobotLocationDescription => "the short name of the location, e.g. `Roomba`",
+            Key::RobotLocation | Key::RobotLocationPose => {
+                "where the robot stands on the map: x and y in metres, theta (its heading) in degrees"
+            }
+            Key::GestureTarget => {
+                "the point the robot gestures at, in metres; `0 0 0` means no gesture here"
+            }
+            Key::GestureArm => "the arm the robot gestures with",
+            Key::PreGestureMessageEnglish
+            | Key::PreGestureMessageIsiZulu
+            | Key::PreGestureMessageKinyarwanda => "what the robot says before the gesture",
+            Key::PostGestureMessageEnglish
+            | Key::PostGestureMessageIsiZulu
+            | Key::PostGestureMessageKinyarwanda => "what the robot says after the gesture",
+            Key::CulturalKnowledge => {
+                "keys into the culture knowledge base, e.g. `DeicticShape` (at most 2)"
+            }
+            Key::TourSpecification => {
+                "the tour: the number of stops, then each location's id in the order visited (no location id before it)"
+            }
+        }
+    }
+
+    /// How the key's value is written.
+    pub fn value_syntax(self) -> &'static str {
+        match self.value_kind() {
+            ValueKind::Text => "text",
+            ValueKind::Pose => "x y theta",
+            ValueKind::Point => "x y z",
+            ValueKind::Arm => "left | right",
+            ValueKind::Words => "word [word]",
+            ValueKind::Tour => "n id1 … idn",
+        }
+    }
+
     /// The dialect a key belongs to, or `None` for keys both dialects share.
     pub fn dialect(self) -> Option<Dialect> {
         match self {

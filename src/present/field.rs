@@ -81,6 +81,15 @@ impl Field {
         }
     }
 
+    /// The key that holds this field at `location` in a file of `dialect` (the pose: the
+    /// key it was written with).
+    pub fn key_at(self, location: &Location<'_>, dialect: Dialect) -> Key {
+        match self {
+            Field::Pose => location.pose_key.unwrap_or(dialect.pose_key()),
+            other => other.key(dialect),
+        }
+    }
+
     /// Whether the file has a line for this field at `location`, valid or not.
     pub fn has_line(self, location: &Location<'_>) -> bool {
         location.has_line(self.key(Dialect::Current))

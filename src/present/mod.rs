@@ -237,7 +237,7 @@ pub fn note_errors(checked: &Checked<'_>, quiet: bool) {
     let errors = checked.summary().errors;
     if errors > 0 && !quiet {
         let plural = if errors == 1 { "" } else { "s" };
-        eprintln!(
+        crate::stderr_line!(
             "ekb: note: {} has {errors} error{plural}; `ekb check` lists them",
             escape(checked.source.name())
         );

@@ -2,9 +2,54 @@
 //! (`show`, `tour`, `locations`) shows the chosen reader's, marked where the file differs.
 
 use super::field::{Field, FieldValue};
-use crate::model::{Point, Pose};
+use crate::model::{Dialect, Key, KnowledgeBase, Location, Point, Pose};
 use crate::reader::view::{self, Held};
-use crate::reader::Reader;
+use crate::reader::{Loaded, Reader};
+use crate::syntax::Span;
+
+/// One field of a location as `show` lists it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    pub field: Field,
+    /// The key that holds it in this file.
+    pub key: Key,
+    /// Where its value is, if it has a valid one.
+    pub span: Option<Span>,
+    /// Its value as the reader loads it (see [`as_loaded`]), or why it has none.
+    pub value: String,
+}
+
+/// Every field of `location` in a file of `dialect` (the current dialect's own fields only
+/// where given, in a seed file), each as `loaded` holds it; `text` is the file.
+pub fn rows(
+    location: &Location<'_>,
+    dialect: Dialect,
+    loaded: &Loaded<'_>,
+    text: &[u8],
+) -> Vec<Row> {
+    let mut rows = Vec::with_capacity(Field::ALL.len());
+    for field in Field::ALL {
+        let given = field.has_line(location);
+        if field.is_current_only() && !given && dialect == Dialect::Seed {
+            continue;
+        }
+        let key = field.key_at(location, dialect);
+        let held = view::held(loaded, text, location.id, key);
+        let (span, value) = match field.get(location) {
+            Some((value, span)) => (Some(span), as_loaded(field, &value, &held, loaded.reader)),
+            None if given => (None, "invalid: see the finding on its line".into()),
+            None if field.is_current_only() => (None, "(not given)".into()),
+            None => (None, "MISSING".into()),
+        };
+        rows.push(Row {
+            field,
+            key,
+            span,
+            value,
+        });
+    }
+    rows
+}
 
 /// What the robot holds of a field the file gives as `written`, and, where that is not
 /// what the file says, what the file says.
@@ -67,4 +112,26 @@ fn describe(field: Field, value: &FieldValue<'_>) -> String {
         }
         _ => value.human(false),
     }
+}
+
+/// The tour the robot loads, where it is not the file's: each stop (`None`: whatever was in
+/// memory), empty when it loads no tour at all.
+pub fn other_tour(kb: &KnowledgeBase<'_>, loaded: &Loaded<'_>) -> Option<Vec<Option<i32>>> {
+    let written: Vec<Option<i32>> = kb.tour_stops().map(|id| i32::try_from(id).ok()).collect();
+    let held = loaded
+        .tour
+        .as_ref()
+        .map_or_else(Vec::new, |tour| tour.stops.clone());
+    (held != written).then_some(held)
+}
+
+/// `1 → 4 → ?` (`?`: undefined; at most [`super::MAX_LISTED`] stops), or `no tour at all`.
+pub fn tour_text(stops: &[Option<i32>]) -> String {
+    if stops.is_empty() {
+        return "no tour at all".to_string();
+    }
+    let stops = stops
+        .iter()
+        .map(|stop| stop.map_or("?".to_string(), |id| id.to_string()));
+    super::listed(stops, " → ")
 }

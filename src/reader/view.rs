@@ -52,3 +52,19 @@ pub fn held<'a>(loaded: &Loaded<'_>, text: &'a [u8], id: u32, key: Key) -> Held<
 pub fn shortest(value: f32) -> f64 {
     value.to_string().parse().unwrap_or(f64::NAN)
 }
+
+/// Three numbers of location `id` as `loaded` holds them for `key` (for the pose, the key
+/// its version reads), each as [`shortest`] writes it, with the line that set them; `None`
+/// when no line set them (the robot holds 0, 0, 0) or the reader took them from past the
+/// end of their line.
+pub fn numbers(loaded: &Loaded<'_>, id: u32, key: Key) -> Option<([f64; 3], crate::syntax::Span)> {
+    let key = match key {
+        Key::RobotLocation | Key::RobotLocationPose => loaded.reader.pose_key(),
+        other => other,
+    };
+    let field = loaded.locations.get(&i32::try_from(id).ok()?)?.field(key)?;
+    match field.value {
+        LoadedValue::Numbers(numbers) => Some((numbers.map(shortest), field.line)),
+        _ => None,
+    }
+}

@@ -23,7 +23,7 @@ use miette::{
 use super::escape::{escape, escape_lines};
 use super::located::{Locator, Mark};
 use super::{FileReport, LocatedDiagnostic, RenderOptions};
-use crate::diagnostic::{Severity, Summary};
+use crate::diagnostic::{Applicability, Severity, Summary};
 use crate::parallel;
 use crate::source::Position;
 use crate::syntax::Span;
@@ -65,7 +65,12 @@ pub fn render(
         }
     }
     if !options.quiet {
-        writeln!(out, "{}{}", summary.sentence(), super::reader_note(reports))?;
+        writeln!(
+            out,
+            "{}{}",
+            summary.breakdown(),
+            super::reader_note(reports)
+        )?;
     }
     Ok(())
 }
@@ -207,7 +212,13 @@ impl<'a> Source<'a> {
 
     fn finding<'d>(&'d self, diagnostic: &'d LocatedDiagnostic<'_>) -> Finding<'d> {
         let fix = diagnostic.fix.as_ref().map(|fix| &fix.message);
-        let fix_help = fix.map(|fix| format!("fix available: {fix} (run `ekb fix`)"));
+        let fix_help = diagnostic.fix.as_ref().map(|fix| match fix.applicability {
+            Applicability::Safe => format!("fix available: {} (run `ekb fix`)", fix.message),
+            Applicability::Unsafe => format!(
+                "(unsafe fix available: {}; run `ekb fix --unsafe-fixes` if that is what was meant)",
+                fix.message
+            ),
+        });
         let help = match (diagnostic.help, fix_help) {
             (help, None) => help.map(Cow::Borrowed),
             (None, Some(fix)) => Some(Cow::Owned(fix)),

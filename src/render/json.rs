@@ -26,6 +26,7 @@ pub fn render(
 ) -> io::Result<()> {
     let readers: BTreeMap<&str, &str> = reports
         .iter()
+        .filter(|r| r.read_by_reader())
         .map(|r| (r.checked.source.name(), r.checked.reader.name()))
         .collect();
     let mut names: Vec<&str> = readers.values().copied().collect();

@@ -5,7 +5,7 @@ use std::cell::Cell;
 use serde::Serialize;
 
 use crate::check::Checked;
-use crate::diagnostic::{Diagnostic, Severity};
+use crate::diagnostic::{Applicability, Diagnostic, Severity};
 use crate::source::{count_chars, Position};
 use crate::syntax::Span;
 
@@ -31,6 +31,8 @@ pub struct LocatedEdit {
 pub struct LocatedFix {
     pub message: String,
     pub edits: Vec<LocatedEdit>,
+    /// `safe` (`ekb fix` applies it) or `unsafe` (only with `--unsafe-fixes`).
+    pub applicability: Applicability,
 }
 
 /// A diagnostic as every output format sees it (and exactly the JSON shape of SPEC §5).
@@ -81,6 +83,7 @@ impl<'a> FileReport<'a> {
                             replacement: edit.replacement.clone(),
                         })
                         .collect(),
+                    applicability: fix.applicability,
                 }),
                 diagnostic,
             })
@@ -89,6 +92,14 @@ impl<'a> FileReport<'a> {
             checked,
             diagnostics,
         }
+    }
+}
+
+impl FileReport<'_> {
+    /// Whether the file was checked against a version of the environment knowledge base's
+    /// reader (`--reader`); the mission and the culture knowledge base have their own.
+    pub fn read_by_reader(&self) -> bool {
+        self.checked.kind == crate::check::FileKind::EnvironmentKnowledgeBase
     }
 }
 

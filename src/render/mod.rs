@@ -10,8 +10,10 @@ pub mod github;
 pub mod human;
 pub mod json;
 pub mod located;
+pub mod markup;
 pub mod safe_json;
 pub mod sarif;
+pub mod statistics;
 
 use std::io::{self, Write};
 
@@ -23,9 +25,10 @@ use crate::reader::Reader;
 pub use located::{FileReport, LocatedDiagnostic};
 
 /// `ekb check --format`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, ValueEnum)]
 pub enum Format {
     /// For people: each finding with the lines around it, underlined, and what to do
+    #[default]
     Human,
     /// One line per finding: `file:line:col: severity[rule] message`
     Concise,
@@ -61,6 +64,7 @@ pub fn render(
 /// summary line: `, checked against reader 2025-06`, or with several `, checked against
 /// readers d5.4.2 for a.dat, …`.
 pub fn reader_note(reports: &[FileReport<'_>]) -> String {
+    let reports: Vec<&FileReport> = reports.iter().filter(|r| r.read_by_reader()).collect();
     let mut readers: Vec<Reader> = reports.iter().map(|r| r.checked.reader).collect();
     readers.dedup();
     match readers.as_slice() {

@@ -36,6 +36,7 @@ pub fn render(reports: &[FileReport<'_>], out: &mut dyn Write) -> io::Result<()>
             properties: RunProperties {
                 readers: reports
                     .iter()
+                    .filter(|r| r.read_by_reader())
                     .map(|r| (r.checked.source.name(), r.checked.reader.name()))
                     .collect(),
             },

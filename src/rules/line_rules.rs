@@ -19,10 +19,12 @@ pub struct LineRules {
     /// The findings, at most [`crate::check::kept_at_most`] of each rule.
     found: Diagnostics,
     /// The CRLF endings so far: one finding for all of them, when the file is read.
-    crlf_endings: Vec<Span>,
+    crlf_endings: compat::compat_crlf::CrlfEndings,
     /// Whether the part's lines have a byte that may start a control character: nearly no
     /// file has one, and one pass over all the bytes costs less than a check per value.
     controls_possible: bool,
+    /// Whether they have a byte that may start a Unicode space (likewise).
+    unicode_spaces_possible: bool,
 }
 
 impl Findings for Diagnostics {
@@ -31,8 +33,9 @@ impl Findings for Diagnostics {
     fn part(&self, text: &str, range: Range<usize>) -> LineRules {
         LineRules {
             found: self.part(),
-            crlf_endings: Vec::new(),
-            controls_possible: structure::control_character::possible_in(&text[range]),
+            crlf_endings: Default::default(),
+            controls_possible: structure::control_character::possible_in(&text[range.clone()]),
+            unicode_spaces_possible: structure::unicode_space::possible_in(&text[range]),
         }
     }
 
@@ -44,9 +47,11 @@ impl Findings for Diagnostics {
 impl LineFindings for LineRules {
     #[inline]
     fn line(&mut self, line: &Line, text: &str) {
-        let crlf_ending = compat::compat_crlf::ending(line, text);
-        content::trailing_whitespace::check(line, crlf_ending, text, &mut self.found);
-        self.crlf_endings.extend(crlf_ending);
+        content::trailing_whitespace::check(line, text, &mut self.found);
+        self.crlf_endings.add(line, text);
+        if self.unicode_spaces_possible {
+            structure::unicode_space::check(line, text, &mut self.found);
+        }
     }
 
     #[inline]
@@ -132,7 +137,7 @@ impl LineFindings for LineRules {
 
     fn append(&mut self, later: LineRules) {
         self.found.append(later.found);
-        self.crlf_endings.extend(later.crlf_endings);
+        self.crlf_endings.append(later.crlf_endings);
     }
 
     fn finish(&mut self) {
@@ -230,5 +235,7 @@ mod tests {
         "  ",
         "robotLocationDescription 0 no id",
         "robotLocationDescription # be\u{7}ll",
+        // `\r\r\n` where a CRLF ending follows.
+        "robotLocationDescription # Hall\r",
     ];
 }

@@ -19,9 +19,14 @@ use crate::reader::Reader;
 pub mod compat;
 mod consequence;
 pub mod content;
+pub mod culture;
 pub mod line_rules;
+pub mod map;
+pub mod mission;
+pub mod selection;
 pub mod structure;
 pub mod tour;
+pub mod translation;
 
 /// A rule's identity and documentation.
 #[derive(Debug, PartialEq, Eq)]
@@ -57,15 +62,39 @@ pub enum Category {
     Tour,
     Content,
     Compat,
+    Map,
+    /// The behaviour tree, and what it needs of both knowledge bases (SPEC §11).
+    Mission,
+    /// The culture knowledge base and its types file (SPEC §11).
+    Culture,
+    Translation,
 }
 
 impl Category {
+    /// The name `select`, `ignore` and `--select` use: `structure`, `compat`, ….
+    pub fn name(self) -> &'static str {
+        match self {
+            Category::Structure => "structure",
+            Category::Tour => "tour",
+            Category::Content => "content",
+            Category::Compat => "compat",
+            Category::Mission => "mission",
+            Category::Culture => "culture",
+            Category::Translation => "translation",
+            Category::Map => "map",
+        }
+    }
+
     pub fn title(self) -> &'static str {
         match self {
             Category::Structure => "Structure",
             Category::Tour => "Tour",
             Category::Content => "Content",
             Category::Compat => "Reference-reader compatibility",
+            Category::Map => "Map",
+            Category::Mission => "Mission",
+            Category::Culture => "Culture knowledge base",
+            Category::Translation => "Translation",
         }
     }
 }
@@ -111,7 +140,9 @@ pub static ALL: &[&Rule] = &[
     &structure::mixed_dialect::MIXED_DIALECT,
     &structure::legacy_key::LEGACY_KEY,
     &structure::control_character::CONTROL_CHARACTER,
+    &structure::unicode_space::UNICODE_SPACE,
     &structure::not_a_knowledge_base::NOT_AN_ENVIRONMENT_KNOWLEDGE_BASE,
+    &structure::unused_suppression::UNUSED_SUPPRESSION,
     &tour::tour_missing::TOUR_MISSING,
     &tour::tour_duplicate_spec::TOUR_DUPLICATE_SPEC,
     &tour::tour_count_mismatch::TOUR_COUNT_MISMATCH,
@@ -137,6 +168,36 @@ pub static ALL: &[&Rule] = &[
     &compat::compat_reader_crash::COMPAT_READER_CRASH,
     &compat::compat_slow_load::COMPAT_SLOW_LOAD,
     &compat::compat_ignored_key::COMPAT_IGNORED_KEY,
+    &map::pose_outside_map::POSE_OUTSIDE_MAP,
+    &map::pose_in_obstacle::POSE_IN_OBSTACLE,
+    &map::target_outside_map::TARGET_OUTSIDE_MAP,
+    &mission::mission_invalid_xml::MISSION_INVALID_XML,
+    &mission::mission_unknown_node::MISSION_UNKNOWN_NODE,
+    &mission::mission_bad_children::MISSION_BAD_CHILDREN,
+    &mission::mission_unknown_attribute::MISSION_UNKNOWN_ATTRIBUTE,
+    &mission::mission_unknown_tree::MISSION_UNKNOWN_TREE,
+    &mission::mission_invalid_name::MISSION_INVALID_NAME,
+    &mission::mission_language_invalid::MISSION_LANGUAGE_INVALID,
+    &mission::mission_missing_phrase::MISSION_MISSING_PHRASE,
+    &mission::mission_untranslated_tour::MISSION_UNTRANSLATED_TOUR,
+    &mission::mission_missing_format::MISSION_MISSING_FORMAT,
+    &mission::mission_unreachable_tree::MISSION_UNREACHABLE_TREE,
+    &mission::cultural_knowledge_unknown_key::CULTURAL_KNOWLEDGE_UNKNOWN_KEY,
+    &culture::culture_unknown_key::CULTURE_UNKNOWN_KEY,
+    &culture::culture_type_mismatch::CULTURE_TYPE_MISMATCH,
+    &culture::culture_unknown_type::CULTURE_UNKNOWN_TYPE,
+    &culture::culture_duplicate_key::CULTURE_DUPLICATE_KEY,
+    &culture::culture_line_too_long::CULTURE_LINE_TOO_LONG,
+    &culture::culture_no_final_newline::CULTURE_NO_FINAL_NEWLINE,
+    &culture::culture_crlf::CULTURE_CRLF,
+    &translation::same_as_source::SAME_AS_SOURCE,
+    &translation::end_punctuation_mismatch::END_PUNCTUATION_MISMATCH,
+    &translation::double_space::DOUBLE_SPACE,
+    &translation::space_before_punctuation::SPACE_BEFORE_PUNCTUATION,
+    &translation::repeated_punctuation::REPEATED_PUNCTUATION,
+    &translation::unbalanced_delimiters::UNBALANCED_DELIMITERS,
+    &translation::wrong_language::WRONG_LANGUAGE,
+    &translation::length_mismatch::LENGTH_MISMATCH,
 ];
 
 /// `text` from the file, cut to a length that fits in a one-line message.
@@ -151,6 +212,51 @@ pub(crate) fn excerpt(text: &str) -> std::borrow::Cow<'_, str> {
 /// The rule with this name.
 pub fn by_name(name: &str) -> Option<&'static Rule> {
     ALL.iter().copied().find(|rule| rule.name == name)
+}
+
+/// The rule a person means by `query` (`ekb explain`): its name in any case, or a prefix
+/// of only one rule's name (`untranslated`); else why none, with the nearest name.
+pub fn lookup(query: &str) -> Result<&'static Rule, String> {
+    let lower = query.to_lowercase();
+    if let Some(rule) = by_name(&lower) {
+        return Ok(rule);
+    }
+    let starting: Vec<&'static Rule> = ALL
+        .iter()
+        .copied()
+        .filter(|rule| !lower.is_empty() && rule.name.starts_with(&lower))
+        .collect();
+    match starting.as_slice() {
+        [one] => Ok(one),
+        [] => Err(
+            match selection::nearest(query, ALL.iter().map(|rule| rule.name)) {
+                Some(name) => format!("no rule named `{query}`; did you mean `{name}`?"),
+                None => format!("no rule named `{query}`; `ekb rules` lists them"),
+            },
+        ),
+        several => {
+            let names: Vec<&str> = several.iter().map(|rule| rule.name).collect();
+            Err(format!(
+                "`{query}` starts the names of {} rules ({}); give more of the name",
+                names.len(),
+                names.join(", ")
+            ))
+        }
+    }
+}
+
+/// Where `rule` is in [`ALL`] (a rule's identity is its address: rules are statics).
+pub fn index_of(rule: &Rule) -> usize {
+    ALL.iter()
+        .position(|known| std::ptr::eq(*known, rule))
+        .expect("every rule is in the catalogue")
+}
+
+/// The categories of the catalogue, in its order (those that have a rule).
+pub fn categories() -> Vec<Category> {
+    let mut categories: Vec<Category> = ALL.iter().map(|rule| rule.category).collect();
+    categories.dedup();
+    categories
 }
 
 /// Runs the rules that look at whole locations and the tour, and those that depend on the
@@ -233,6 +339,7 @@ fn check_location(location: &Location<'_>, context: &LocationContext<'_>, out: &
     content::gesture_behind_robot::check(location, out);
     compat::compat_too_many_cultural_keys::check(location, out);
     compat::compat_cultural_word_split::check(location, context.reader, out);
+    translation::check(location, out);
 }
 
 #[cfg(test)]

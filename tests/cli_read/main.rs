@@ -1,9 +1,11 @@
-//! The reading commands end to end: `locations`, `show`, `tour`, `diff` and `export`, on the
-//! seed file and on fixtures of both dialects (`tests/fixtures/read/`).
+//! The reading commands end to end: `locations`, `show`, `tour`, `diff`, `export` and
+//! `mission`, on the seed file, on fixtures of both dialects (`tests/fixtures/read/`) and
+//! on the robot's mission set-up (`tests/fixtures/mission/`).
 
 mod common;
 mod diff;
 mod export;
 mod locations;
+mod mission;
 mod show;
 mod tour;

@@ -32,15 +32,24 @@ fn isizulu_tour_of_the_seed() {
 #[test]
 fn languages_by_name_or_code_in_any_case() {
     let reference = run(&["tour", "--lang", "isizulu", SEED]).stdout;
-    for spelling in ["isiZulu", "ISIZULU", "zu", "ZU"] {
+    for spelling in ["isiZulu", "ISIZULU", "zu", "ZU", "zul", "Zulu"] {
         assert_eq!(
             run(&["tour", "--lang", spelling, SEED]).stdout,
             reference,
             "{spelling}"
         );
     }
-    let kinyarwanda = run(&["tour", "--lang", "RW", SEED]).stdout;
-    assert!(kinyarwanda.ends_with("Kinyarwanda: 0 of 10 messages translated (10 placeholders)\n"));
+    for spelling in ["RW", "kin", "Kinyarwanda"] {
+        let kinyarwanda = run(&["tour", "--lang", spelling, SEED]).stdout;
+        assert!(
+            kinyarwanda.ends_with("Kinyarwanda: 0 of 10 messages translated (10 placeholders)\n"),
+            "{spelling}"
+        );
+    }
+    assert_eq!(
+        run(&["tour", "--lang", "ENG", SEED]).stdout,
+        run(&["tour", "--lang", "english", SEED]).stdout
+    );
 }
 
 #[test]
@@ -55,7 +64,9 @@ fn bad_language_lists_the_choices() {
     );
     assert!(
         out.stderr
-            .contains("[possible values: english, isizulu, kinyarwanda, en, zu, rw]"),
+            .contains(
+                "[possible values: english, isizulu, kinyarwanda, zulu, ikinyarwanda, en, zu, rw, eng, zul, kin]"
+            ),
         "{}",
         out.stderr
     );

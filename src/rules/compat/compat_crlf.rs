@@ -5,7 +5,9 @@ use crate::syntax::{Line, LineEnding, Span};
 
 declare_rule! {
     /// ## What it does
-    /// Flags a file with Windows (CRLF) line endings, once, and converts them all to LF.
+    /// Flags a file with Windows (CRLF) line endings, once, and converts them to LF. A
+    /// line whose text ends in another `\r` (`\r\r\n`) is flagged on its own and left for
+    /// a person: converting its ending would make that `\r` the next one.
     ///
     /// ## Why it matters
     /// The robot's reader removes only the `\n`: the `\r` stays at the end of every text
@@ -23,33 +25,62 @@ declare_rule! {
     };
 }
 
-/// The span the fix replaces by `\n` in a line that ends with CRLF.
-///
-/// A file converted to CRLF twice ends its lines with `\r\r\n`: the `\r`s before the
-/// ending (with any blanks among them) are one ending to convert, or converting `\r\n`
-/// would leave another CRLF behind, pass after pass.
-pub fn ending(line: &Line, text: &str) -> Option<Span> {
-    if line.ending != LineEnding::CrLf {
-        return None;
-    }
-    let bytes = text.as_bytes();
-    let mut start = line.trailing.end as usize;
-    let mut at = start;
-    while at > line.span.start as usize && matches!(bytes[at - 1], b'\r' | b' ' | b'\t') {
-        at -= 1;
-        if bytes[at] == b'\r' {
-            start = at;
-        }
-    }
-    Some(Span::new(start, line.span.end as usize))
+/// The CRLF endings of a file's lines, as the fix sees them.
+#[derive(Debug, Default)]
+pub struct CrlfEndings {
+    /// The `\r\n` of each line that the fix makes `\n`.
+    convertible: Vec<Span>,
+    /// The last `\r` of the text of each line that ends in another `\r` before its CRLF
+    /// (`\r\r\n`, as in a file converted to CRLF twice; blanks may come between). The fix
+    /// leaves such a line: converting its ending would make that `\r` the next one, and
+    /// take away, pass after pass, characters of the line's text.
+    after_carriage_return: Vec<Span>,
 }
 
-/// `endings` are the spans [`ending`] gave for every line that ends with CRLF, in order.
-pub fn check(endings: &[Span], out: &mut Diagnostics) {
-    let Some(&first) = endings.first() else {
+impl CrlfEndings {
+    /// Takes note of `line`'s ending if it is CRLF.
+    pub fn add(&mut self, line: &Line, text: &str) {
+        if line.ending != LineEnding::CrLf {
+            return;
+        }
+        let before_blanks = line.trailing.start as usize;
+        if before_blanks > line.span.start as usize && text.as_bytes()[before_blanks - 1] == b'\r' {
+            self.after_carriage_return
+                .push(Span::new(before_blanks - 1, before_blanks));
+        } else {
+            self.convertible.push(Span::new(
+                line.trailing.end as usize,
+                line.span.end as usize,
+            ));
+        }
+    }
+
+    /// Takes over the endings of the lines after these.
+    pub fn append(&mut self, later: CrlfEndings) {
+        self.convertible.extend(later.convertible);
+        self.after_carriage_return
+            .extend(later.after_carriage_return);
+    }
+}
+
+/// One finding for all the CRLF endings the fix converts, and one for each line it leaves.
+pub fn check(endings: &CrlfEndings, out: &mut Diagnostics) {
+    for &carriage_return in &endings.after_carriage_return {
+        out.push_with(&COMPAT_CRLF, || {
+            Diagnostic::new(
+                &COMPAT_CRLF,
+                carriage_return,
+                "this line ends with CRLF after another `\\r`, part of its text: the robot's \
+                 reader keeps both; `ekb fix` converts no ending after a `\\r` (that `\\r` \
+                 would become the next ending)",
+            )
+            .with_help("delete the `\\r` before the line ending by hand")
+        });
+    }
+    let Some(&first) = endings.convertible.first() else {
         return;
     };
-    let count = endings.len();
+    let count = endings.convertible.len();
     out.push_with(&COMPAT_CRLF, || Diagnostic::new(&COMPAT_CRLF,
             first,
             format!(
@@ -61,7 +92,7 @@ pub fn check(endings: &[Span], out: &mut Diagnostics) {
         .with_help("save the file with LF (Unix) line endings")
         .with_fix(
             "convert CRLF line endings to LF",
-            endings.iter().map(|&span| Edit::replace(span, "\n")).collect(),
+            endings.convertible.iter().map(|&span| Edit::replace(span, "\n")).collect(),
         ),
     );
 }

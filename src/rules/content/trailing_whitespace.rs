@@ -27,9 +27,8 @@ declare_rule! {
     };
 }
 
-/// `crlf_ending` is the line's ending as `compat-crlf` converts it: the blanks within it
-/// are its to remove, or the two fixes would overlap.
-pub fn check(line: &Line, crlf_ending: Option<Span>, text: &str, out: &mut Diagnostics) {
+/// Reports the blanks at the end of `line`, before its ending (which `compat-crlf` fixes).
+pub fn check(line: &Line, text: &str, out: &mut Diagnostics) {
     let span = match line.body {
         // A blank line's whitespace is all indentation (after a byte-order mark, if any).
         Body::Blank => {
@@ -42,13 +41,6 @@ pub fn check(line: &Line, crlf_ending: Option<Span>, text: &str, out: &mut Diagn
             Span::new(line.indent.start as usize + skip, line.indent.end as usize)
         }
         _ => line.trailing,
-    };
-    let span = match crlf_ending {
-        Some(ending) => Span::new(
-            span.start as usize,
-            span.end.min(ending.start).max(span.start) as usize,
-        ),
-        None => span,
     };
     if span.is_empty() {
         return;

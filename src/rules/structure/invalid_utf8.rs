@@ -17,6 +17,11 @@ declare_rule! {
     /// robotLocationDescription      1 Caf\xE9      <- a Latin-1 é
     /// ```
     /// Save the file as UTF-8 in your editor.
+    ///
+    /// ## Fix (unsafe)
+    /// `ekb fix --unsafe-fixes` reads every byte that is not UTF-8 as Windows-1252 (the
+    /// Latin-1 of Windows editors) and writes the file as UTF-8; a guess, as the bytes could
+    /// be another encoding. A file with NUL bytes (UTF-16?) is refused.
     pub static INVALID_UTF8 = {
         name: "invalid-utf8",
         category: Structure,
@@ -46,7 +51,10 @@ pub fn check(source: &SourceFile, out: &mut Diagnostics) {
                     span.start
                 ),
             )
-            .with_help("save the file as UTF-8 (ekb shows the bad bytes as `?`)"),
+            .with_help(
+                "save the file as UTF-8 (ekb shows the bad bytes as `?`); if it is Latin-1, \
+                 `ekb fix --unsafe-fixes` converts it",
+            ),
         );
     }
 }

@@ -13,5 +13,7 @@ pub mod missing_field;
 pub mod missing_id;
 pub mod mixed_dialect;
 pub mod not_a_knowledge_base;
+pub mod unicode_space;
 pub mod unknown_key;
+pub mod unused_suppression;
 pub mod wrong_arity;

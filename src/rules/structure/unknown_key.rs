@@ -62,11 +62,7 @@ fn key_before_odd_space(span: Span, written: &str) -> Option<Diagnostic> {
     let (at, space) = written.char_indices().find(|&(_, ch)| is_odd_space(ch))?;
     let key = Key::from_name(&written[..at])?;
     let id = parse_id(&written[at + space.len_utf8()..]).filter(|_| key != Key::TourSpecification);
-    let space = match space {
-        '\u{A0}' => "a no-break space (U+00A0)".to_string(),
-        '\u{202F}' => "a narrow no-break space (U+202F)".to_string(),
-        other => format!("a Unicode space (U+{:04X})", other as u32),
-    };
+    let space = super::unicode_space::name(space);
     Some(
         Diagnostic::new(
             &UNKNOWN_KEY,
@@ -89,7 +85,7 @@ fn key_before_odd_space(span: Span, written: &str) -> Option<Diagnostic> {
 }
 
 /// The known key closest to `key`, if one is close enough to be a likely typo.
-fn nearest(key: &str) -> Option<Key> {
+pub(crate) fn nearest(key: &str) -> Option<Key> {
     // Long garbage (a pasted paragraph) is no typo, and comparing it would be slow.
     if key.len() > 64 {
         return None;

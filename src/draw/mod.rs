@@ -1,0 +1,159 @@
+//! The tour on the lab map (SPEC §10): what to draw ([`Scene`]), where ([`frame`],
+//! [`layout`]), and the drawing as SVG ([`svg`]) and PNG ([`png`]).
+//!
+//! Everything is drawn as the chosen version of the robot's reader loads it: a pose its
+//! reader does not read stands at 0, 0, 0°, as the robot would.
+
+pub mod frame;
+pub mod layout;
+pub mod png;
+pub mod svg;
+
+use crate::check::Checked;
+use crate::diagnostic::{Severity, Summary};
+use crate::map::LabMap;
+use crate::model::{Arm, Key, Point, Pose};
+use crate::present::{Gesture, TourPositions};
+use crate::reader::{view, Loaded, Reader};
+use crate::rules::Rule;
+
+/// What a drawing shows: each location where the robot stands, the tour, the findings.
+#[derive(Debug)]
+pub struct Scene<'a> {
+    /// The knowledge base's name, as given.
+    pub file: &'a str,
+    pub reader: Reader,
+    pub map: Option<&'a LabMap>,
+    /// In ascending id order.
+    pub spots: Vec<Spot<'a>>,
+    /// The tour: indexes into `spots`, in visit order (stops at unknown locations left out).
+    pub tour: Vec<usize>,
+    /// Findings that are not about one location (the tour's, the file's), by rule.
+    pub elsewhere: Vec<RuleCount>,
+    pub summary: Summary,
+}
+
+/// One location as the robot holds it.
+#[derive(Debug)]
+pub struct Spot<'a> {
+    pub id: u32,
+    pub description: Option<&'a str>,
+    /// Where the robot stands; 0, 0, 0° when its reader loads no pose.
+    pub pose: Pose,
+    /// Whether the reader loads a pose (else the robot stands at 0, 0, 0°).
+    pub pose_loaded: bool,
+    /// What the robot does with its arm, as its reader loads the target.
+    pub gesture: Gesture,
+    /// The arm the file names, if any.
+    pub arm: Option<Arm>,
+    /// 1-based positions on the tour (empty: no stop visits it).
+    pub stops: Vec<usize>,
+    /// Findings about this location, by rule.
+    pub findings: Vec<RuleCount>,
+}
+
+impl Spot<'_> {
+    /// Whether the tour's first stop is here: its pose is the robot's start and home.
+    pub fn is_start(&self) -> bool {
+        self.stops.first() == Some(&1)
+    }
+
+    /// Whether an error or a warning is about this location.
+    pub fn is_flagged(&self) -> bool {
+        self.findings.iter().any(|f| f.severity != Severity::Info)
+    }
+}
+
+/// How many findings of one rule.
+#[derive(Debug, Clone, Copy)]
+pub struct RuleCount {
+    pub rule: &'static Rule,
+    pub severity: Severity,
+    pub count: usize,
+}
+
+impl<'a> Scene<'a> {
+    /// The scene of `checked`, whose file `loaded` is as its reader loads it, on `map`.
+    pub fn new(
+        checked: &'a Checked<'a>,
+        loaded: &Loaded<'_>,
+        map: Option<&'a LabMap>,
+    ) -> Scene<'a> {
+        let positions = TourPositions::new(&checked.kb);
+        let mut spots: Vec<Spot> = checked
+            .kb
+            .locations()
+            .iter()
+            .map(|location| {
+                let pose = view::numbers(loaded, location.id, Key::RobotLocationPose);
+                let target = view::numbers(loaded, location.id, Key::GestureTarget)
+                    .map_or([0.0; 3], |(numbers, _)| numbers);
+                Spot {
+                    id: location.id,
+                    description: location.description().map(|d| d.value),
+                    pose: pose.map_or(
+                        Pose {
+                            x: 0.0,
+                            y: 0.0,
+                            theta: 0.0,
+                        },
+                        |([x, y, theta], _)| Pose { x, y, theta },
+                    ),
+                    pose_loaded: pose.is_some(),
+                    gesture: Gesture::of(&Point {
+                        x: target[0],
+                        y: target[1],
+                        z: target[2],
+                    }),
+                    arm: location.gesture_arm.map(|arm| arm.value),
+                    stops: positions.of(location.id).to_vec(),
+                    findings: Vec::new(),
+                }
+            })
+            .collect();
+        spots.sort_by_key(|spot| spot.id);
+        let tour = checked
+            .kb
+            .tour_stops()
+            .filter_map(|id| index_of(&spots, id))
+            .collect();
+        let mut elsewhere = Vec::new();
+        for diagnostic in &checked.diagnostics {
+            let index = diagnostic.location_id.and_then(|id| index_of(&spots, id));
+            let counts = match index {
+                Some(index) => &mut spots[index].findings,
+                None => &mut elsewhere,
+            };
+            count(counts, diagnostic.rule, diagnostic.severity());
+        }
+        Scene {
+            file: checked.source.name(),
+            reader: checked.reader,
+            map,
+            spots,
+            tour,
+            elsewhere,
+            summary: checked.summary(),
+        }
+    }
+}
+
+/// Where location `id` is in `spots` (sorted by id).
+fn index_of(spots: &[Spot<'_>], id: u32) -> Option<usize> {
+    spots.binary_search_by_key(&id, |spot| spot.id).ok()
+}
+
+/// Counts one more finding of `rule` in `counts`.
+fn count(counts: &mut Vec<RuleCount>, rule: &'static Rule, severity: Severity) {
+    match counts
+        .iter_mut()
+        .find(|c| std::ptr::eq(c.rule, rule) && c.severity == severity)
+    {
+        Some(found) => found.count += 1,
+        None => counts.push(RuleCount {
+            rule,
+            severity,
+            count: 1,
+        }),
+    }
+}

@@ -1,0 +1,322 @@
+//! JSON-RPC over a byte stream, framed as LSP frames it (`Content-Length: N`, a blank line,
+//! N bytes of JSON), on two threads: one reads, one writes.
+//!
+//! `lsp-server`'s own stdio transport stops at the first malformed message; an editor that
+//! sends one (or a person typing into `ekb lsp`) would lose its server. This reader
+//! answers each malformed message with the JSON-RPC error it deserves (a parse error, an
+//! invalid request, `"id": null` when the id cannot be read) and reads on.
+
+use std::io::{self, BufRead, Read, Write};
+use std::thread;
+
+use crossbeam_channel::{Receiver, Sender};
+use lsp_server::{ErrorCode, Message, RequestId, Response};
+use serde_json::Value;
+
+/// The longest header line read: longer ones are malformed.
+const MAX_HEADER_LINE: u64 = 8 * 1024;
+
+/// The largest message read (a 512 MiB knowledge base, JSON-escaped, fits).
+const MAX_CONTENT_LENGTH: usize = 1 << 30;
+
+/// What the reader passes on.
+#[derive(Debug)]
+pub enum Incoming {
+    Message(Message),
+    /// A message that could not be read, and the error that answers it.
+    Unreadable(Outgoing),
+}
+
+/// What the writer sends.
+#[derive(Debug)]
+pub enum Outgoing {
+    Message(Message),
+    /// An error that answers a message whose id could not be read (`"id": null`).
+    ErrorWithoutId {
+        code: ErrorCode,
+        message: String,
+    },
+}
+
+impl From<Message> for Outgoing {
+    fn from(message: Message) -> Outgoing {
+        Outgoing::Message(message)
+    }
+}
+
+/// The two ends of a connection and the writer's thread (joined to flush what is left).
+#[derive(Debug)]
+pub struct Transport {
+    pub incoming: Receiver<Incoming>,
+    pub outgoing: Sender<Outgoing>,
+    writer: thread::JoinHandle<io::Result<()>>,
+}
+
+impl Transport {
+    /// Reads messages from `input` and writes them to `output`, each on a thread of its own.
+    /// The reader stops at the end of the input or after an `exit` notification.
+    pub fn new(
+        input: impl BufRead + Send + 'static,
+        output: impl Write + Send + 'static,
+    ) -> Transport {
+        let (incoming_sender, incoming) = crossbeam_channel::unbounded();
+        let (outgoing, outgoing_receiver) = crossbeam_channel::unbounded();
+        thread::Builder::new()
+            .name("ekb-lsp-reader".into())
+            .spawn(move || read_messages(input, &incoming_sender))
+            .expect("a thread can be started");
+        let writer = thread::Builder::new()
+            .name("ekb-lsp-writer".into())
+            .spawn(move || write_messages(&outgoing_receiver, output))
+            .expect("a thread can be started");
+        Transport {
+            incoming,
+            outgoing,
+            writer,
+        }
+    }
+
+    /// Standard input and output.
+    pub fn stdio() -> Transport {
+        Transport::new(io::BufReader::new(io::stdin()), io::stdout())
+    }
+
+    /// Waits until everything sent has been written. (The reader is not waited for: it may
+    /// be blocked on an input the client keeps open.)
+    pub fn finish(self) -> io::Result<()> {
+        drop(self.outgoing);
+        self.writer.join().unwrap_or_else(|_| {
+            Err(io::Error::other(
+                "the thread writing to the client panicked",
+            ))
+        })
+    }
+}
+
+fn read_messages(mut input: impl BufRead, incoming: &Sender<Incoming>) {
+    loop {
+        let next = match read_frame(&mut input) {
+            Ok(Frame::End) | Err(_) => return,
+            Ok(Frame::Body(body)) => decode(&body),
+            Ok(Frame::Malformed(reason)) => Incoming::Unreadable(Outgoing::ErrorWithoutId {
+                code: ErrorCode::ParseError,
+                message: reason,
+            }),
+        };
+        let is_exit =
+            matches!(&next, Incoming::Message(Message::Notification(n)) if n.method == "exit");
+        if incoming.send(next).is_err() || is_exit {
+            return;
+        }
+    }
+}
+
+fn write_messages(outgoing: &Receiver<Outgoing>, mut output: impl Write) -> io::Result<()> {
+    for message in outgoing {
+        match message {
+            Outgoing::Message(message) => message.write(&mut output)?,
+            Outgoing::ErrorWithoutId { code, message } => {
+                let error = serde_json::json!({
+                    "jsonrpc": "2.0",
+                    "id": null,
+                    "error": { "code": code as i32, "message": message },
+                });
+                let text = error.to_string();
+                write!(output, "Content-Length: {}\r\n\r\n{text}", text.len())?;
+                output.flush()?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// One frame of the input.
+#[derive(Debug, PartialEq)]
+enum Frame {
+    Body(Vec<u8>),
+    /// A frame whose header makes no sense: why.
+    Malformed(String),
+    End,
+}
+
+/// Reads one frame: header lines up to a blank line, then the body the header announces.
+fn read_frame(input: &mut impl BufRead) -> io::Result<Frame> {
+    let mut length: Option<usize> = None;
+    let mut malformed: Option<String> = None;
+    let mut any_header = false;
+    loop {
+        let mut line = Vec::new();
+        let read = input
+            .by_ref()
+            .take(MAX_HEADER_LINE)
+            .read_until(b'\n', &mut line)?;
+        if read == 0 {
+            return Ok(match any_header {
+                true => Frame::Malformed("the input ended inside a message's header".into()),
+                false => Frame::End,
+            });
+        }
+        let complete = line.ends_with(b"\n");
+        let header = String::from_utf8_lossy(&line);
+        let header = header.trim_end_matches(['\r', '\n']);
+        if header.is_empty() && complete {
+            if any_header {
+                break;
+            }
+            continue; // A stray blank line between messages.
+        }
+        any_header = true;
+        if !complete {
+            malformed.get_or_insert_with(|| {
+                format!("a header line longer than {MAX_HEADER_LINE} bytes")
+            });
+            continue;
+        }
+        match header.split_once(':') {
+            Some((name, value)) if name.trim().eq_ignore_ascii_case("Content-Length") => {
+                match value.trim().parse() {
+                    Ok(n) => length = Some(n),
+                    Err(_) => {
+                        malformed.get_or_insert_with(|| {
+                            format!(
+                                "Content-Length `{}` is not a number of bytes",
+                                excerpt(value.trim())
+                            )
+                        });
+                    }
+                }
+            }
+            Some(_) => {} // Content-Type, or a header of the future.
+            None => {
+                malformed.get_or_insert_with(|| {
+                    format!(
+                        "malformed header `{}`: a message starts with `Content-Length: N` and a blank line",
+                        excerpt(header)
+                    )
+                });
+            }
+        }
+    }
+    let Some(length) = length else {
+        return Ok(Frame::Malformed(malformed.unwrap_or_else(|| {
+            "a message without Content-Length: a message starts with `Content-Length: N` and a blank line".into()
+        })));
+    };
+    if length > MAX_CONTENT_LENGTH {
+        io::copy(&mut input.by_ref().take(length as u64), &mut io::sink())?;
+        return Ok(Frame::Malformed(format!(
+            "a message of {length} bytes, more than the {MAX_CONTENT_LENGTH} ekb reads"
+        )));
+    }
+    let mut body = vec![0; length];
+    if let Err(error) = input.read_exact(&mut body) {
+        return match error.kind() {
+            io::ErrorKind::UnexpectedEof => Ok(Frame::End),
+            _ => Err(error),
+        };
+    }
+    Ok(match malformed {
+        Some(reason) => Frame::Malformed(reason),
+        None => Frame::Body(body),
+    })
+}
+
+/// A message, or the error that answers a body that is not one.
+fn decode(body: &[u8]) -> Incoming {
+    if let Ok(message) = serde_json::from_slice::<Message>(body) {
+        return Incoming::Message(message);
+    }
+    let value = match serde_json::from_slice::<Value>(body) {
+        Ok(value) => value,
+        Err(error) => {
+            return Incoming::Unreadable(Outgoing::ErrorWithoutId {
+                code: ErrorCode::ParseError,
+                message: format!("the message is not JSON: {error}"),
+            })
+        }
+    };
+    let reason = "the message is not a JSON-RPC request, response or notification \
+                  (a request has a numeric or string `id` and a string `method`)"
+        .to_string();
+    let id = value
+        .get("id")
+        .and_then(|id| serde_json::from_value::<RequestId>(id.clone()).ok());
+    Incoming::Unreadable(match id {
+        Some(id) => Outgoing::Message(Message::Response(Response::new_err(
+            id,
+            ErrorCode::InvalidRequest as i32,
+            reason,
+        ))),
+        None => Outgoing::ErrorWithoutId {
+            code: ErrorCode::InvalidRequest,
+            message: reason,
+        },
+    })
+}
+
+/// The start of some text the client sent, for a message.
+fn excerpt(text: &str) -> String {
+    text.chars().take(40).flat_map(char::escape_debug).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn frames(input: &[u8]) -> Vec<Frame> {
+        let mut input = input;
+        let mut frames = Vec::new();
+        loop {
+            match read_frame(&mut input).unwrap() {
+                Frame::End => return frames,
+                frame => frames.push(frame),
+            }
+        }
+    }
+
+    #[test]
+    fn malformed_frames_are_reported_and_reading_goes_on() {
+        let input = b"Content-Length: 2\r\n\r\n{}\
+                      garbage\r\n\r\n\
+                      Content-Length: x\r\n\r\n\
+                      Content-Type: utf-8\nContent-Length: 4\n\n[1]\n\
+                      Content-Length: 9\r\n\r\n{}";
+        let frames = frames(input);
+        assert_eq!(frames[0], Frame::Body(b"{}".to_vec()));
+        assert!(matches!(&frames[1], Frame::Malformed(r) if r.contains("`garbage`")));
+        assert!(matches!(&frames[2], Frame::Malformed(r) if r.contains("`x`")));
+        assert_eq!(frames[3], Frame::Body(b"[1]\n".to_vec()));
+        // A body cut short is the end of the input.
+        assert_eq!(frames.len(), 4);
+    }
+
+    #[test]
+    fn bodies_that_are_no_message_get_the_error_they_deserve() {
+        let answer = |body: &str| match decode(body.as_bytes()) {
+            Incoming::Unreadable(answer) => answer,
+            Incoming::Message(message) => panic!("read {message:?}"),
+        };
+        assert!(matches!(
+            answer("{not json"),
+            Outgoing::ErrorWithoutId {
+                code: ErrorCode::ParseError,
+                ..
+            }
+        ));
+        assert!(matches!(
+            answer(r#"{"jsonrpc":"2.0","method":7}"#),
+            Outgoing::ErrorWithoutId {
+                code: ErrorCode::InvalidRequest,
+                ..
+            }
+        ));
+        match answer(r#"{"jsonrpc":"2.0","id":3,"method":[]}"#) {
+            Outgoing::Message(Message::Response(response)) => {
+                assert_eq!(response.id, RequestId::from(3));
+                let error = response.response_result.unwrap_err();
+                assert_eq!(error.code, ErrorCode::InvalidRequest as i32);
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+}

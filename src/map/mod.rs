@@ -1,0 +1,273 @@
+//! The lab map (SPEC §10): its size, the robot's radius, the obstacles of `obstacles.dat`
+//! and the occupancy image, read from the robot's `mapGenerationConfiguration.ini` (or
+//! from an image and its size), and what stands at a point of it.
+//!
+//! The frame is the robot's: the origin at the map's bottom-left corner, x to the right, y
+//! up, in metres. Images count their rows from the top.
+
+mod files;
+mod occupancy;
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use files::{Located, MapFile};
+pub use occupancy::{Occupancy, Pixel, OCCUPIED_BELOW};
+
+/// The robot's radius when only an image is given (the lab's `robotRadius`).
+pub const DEFAULT_ROBOT_RADIUS: f64 = 0.3;
+
+/// Why a map could not be read: one line, with the file, line and column where it applies.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct MapError(pub String);
+
+impl fmt::Display for MapError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for MapError {}
+
+impl MapError {
+    fn cannot_read(path: &Path, error: &std::io::Error, named_by: Option<&str>) -> MapError {
+        let reason = match error.kind() {
+            std::io::ErrorKind::NotFound => "no such file".to_string(),
+            _ => error.to_string().to_lowercase(),
+        };
+        let named = named_by
+            .map(|at| format!(" (named at {at})"))
+            .unwrap_or_default();
+        MapError(format!(
+            "cannot read map file {}{named}: {reason}",
+            path.display()
+        ))
+    }
+}
+
+/// An obstacle rectangle of `obstacles.dat`, in metres.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Obstacle {
+    pub centre_x: f64,
+    pub centre_y: f64,
+    pub width: f64,
+    pub height: f64,
+    /// `obstacles.dat:3`: where it is written.
+    pub place: String,
+}
+
+impl Obstacle {
+    /// How far (`x`, `y`) is from the rectangle (0 inside it).
+    pub fn distance(&self, x: f64, y: f64) -> f64 {
+        let dx = ((x - self.centre_x).abs() - self.width / 2.0).max(0.0);
+        let dy = ((y - self.centre_y).abs() - self.height / 2.0).max(0.0);
+        dx.hypot(dy)
+    }
+}
+
+/// The map the robot navigates on.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LabMap {
+    /// The file it was read from (the configuration, or the image).
+    pub source: PathBuf,
+    /// Metres.
+    pub width: f64,
+    pub height: f64,
+    /// Metres: a pose closer than this to an obstacle puts the robot in it.
+    pub robot_radius: f64,
+    pub obstacles: Vec<Obstacle>,
+    pub image: Option<Occupancy>,
+}
+
+/// What is within the robot's radius of a pose.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Blocker<'m> {
+    Obstacle(&'m Obstacle),
+    /// An occupied pixel of the image, at its centre (metres).
+    Pixel {
+        x: f64,
+        y: f64,
+    },
+}
+
+impl LabMap {
+    /// Reads the robot's `mapGenerationConfiguration.ini` (`resolution`, `robotRadius`,
+    /// `inputFile`), its input (`mapWidth`, `mapHeight`, `obstacleFile`,
+    /// `environmentMapFile`), the obstacles and the image. Files are named relative to the
+    /// file that names them, or in the `data` folder beside its folder.
+    pub fn from_config(path: &Path) -> Result<LabMap, MapError> {
+        let config = MapFile::read(path, None)?;
+        let resolution_value = config.required("resolution", "0.01")?;
+        let resolution = config.number(resolution_value, "the resolution", false)?;
+        let radius_value = config.required("robotRadius", "0.3")?;
+        let robot_radius = config.number(radius_value, "the robot's radius", true)?;
+        let input_value = config.required("inputFile", "mapGenerationInput.dat")?;
+        let input = MapFile::read(
+            &config.resolve(input_value),
+            Some(config.place(input_value)),
+        )?;
+        let width_value = input.required("mapWidth", "6.80")?;
+        let width = input.number(width_value, "the map's width", false)?;
+        let height_value = input.required("mapHeight", "9.93")?;
+        let height = input.number(height_value, "the map's height", false)?;
+        let obstacles = match input.value("obstacleFile") {
+            Some(name) => {
+                let file = MapFile::read(&input.resolve(name), Some(input.place(name)))?;
+                read_obstacles(&file)?
+            }
+            None => Vec::new(),
+        };
+        let image = match input.value("environmentMapFile") {
+            Some(name) => {
+                let image = Occupancy::read(&input.resolve(name), Some(&input.place(name)))?;
+                check_image_size(&image, resolution, (width, height), &input, name)?;
+                Some(image)
+            }
+            None => None,
+        };
+        Ok(LabMap {
+            source: path.to_path_buf(),
+            width,
+            height,
+            robot_radius,
+            obstacles,
+            image,
+        })
+    }
+
+    /// A map that is only an occupancy image of `width` × `height` metres, for a robot of
+    /// [`DEFAULT_ROBOT_RADIUS`].
+    pub fn from_image(path: &Path, width: f64, height: f64) -> Result<LabMap, MapError> {
+        for (what, size) in [("width", width), ("height", height)] {
+            if !(size.is_finite() && size > 0.0) {
+                return Err(MapError(format!(
+                    "--map-size: the map's {what} must be a positive number of metres, not {size}"
+                )));
+            }
+        }
+        Ok(LabMap {
+            source: path.to_path_buf(),
+            width,
+            height,
+            robot_radius: DEFAULT_ROBOT_RADIUS,
+            obstacles: Vec::new(),
+            image: Some(Occupancy::read(path, None)?),
+        })
+    }
+
+    /// Whether (`x`, `y`) is on the map (its edges included).
+    pub fn contains(&self, x: f64, y: f64) -> bool {
+        (0.0..=self.width).contains(&x) && (0.0..=self.height).contains(&y)
+    }
+
+    /// The nearest obstacle rectangle, else the nearest occupied pixel, within the robot's
+    /// radius of (`x`, `y`).
+    pub fn blocker(&self, x: f64, y: f64) -> Option<Blocker<'_>> {
+        let nearest_obstacle = self
+            .obstacles
+            .iter()
+            .map(|obstacle| (obstacle.distance(x, y), obstacle))
+            .filter(|(distance, _)| *distance <= self.robot_radius)
+            .min_by(|a, b| a.0.total_cmp(&b.0));
+        if let Some((_, obstacle)) = nearest_obstacle {
+            return Some(Blocker::Obstacle(obstacle));
+        }
+        let image = self.image.as_ref()?;
+        let (per_x, per_y) = self.pixels_per_metre()?;
+        let pixel = image.occupied_within(
+            x * per_x,
+            (self.height - y) * per_y,
+            self.robot_radius * per_x.max(per_y),
+        )?;
+        Some(Blocker::Pixel {
+            x: (pixel.column as f64 + 0.5) / per_x,
+            y: self.height - (pixel.row as f64 + 0.5) / per_y,
+        })
+    }
+
+    /// The image's pixels per metre, across and up, if there is an image.
+    pub fn pixels_per_metre(&self) -> Option<(f64, f64)> {
+        let image = self.image.as_ref()?;
+        Some((
+            image.width as f64 / self.width,
+            image.height as f64 / self.height,
+        ))
+    }
+
+    /// The name to show for the map: its file's name.
+    pub fn name(&self) -> String {
+        self.source.file_name().map_or_else(
+            || self.source.display().to_string(),
+            |n| n.to_string_lossy().into_owned(),
+        )
+    }
+}
+
+/// Reads `OBSTACLE cx cy width height` lines (metres: centre, size).
+fn read_obstacles(file: &MapFile) -> Result<Vec<Obstacle>, MapError> {
+    let name = file
+        .path
+        .file_name()
+        .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+    file.lines()
+        .map(|words| {
+            let keyword = words[0];
+            if keyword.text != "OBSTACLE" {
+                return Err(file.error_at(
+                    keyword,
+                    format!("expected `OBSTACLE cx cy width height`, found `{}`", keyword.text),
+                ));
+            }
+            if words.len() != 5 {
+                return Err(file.error_at(
+                    keyword,
+                    format!(
+                        "an obstacle has 4 numbers (centre x, centre y, width, height in metres), this one has {}",
+                        words.len() - 1
+                    ),
+                ));
+            }
+            let number = |word: Located<'_>, what: &str, positive: bool| -> Result<f64, MapError> {
+                if positive {
+                    return file.number(word, what, false);
+                }
+                word.text.parse::<f64>().ok().filter(|n| n.is_finite()).ok_or_else(|| {
+                    file.error_at(word, format!("{what} `{}` is not a number", word.text))
+                })
+            };
+            Ok(Obstacle {
+                centre_x: number(words[1], "the centre's x", false)?,
+                centre_y: number(words[2], "the centre's y", false)?,
+                width: number(words[3], "the width", true)?,
+                height: number(words[4], "the height", true)?,
+                place: format!("{name}:{}", keyword.line),
+            })
+        })
+        .collect()
+}
+
+/// Fails unless the image at `resolution` metres per pixel is the map's size, to a pixel.
+fn check_image_size(
+    image: &Occupancy,
+    resolution: f64,
+    (width, height): (f64, f64),
+    input: &MapFile,
+    named: Located<'_>,
+) -> Result<(), MapError> {
+    let (image_width, image_height) = (
+        image.width as f64 * resolution,
+        image.height as f64 * resolution,
+    );
+    if (image_width - width).abs() <= resolution && (image_height - height).abs() <= resolution {
+        return Ok(());
+    }
+    Err(input.error_at(
+        named,
+        format!(
+            "{} is {} × {} pixels, which at a resolution of {resolution} m is {image_width:.2} × {image_height:.2} m, not the {width} × {height} m of mapWidth and mapHeight",
+            image.path.display(),
+            image.width,
+            image.height,
+        ),
+    ))
+}

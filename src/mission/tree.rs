@@ -1,0 +1,139 @@
+//! The behaviour trees of a mission file: which `BehaviorTree` runs first, which ones it
+//! calls, and what each node element is.
+
+use super::catalogue::{self, NodeModel, EXPLICIT_FORMS};
+use super::xml::Element;
+
+/// A mission: its `<root>` element, well-formed XML.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Mission {
+    pub root: Element,
+}
+
+impl Mission {
+    /// The `<BehaviorTree>` elements, in file order.
+    pub fn trees(&self) -> impl Iterator<Item = &Element> {
+        self.root
+            .children
+            .iter()
+            .filter(|child| child.name == "BehaviorTree")
+    }
+
+    /// The tree with this `ID`.
+    pub fn tree(&self, id: &str) -> Option<&Element> {
+        self.trees().find(|tree| tree.value("ID") == Some(id))
+    }
+
+    /// The ID of the tree that runs: `main_tree_to_execute`, else the only tree's.
+    pub fn main_tree_id(&self) -> Option<&str> {
+        match self.root.value("main_tree_to_execute") {
+            Some(id) => Some(id),
+            None => {
+                let mut trees = self.trees();
+                match (trees.next(), trees.next()) {
+                    (Some(only), None) => only.value("ID"),
+                    _ => None,
+                }
+            }
+        }
+    }
+
+    /// The tree that runs, if there is one.
+    pub fn main_tree(&self) -> Option<&Element> {
+        self.tree(self.main_tree_id()?)
+    }
+
+    /// The trees the main tree runs, itself included, in file order; every tree if there is
+    /// no main tree (nothing can be said to be unreachable then).
+    pub fn reachable(&self) -> Vec<&Element> {
+        let Some(main) = self.main_tree() else {
+            return self.trees().collect();
+        };
+        let mut reached = vec![main];
+        let mut next = 0;
+        while let Some(tree) = reached.get(next) {
+            next += 1;
+            for node in nodes(tree) {
+                let called = (node.name == "SubTree")
+                    .then(|| node.value("ID").and_then(|id| self.tree(id)))
+                    .flatten();
+                if let Some(called) = called {
+                    if !reached.iter().any(|t| std::ptr::eq(*t, called)) {
+                        reached.push(called);
+                    }
+                }
+            }
+        }
+        self.trees()
+            .filter(|tree| reached.iter().any(|t| std::ptr::eq(*t, *tree)))
+            .collect()
+    }
+
+    /// The nodes of the trees the main tree runs.
+    pub fn reachable_nodes(&self) -> impl Iterator<Item = &Element> {
+        self.reachable().into_iter().flat_map(nodes)
+    }
+}
+
+/// The node elements of a `<BehaviorTree>` (not the tree element itself), depth first.
+pub fn nodes(tree: &Element) -> impl Iterator<Item = &Element> {
+    tree.children.iter().flat_map(Element::descendants)
+}
+
+/// The ID a node element names: `<SayText/>` is `SayText`, `<Action ID="SayText"/>` too.
+/// `None` for an explicit form without an `ID`.
+pub fn node_id(element: &Element) -> Option<&str> {
+    if EXPLICIT_FORMS.contains(&element.name.as_str()) {
+        element.value("ID")
+    } else {
+        Some(&element.name)
+    }
+}
+
+/// The model of a node element, if it names a known node.
+pub fn model(element: &Element) -> Option<&'static NodeModel> {
+    node_id(element).and_then(catalogue::lookup)
+}
+
+/// The node's `name` as the robot sees it: the attribute, else the node's ID (what
+/// BehaviorTree.CPP names a node that has none).
+pub fn robot_name(element: &Element) -> Option<&str> {
+    element.value("name").or_else(|| node_id(element))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn mission(text: &str) -> Mission {
+        Mission {
+            root: super::super::xml::parse(text).unwrap(),
+        }
+    }
+
+    #[test]
+    fn trees_reached_through_subtrees() {
+        let m = mission(
+            r#"<root main_tree_to_execute="A">
+                 <BehaviorTree ID="C"><AlwaysSuccess/></BehaviorTree>
+                 <BehaviorTree ID="A"><Sequence><SubTree ID="B"/></Sequence></BehaviorTree>
+                 <BehaviorTree ID="B"><SubTree ID="A"/></BehaviorTree>
+               </root>"#,
+        );
+        let ids: Vec<&str> = m.reachable().iter().filter_map(|t| t.value("ID")).collect();
+        assert_eq!(ids, ["A", "B"]);
+        assert_eq!(m.reachable_nodes().count(), 3);
+    }
+
+    #[test]
+    fn the_only_tree_is_the_main_tree() {
+        let m = mission(
+            r#"<root><BehaviorTree ID="X"><Action ID="SayText" name="1"/></BehaviorTree></root>"#,
+        );
+        assert_eq!(m.main_tree_id(), Some("X"));
+        let say = nodes(m.main_tree().unwrap()).next().unwrap();
+        assert_eq!(node_id(say), Some("SayText"));
+        assert_eq!(robot_name(say), Some("1"));
+        assert_eq!(model(say).map(|m| m.id), Some("SayText"));
+    }
+}

@@ -1,0 +1,622 @@
+//! `ekb mission walk`: a dry run of the mission on the happy path — every visitor present
+//! and answering yes, every action succeeding — as the robot's nodes would run it, with
+//! the steps a visitor would see: what it says, where it goes, where it points.
+//!
+//! Each node does what the robot's implementation does with the knowledge bases: the
+//! exhibits are the tour's stops in order, their messages in the mission's language; a
+//! `SayText` whose phrase the robot does not hold says what it last looked up; a target
+//! whose coordinates sum to 0 is not pointed at. The run is bounded: a mission still
+//! running after [`MAX_TICKS`] nodes never ends.
+
+use serde::Serialize;
+
+use super::culture::{Held, PhraseBook};
+use super::tree::{self, Mission};
+use super::xml::Element;
+use crate::model::{Arm, KnowledgeBase, Phase};
+use crate::source::LineIndex;
+use crate::syntax::Span;
+
+/// The most nodes ticked before the walk calls the mission endless.
+pub const MAX_TICKS: usize = 100_000;
+
+/// Deeper than this (nodes within nodes, through `SubTree` calls), a tree calls itself.
+const MAX_DEPTH: usize = 1_000;
+
+/// What the robot holds for the walk: the tour, the phrases, the behaviour controller's
+/// configuration.
+#[derive(Debug, Clone, Copy)]
+pub struct World<'a> {
+    pub kb: &'a KnowledgeBase<'a>,
+    pub phrases: PhraseBook<'a>,
+    /// `asrEnabled`: visitors answer by voice (else on the tablet).
+    pub asr_enabled: bool,
+}
+
+/// A stop of the tour, as a step names it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Place {
+    pub location: u32,
+    pub description: Option<String>,
+    pub x: f64,
+    pub y: f64,
+    pub theta: f64,
+}
+
+/// One thing the robot does that a visitor would notice.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "action", rename_all = "kebab-case")]
+pub enum Step {
+    /// `IsVisitorDiscovered`.
+    WaitForVisitor,
+    /// `SetRobotPose`: the first stop's pose is where it starts.
+    SetPose { place: Option<Place> },
+    /// `SayText` or `DescribeExhibitSpeech`.
+    Say {
+        /// What it says; `None` when what the robot holds is undefined.
+        text: Option<String>,
+        /// Where the words come from: a culture key, or a location's message.
+        source: String,
+        /// What is wrong with it, if anything.
+        problem: Option<String>,
+    },
+    /// `PerformIconicGesture`.
+    Gesture { gesture: String },
+    /// `PressYesNoDialogue`.
+    AskOnTablet,
+    /// `GetVisitorResponse`.
+    Listen,
+    /// `Navigate`.
+    GoTo { place: Option<Place>, home: bool },
+    /// `PerformDeicticGesture`.
+    Point {
+        location: u32,
+        x: f64,
+        y: f64,
+        z: f64,
+        arm: Option<&'static str>,
+    },
+}
+
+/// How the walk ended.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "status", rename_all = "kebab-case")]
+pub enum Outcome {
+    /// The main tree succeeded: the tour is over.
+    Completed,
+    /// The main tree failed.
+    Failed,
+    /// Still running after [`MAX_TICKS`] nodes.
+    NeverEnds { node: String, line: u32 },
+    /// A node the walk cannot run (or the robot cannot build).
+    Stopped {
+        node: String,
+        line: u32,
+        reason: String,
+    },
+}
+
+/// The walk: the steps in order, and how it ended.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Walk {
+    /// The mission's language, as the robot spells it.
+    pub language: Option<&'static str>,
+    pub steps: Vec<Step>,
+    pub outcome: Outcome,
+    /// Nodes ticked.
+    pub ticks: usize,
+}
+
+/// Walks the main tree of `mission` (which has one: see `mission-unknown-tree`).
+pub fn walk(mission: &Mission, text: &str, world: &World<'_>) -> Walk {
+    let mut walker = Walker {
+        mission,
+        world,
+        board: Board::default(),
+        steps: Vec::new(),
+        ticks: 0,
+        last_phrase: None,
+    };
+    let outcome = match mission.main_tree() {
+        None => Outcome::Stopped {
+            node: "root".to_string(),
+            line: 1,
+            reason: "the mission has no main tree to run".to_string(),
+        },
+        Some(main) => match walker.tree(main, 0) {
+            Ok(Status::Success) => Outcome::Completed,
+            Ok(Status::Failure) => Outcome::Failed,
+            Err(halt) => {
+                let line = LineIndex::new(text).position(text, halt.at.start).line;
+                match halt.reason {
+                    None => Outcome::NeverEnds {
+                        node: halt.node,
+                        line,
+                    },
+                    Some(reason) => Outcome::Stopped {
+                        node: halt.node,
+                        line,
+                        reason,
+                    },
+                }
+            }
+        },
+    };
+    Walk {
+        language: world.phrases.language.map(super::robot_word),
+        steps: walker.steps,
+        outcome,
+        ticks: walker.ticks,
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Status {
+    Success,
+    Failure,
+}
+
+impl Status {
+    fn of(success: bool) -> Status {
+        if success {
+            Status::Success
+        } else {
+            Status::Failure
+        }
+    }
+}
+
+/// Why the walk stops before the tree's end: the node, and a reason (`None`: endless).
+struct Halt {
+    node: String,
+    at: Span,
+    reason: Option<String>,
+}
+
+/// The blackboard entries the robot's nodes share.
+#[derive(Debug, Default)]
+struct Board {
+    /// Exhibits visited (`visits`); `None` until the list is retrieved.
+    visits: Option<usize>,
+    /// Where `Navigate` goes: a location, and whether it is home.
+    destination: Option<(u32, bool)>,
+    /// The exhibit selected, for its messages and gesture target.
+    exhibit: Option<u32>,
+    visitor_response: Option<String>,
+}
+
+struct Walker<'w, 'a> {
+    mission: &'w Mission,
+    world: &'w World<'a>,
+    board: Board,
+    steps: Vec<Step>,
+    ticks: usize,
+    /// What the robot last looked up in the culture knowledge base.
+    last_phrase: Option<String>,
+}
+
+impl Walker<'_, '_> {
+    fn tree(&mut self, tree: &Element, depth: usize) -> Result<Status, Halt> {
+        match tree.children.first() {
+            Some(root) => self.tick(root, depth + 1),
+            None => Err(halt(tree, "the tree has no node")),
+        }
+    }
+
+    fn tick(&mut self, node: &Element, depth: usize) -> Result<Status, Halt> {
+        self.ticks += 1;
+        if self.ticks > MAX_TICKS {
+            return Err(Halt {
+                node: node_name(node),
+                at: node.name_span,
+                reason: None,
+            });
+        }
+        if depth > MAX_DEPTH {
+            return Err(halt(
+                node,
+                "the trees call one another without end: BehaviorTree.CPP cannot build them",
+            ));
+        }
+        let Some(model) = tree::model(node) else {
+            return Err(halt(node, "the robot does not know this node"));
+        };
+        if model.robot {
+            return Ok(self.robot_node(node, model.id));
+        }
+        let child = |i: usize| node.children.get(i);
+        let depth = depth + 1;
+        match model.id {
+            "Sequence" | "SequenceWithMemory" | "ReactiveSequence" => {
+                for child in &node.children {
+                    if self.tick(child, depth)? == Status::Failure {
+                        return Ok(Status::Failure);
+                    }
+                }
+                Ok(Status::Success)
+            }
+            "Fallback" | "ReactiveFallback" => {
+                for child in &node.children {
+                    if self.tick(child, depth)? == Status::Success {
+                        return Ok(Status::Success);
+                    }
+                }
+                Ok(Status::Failure)
+            }
+            "IfThenElse" | "WhileDoElse" => {
+                let Some(condition) = child(0) else {
+                    return Err(halt(node, "it has no condition"));
+                };
+                let branch = match self.tick(condition, depth)? {
+                    Status::Success => child(1),
+                    Status::Failure => child(2),
+                };
+                match branch {
+                    Some(branch) => self.tick(branch, depth),
+                    None => Ok(Status::Failure),
+                }
+            }
+            "Inverter" | "ForceSuccess" | "ForceFailure" | "Delay" | "Timeout" => {
+                let status = self.only_child(node, depth)?;
+                Ok(match model.id {
+                    "Inverter" => Status::of(status == Status::Failure),
+                    "ForceSuccess" => Status::Success,
+                    "ForceFailure" => Status::Failure,
+                    _ => status,
+                })
+            }
+            "KeepRunningUntilFailure" => loop {
+                if self.only_child(node, depth)? == Status::Failure {
+                    return Ok(Status::Failure);
+                }
+            },
+            "RetryUntilSuccessful" | "Repeat" => {
+                let port = if model.id == "Repeat" {
+                    "num_cycles"
+                } else {
+                    "num_attempts"
+                };
+                let times = node
+                    .value(port)
+                    .map_or(Ok(1), |v| v.trim().parse::<i64>())
+                    .map_err(|_| halt(node, &format!("its {port} is not a number")))?;
+                let until = if model.id == "Repeat" {
+                    Status::Failure
+                } else {
+                    Status::Success
+                };
+                let mut run = 0;
+                while times < 0 || run < times {
+                    run += 1;
+                    if self.only_child(node, depth)? == until {
+                        return Ok(until);
+                    }
+                }
+                Ok(Status::of(until == Status::Failure))
+            }
+            "AlwaysSuccess" | "Sleep" | "SetBlackboard" | "UnsetBlackboard" => Ok(Status::Success),
+            "AlwaysFailure" => Ok(Status::Failure),
+            "SubTree" => match node.value("ID").and_then(|id| self.mission.tree(id)) {
+                Some(called) => self.tree(called, depth),
+                None => Err(halt(node, "it calls no tree of the file")),
+            },
+            other => Err(halt(node, &format!("the walk does not simulate `{other}`"))),
+        }
+    }
+
+    fn only_child(&mut self, node: &Element, depth: usize) -> Result<Status, Halt> {
+        match node.children.first() {
+            Some(child) => self.tick(child, depth),
+            None => Err(halt(node, "it has no child")),
+        }
+    }
+
+    /// A robot node, on the happy path.
+    fn robot_node(&mut self, node: &Element, id: &str) -> Status {
+        let name = tree::robot_name(node).unwrap_or(id);
+        let stops: Vec<u32> = self.world.kb.tour_stops().collect();
+        match id {
+            "IsVisitorDiscovered" => {
+                self.steps.push(Step::WaitForVisitor);
+                Status::Success
+            }
+            "SetRobotPose" => {
+                self.steps.push(Step::SetPose {
+                    place: stops.first().and_then(|&id| self.place(id)),
+                });
+                Status::Success
+            }
+            "RetrieveListOfExhibits" => {
+                self.board.visits = Some(0);
+                Status::of(!stops.is_empty())
+            }
+            "RetrieveInitialLocation" => {
+                self.board.destination = stops.first().map(|&id| (id, true));
+                Status::Success
+            }
+            "IsListWithExhibit" => {
+                Status::of(self.board.visits.is_some_and(|visits| visits < stops.len()))
+            }
+            "SelectExhibit" => {
+                let Some(visits) = self.board.visits else {
+                    return Status::Failure;
+                };
+                if self.world.phrases.language.is_none() {
+                    // "Unknown language set": nothing is selected, nothing counted.
+                    return Status::Failure;
+                }
+                let exhibit = stops.get(visits).copied();
+                self.board.exhibit = exhibit;
+                self.board.destination = exhibit.map(|id| (id, false));
+                self.board.visits = Some(visits + 1);
+                Status::Success
+            }
+            "Navigate" => match self.board.destination {
+                Some((location, home)) => {
+                    self.steps.push(Step::GoTo {
+                        place: self.place(location),
+                        home,
+                    });
+                    Status::Success
+                }
+                None => Status::Failure,
+            },
+            "DescribeExhibitSpeech" => self.describe_exhibit(name),
+            "PerformDeicticGesture" => self.point(),
+            "SayText" => {
+                self.say_phrase(name);
+                Status::Success
+            }
+            "PerformIconicGesture" => match name {
+                "welcome" | "goodbye" => {
+                    self.steps.push(Step::Gesture {
+                        gesture: name.to_string(),
+                    });
+                    Status::Success
+                }
+                _ => Status::Failure,
+            },
+            "PressYesNoDialogue" => {
+                self.steps.push(Step::AskOnTablet);
+                Status::Success
+            }
+            "GetVisitorResponse" => {
+                self.steps.push(Step::Listen);
+                self.board.visitor_response = Some("yes".to_string());
+                Status::Success
+            }
+            "HasVisitorResponded" => Status::of(
+                self.board
+                    .visitor_response
+                    .as_deref()
+                    .is_some_and(|r| !r.is_empty()),
+            ),
+            "IsVisitorResponseYes" => {
+                Status::of(self.board.visitor_response.as_deref() == Some("yes"))
+            }
+            "IsASREnabled" => Status::of(self.world.asr_enabled),
+            "SetOvertAttentionMode" => Status::of(
+                ["scanning", "social", "seeking", "location", "disabled"].contains(&name),
+            ),
+            "SetAnimateBehavior" => Status::of(["enabled", "disabled"].contains(&name)),
+            "SetSpeechEvent" => Status::of(["true", "false"].contains(&name)),
+            // StartOfTree, HandleFallBack, IsMutualGazeDiscovered, IsVisitorPresent.
+            _ => Status::Success,
+        }
+    }
+
+    fn place(&self, id: u32) -> Option<Place> {
+        let location = self.world.kb.location(id)?;
+        let pose = location.pose.map(|pose| pose.value);
+        Some(Place {
+            location: id,
+            description: location.description().map(|d| d.value.to_string()),
+            x: pose.map_or(0.0, |p| p.x),
+            y: pose.map_or(0.0, |p| p.y),
+            theta: pose.map_or(0.0, |p| p.theta),
+        })
+    }
+
+    /// `SayText name="N"`: the phrase in the mission's language.
+    fn say_phrase(&mut self, number: &str) {
+        let Some(language) = self.world.phrases.language else {
+            self.steps.push(Step::Say {
+                text: self.last_phrase.clone(),
+                source: format!("utilityPhrase?{number}"),
+                problem: Some("the mission has no language the robot accepts".to_string()),
+            });
+            return;
+        };
+        let key = super::phrase_key(number, language);
+        let step = match (
+            self.world.phrases.phrase(&key),
+            self.world.phrases.held(&key),
+        ) {
+            (Ok(text), _) => {
+                self.last_phrase = Some(text.clone());
+                Step::Say {
+                    text: Some(text),
+                    source: key,
+                    problem: None,
+                }
+            }
+            // Not found, the robot's lookup leaves what it found last.
+            (Err(problem), Some(Held::NotDeclared)) => Step::Say {
+                text: self.last_phrase.clone(),
+                problem: Some(format!(
+                    "{key} {problem}: the robot says the phrase it looked up last"
+                )),
+                source: key,
+            },
+            (Err(problem), _) => Step::Say {
+                text: None,
+                problem: Some(format!(
+                    "{key} {problem}: the robot says an undefined value"
+                )),
+                source: key,
+            },
+        };
+        self.steps.push(step);
+    }
+
+    /// `DescribeExhibitSpeech name="1"` (before the gesture) or `"2"` (after).
+    fn describe_exhibit(&mut self, which: &str) -> Status {
+        let phase = match which {
+            "1" => Phase::Pre,
+            "2" => Phase::Post,
+            _ => return Status::Failure,
+        };
+        let (Some(id), Some(language)) = (self.board.exhibit, self.world.phrases.language) else {
+            return Status::Failure;
+        };
+        let message = self
+            .world
+            .kb
+            .location(id)
+            .and_then(|location| location.message(phase, language));
+        let problem = match message {
+            None => Some("missing: the robot says nothing".to_string()),
+            Some(m) if crate::model::is_placeholder(m.value) => {
+                Some("a placeholder, said aloud".to_string())
+            }
+            Some(_) => None,
+        };
+        self.steps.push(Step::Say {
+            text: message.map(|m| m.value.to_string()),
+            source: format!(
+                "location {id}'s {} message {} the gesture",
+                language.name(),
+                phase.name()
+            ),
+            problem,
+        });
+        Status::Success
+    }
+
+    /// `PerformDeicticGesture`: at the exhibit's target, unless it sums to 0.
+    fn point(&mut self) -> Status {
+        let Some(location) = self.board.exhibit.and_then(|id| self.world.kb.location(id)) else {
+            return Status::Failure;
+        };
+        let Some(target) = location.gesture_target.map(|t| t.value) else {
+            return Status::Success;
+        };
+        if target.robot_sees_no_gesture() {
+            return Status::Success;
+        }
+        self.steps.push(Step::Point {
+            location: location.id,
+            x: target.x,
+            y: target.y,
+            z: target.z,
+            arm: location.gesture_arm.map(|arm| Arm::name(arm.value)),
+        });
+        Status::Success
+    }
+}
+
+fn node_name(node: &Element) -> String {
+    tree::node_id(node).unwrap_or(&node.name).to_string()
+}
+
+fn halt(node: &Element, reason: &str) -> Halt {
+    Halt {
+        node: node_name(node),
+        at: node.name_span,
+        reason: Some(reason.to_string()),
+    }
+}
+
+/// The walk as numbered lines, and its end.
+pub fn render_text(walk: &Walk) -> String {
+    let mut out = String::new();
+    for (number, step) in walk.steps.iter().enumerate() {
+        out.push_str(&format!("{}. {}\n", number + 1, describe(step)));
+    }
+    let end = match &walk.outcome {
+        Outcome::Completed => {
+            "end: the tour is over; the robot starts again for the next visitor".to_string()
+        }
+        Outcome::Failed => "end: the mission fails: its main tree returns FAILURE".to_string(),
+        Outcome::NeverEnds { node, line } => format!(
+            "end: the mission never ends: still running after {} nodes, at `{node}` (line \
+             {line})",
+            walk.ticks - 1
+        ),
+        Outcome::Stopped { node, line, reason } => {
+            format!("end: the walk stops at `{node}` (line {line}): {reason}")
+        }
+    };
+    out.push_str(&end);
+    out.push('\n');
+    out
+}
+
+fn describe(step: &Step) -> String {
+    match step {
+        Step::WaitForVisitor => "wait for a visitor".to_string(),
+        Step::SetPose { place } => format!(
+            "set its starting pose to {} (the tour's first stop)",
+            place
+                .as_ref()
+                .map_or("an unknown location".into(), describe_place)
+        ),
+        Step::Say {
+            text,
+            source,
+            problem,
+        } => {
+            let said = match text {
+                Some(text) => format!("say \"{text}\""),
+                None => format!("say nothing known ({source})"),
+            };
+            match problem {
+                Some(problem) => format!("{said} — {problem}"),
+                None => said,
+            }
+        }
+        Step::Gesture { gesture } => format!("make the {gesture} gesture"),
+        Step::AskOnTablet => "ask on the tablet: Yes or No".to_string(),
+        Step::Listen => "listen to the visitor, who answers yes".to_string(),
+        Step::GoTo { place, home } => format!(
+            "go {}to {}",
+            if *home { "home " } else { "" },
+            place
+                .as_ref()
+                .map_or("an unknown location".into(), describe_place)
+        ),
+        Step::Point { x, y, z, arm, .. } => format!(
+            "point {}at ({}, {}, {})",
+            arm.map(|arm| format!("with the {arm} arm "))
+                .unwrap_or_default(),
+            coordinate(*x),
+            coordinate(*y),
+            coordinate(*z)
+        ),
+    }
+}
+
+/// `location 4 "Roomba" at (5.0, 3.9), facing 110°`.
+fn describe_place(place: &Place) -> String {
+    let description = place
+        .description
+        .as_ref()
+        .map(|d| format!(" \"{d}\""))
+        .unwrap_or_default();
+    format!(
+        "location {}{description} at ({}, {}), facing {}°",
+        place.location,
+        coordinate(place.x),
+        coordinate(place.y),
+        place.theta
+    )
+}
+
+/// A coordinate with at least one decimal: `5.0`, `3.9`.
+fn coordinate(value: f64) -> String {
+    if value.fract() == 0.0 && value.abs() < 1e15 {
+        format!("{value:.1}")
+    } else {
+        value.to_string()
+    }
+}

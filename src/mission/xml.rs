@@ -1,0 +1,208 @@
+//! The mission's XML as a tree of elements with their places in the file, read with
+//! `roxmltree`: element names, attributes and their values, each with its byte span, so
+//! that a finding points at the line and column of what it is about.
+
+use crate::syntax::Span;
+
+/// Elements nested deeper than this are refused: a behaviour tree is a few levels deep,
+/// and everything that walks the tree recurses on it.
+pub const MAX_DEPTH: usize = 200;
+
+/// More nodes than this (elements, text, comments) are refused, so that memory stays
+/// bounded on any input.
+const MAX_NODES: u32 = 4_000_000;
+
+/// An attribute as written, its value unescaped.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Attribute {
+    pub name: String,
+    pub value: String,
+    pub name_span: Span,
+    pub value_span: Span,
+}
+
+/// An element and what it holds.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Element {
+    /// The tag name (without a namespace prefix).
+    pub name: String,
+    /// Where the tag name is written in the start tag.
+    pub name_span: Span,
+    pub attributes: Vec<Attribute>,
+    /// The child elements (text and comments are left out).
+    pub children: Vec<Element>,
+}
+
+impl Element {
+    pub fn attribute(&self, name: &str) -> Option<&Attribute> {
+        self.attributes.iter().find(|a| a.name == name)
+    }
+
+    pub fn value(&self, name: &str) -> Option<&str> {
+        self.attribute(name).map(|a| a.value.as_str())
+    }
+
+    /// The elements of this one and below, depth first, in the order written.
+    pub fn descendants(&self) -> impl Iterator<Item = &Element> {
+        let mut stack = vec![self];
+        std::iter::from_fn(move || {
+            let element = stack.pop()?;
+            stack.extend(element.children.iter().rev());
+            Some(element)
+        })
+    }
+}
+
+/// Why a text is no XML document that ekb can read: what is wrong, and where.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct XmlError {
+    pub message: String,
+    pub span: Span,
+}
+
+/// Parses `text` (a byte-order mark is allowed) and gives its root element.
+pub fn parse(text: &str) -> Result<Element, XmlError> {
+    let options = roxmltree::ParsingOptions {
+        // tinyxml2, which BehaviorTree.CPP uses, skips a DOCTYPE; entities stay bounded.
+        allow_dtd: true,
+        nodes_limit: MAX_NODES,
+        ..roxmltree::ParsingOptions::default()
+    };
+    let document = roxmltree::Document::parse_with_options(text, options).map_err(|error| {
+        let position = error.pos();
+        XmlError {
+            message: describe(&error),
+            span: Span::empty_at(offset_of(text, position.row, position.col)),
+        }
+    })?;
+    let root = document.root_element();
+    if let Some(node) = first_too_deep(root) {
+        return Err(XmlError {
+            message: format!(
+                "elements are nested more than {MAX_DEPTH} deep: no behaviour tree is, and \
+                 ekb does not read further"
+            ),
+            span: name_span(node),
+        });
+    }
+    Ok(convert(root))
+}
+
+/// The first element nested deeper than [`MAX_DEPTH`], found in one pass: the stack
+/// holds the current element's ancestors.
+fn first_too_deep<'a, 'i>(root: roxmltree::Node<'a, 'i>) -> Option<roxmltree::Node<'a, 'i>> {
+    let mut ancestors: Vec<roxmltree::NodeId> = Vec::new();
+    for node in root.descendants().filter(roxmltree::Node::is_element) {
+        let parent = node.parent_element().map(|p| p.id());
+        while !ancestors.is_empty() && ancestors.last().copied() != parent {
+            ancestors.pop();
+        }
+        ancestors.push(node.id());
+        if ancestors.len() > MAX_DEPTH + 1 {
+            return Some(node);
+        }
+    }
+    None
+}
+
+/// The element `node` and all below it, in our own terms. The depth is bounded above.
+fn convert(node: roxmltree::Node<'_, '_>) -> Element {
+    Element {
+        name: node.tag_name().name().to_string(),
+        name_span: name_span(node),
+        attributes: node
+            .attributes()
+            .map(|attribute| Attribute {
+                name: attribute.name().to_string(),
+                value: attribute.value().to_string(),
+                name_span: Span::new(attribute.range_qname().start, attribute.range_qname().end),
+                value_span: Span::new(attribute.range_value().start, attribute.range_value().end),
+            })
+            .collect(),
+        children: node
+            .children()
+            .filter(roxmltree::Node::is_element)
+            .map(convert)
+            .collect(),
+    }
+}
+
+/// The span of an element's tag name as written (a prefix included): just after its `<`.
+fn name_span(node: roxmltree::Node<'_, '_>) -> Span {
+    let start = node.range().start + 1;
+    let rest = node.document().input_text().get(start..).unwrap_or("");
+    let length = rest
+        .find(|c: char| c.is_whitespace() || c == '>' || c == '/')
+        .unwrap_or(rest.len());
+    Span::new(start, start + length)
+}
+
+/// roxmltree's message, without the position it appends (the finding has its own).
+fn describe(error: &roxmltree::Error) -> String {
+    let text = error.to_string();
+    let position = format!(" at {}", error.pos());
+    text.strip_suffix(&position).unwrap_or(&text).to_string()
+}
+
+/// The byte offset of a 1-based row and column (in characters), clamped to the text.
+fn offset_of(text: &str, row: u32, column: u32) -> usize {
+    let line_start = text
+        .match_indices('\n')
+        .nth((row as usize).saturating_sub(2))
+        .map_or(0, |(at, _)| at + 1);
+    let line_start = if row <= 1 { 0 } else { line_start };
+    text[line_start..]
+        .char_indices()
+        .nth((column as usize).saturating_sub(1))
+        .map_or(text.len(), |(at, _)| line_start + at)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spans_point_at_names_and_values() {
+        let text =
+            "<root a=\"1\">\n  <Sequence>\n    <SayText name=\"4\"/>\n  </Sequence>\n</root>";
+        let root = parse(text).unwrap();
+        assert_eq!(root.name_span.text(text), "root");
+        let say = &root.children[0].children[0];
+        assert_eq!(say.name_span.text(text), "SayText");
+        let name = say.attribute("name").unwrap();
+        assert_eq!(name.name_span.text(text), "name");
+        assert_eq!(name.value_span.text(text), "4");
+        let names: Vec<&str> = root.descendants().map(|e| e.name.as_str()).collect();
+        assert_eq!(names, ["root", "Sequence", "SayText"]);
+    }
+
+    #[test]
+    fn errors_have_a_place() {
+        let text = "<root>\n  <Sequence>\n  </Sequenc>\n</root>";
+        let error = parse(text).unwrap_err();
+        assert_eq!(
+            &text[..error.span.start as usize],
+            "<root>\n  <Sequence>\n  "
+        );
+        assert!(error.message.contains("Sequence"), "{}", error.message);
+        assert!(parse("").is_err());
+        assert!(parse("\u{feff}<root/>").is_ok());
+    }
+
+    #[test]
+    fn deep_nesting_is_refused_not_recursed() {
+        let depth = 100_000;
+        let text = format!("{}{}", "<a>".repeat(depth), "</a>".repeat(depth));
+        let error = parse(&text).unwrap_err();
+        assert!(error.message.contains("nested"), "{}", error.message);
+    }
+
+    #[test]
+    fn offsets_of_rows_and_columns() {
+        let text = "ab\nçd\nef";
+        assert_eq!(offset_of(text, 1, 1), 0);
+        assert_eq!(offset_of(text, 2, 2), 5);
+        assert_eq!(offset_of(text, 3, 2), 8);
+        assert_eq!(offset_of(text, 9, 9), text.len());
+    }
+}

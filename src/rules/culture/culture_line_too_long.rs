@@ -1,0 +1,63 @@
+use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostic;
+use crate::mission::culture::LINE_BUFFER;
+use crate::reader::chunks;
+use crate::rules::declare_rule;
+use crate::syntax::Span;
+
+declare_rule! {
+    /// ## What it does
+    /// Flags a line of the culture knowledge base or its types file of 200 bytes or more,
+    /// newline included.
+    ///
+    /// ## Why it matters
+    /// The robot reads both files with a 200-byte line buffer, as it reads the environment
+    /// knowledge base (SPEC §2): it cuts the line after 199 bytes, keeps the first part as
+    /// the value, and reads the rest as a line of its own. A long phrase is said cut off.
+    ///
+    /// ## Example
+    /// A `utilityPhraseEnglish4` whose welcome runs past the 199th byte of its line.
+    pub static CULTURE_LINE_TOO_LONG = {
+        name: "culture-line-too-long",
+        category: Culture,
+        severity: Error,
+        fixable: false,
+        summary: "a culture line of 200 bytes or more, which the robot cuts in two",
+    };
+}
+
+pub fn check(text: &str, out: &mut Diagnostics) {
+    let mut pieces = chunks(text.as_bytes(), LINE_BUFFER).peekable();
+    while let Some((start, piece)) = pieces.next() {
+        if piece.ends_with(b"\n") || pieces.peek().is_none() {
+            continue;
+        }
+        let cut = start + piece.len();
+        let line_end = text[cut..].find('\n').map_or(text.len(), |at| cut + at);
+        let rest = text[cut..line_end].trim_end_matches('\r');
+        // Point at what is cut off, or at the last character kept if only the newline is.
+        let span = match rest.is_empty() {
+            false => Span::new(cut, cut + rest.len()),
+            true => {
+                let last = text[..cut].chars().next_back().map_or(0, char::len_utf8);
+                Span::new(cut - last, cut)
+            }
+        };
+        let key = text[start..cut].split_whitespace().next().unwrap_or("");
+        out.push(
+            Diagnostic::new(
+                &CULTURE_LINE_TOO_LONG,
+                span,
+                format!(
+                    "the line of `{}` is {LINE_BUFFER} bytes or more: the robot cuts it after \
+                     {} bytes, reads the rest ({} bytes) as a line of its own, and a PHRASE \
+                     loses its last character",
+                    crate::rules::excerpt(key),
+                    LINE_BUFFER - 1,
+                    line_end + 1 - cut.min(line_end + 1),
+                ),
+            )
+            .with_help("shorten the value to fit in 199 bytes with its key and newline"),
+        );
+    }
+}

@@ -1,0 +1,62 @@
+use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostic;
+use crate::mission::culture::{is_integer, CultureKnowledgeBase, ValueType, ValueTypes};
+use crate::rules::declare_rule;
+
+declare_rule! {
+    /// ## What it does
+    /// Flags a value that does not read as its key's type: a `NUMBER` that is not an
+    /// integer, a `WORD` of several words (or none), and a value for a key typed
+    /// `UNDEFINED`.
+    ///
+    /// ## Why it matters
+    /// The robot reads a `NUMBER` with `%d` (`2.5` loads as 2, `two` not at all) and a
+    /// `WORD` with `%s` (`FACE AND OBJECT` loads as `FACE`), and ignores the value of an
+    /// `UNDEFINED` key: the robot behaves on something other than what the file says.
+    ///
+    /// ## Example
+    /// ```text
+    /// pauseDuration                             2.5
+    /// focusofAttentionTargetExplanationTo       FACE AND OBJECT
+    /// ```
+    pub static CULTURE_TYPE_MISMATCH = {
+        name: "culture-type-mismatch",
+        category: Culture,
+        severity: Error,
+        fixable: false,
+        summary: "a `NUMBER` that is not an integer, a `WORD` of several words, a value for an `UNDEFINED` key",
+    };
+}
+
+pub fn check(culture: &CultureKnowledgeBase<'_>, types: &ValueTypes<'_>, out: &mut Diagnostics) {
+    for entry in culture.entries.iter().filter(|e| !e.continuation) {
+        let Some(value_type) = types.type_of(entry.key) else {
+            continue;
+        };
+        let key = entry.key;
+        let (span, message, help) = match (value_type, entry.first_word()) {
+            (ValueType::Number, Some((word, span))) if !is_integer(word) => (
+                span,
+                format!("`{key}` is a NUMBER, and `{word}` is not an integer: the robot reads only its leading digits, if any"),
+                "write a whole number, such as `2`".to_string(),
+            ),
+            (ValueType::Number | ValueType::Word, None) => (
+                entry.key_span,
+                format!("`{key}` has no value: the robot keeps the value of the line before"),
+                format!("give `{key}` a value"),
+            ),
+            (ValueType::Word, Some((word, _))) if entry.words.len() > 1 => (
+                entry.rest_span,
+                format!("`{key}` is a WORD, and this is {} words: the robot reads only `{word}`", entry.words.len()),
+                "join the words (`FACE_AND_OBJECT`), or declare the key PHRASE in the types file".to_string(),
+            ),
+            (ValueType::Undefined, Some(_)) => (
+                entry.rest_span,
+                format!("`{key}` is typed UNDEFINED: the robot ignores this value"),
+                format!("declare `{key}` with its type (NUMBER, WORD or PHRASE) in the types file"),
+            ),
+            _ => continue,
+        };
+        out.push(Diagnostic::new(&CULTURE_TYPE_MISMATCH, span, message).with_help(help));
+    }
+}

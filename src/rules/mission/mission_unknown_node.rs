@@ -1,0 +1,82 @@
+use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostic;
+use crate::mission::catalogue;
+use crate::mission::tree::{self, Mission};
+use crate::mission::xml::Element;
+use crate::rules::declare_rule;
+
+declare_rule! {
+    /// ## What it does
+    /// Flags a node that is neither built into BehaviorTree.CPP nor one of the 23 nodes the
+    /// robot registers, with the nearest known name; and an `<Action>`, `<Condition>`,
+    /// `<Control>` or `<Decorator>` without the `ID` that names its node.
+    ///
+    /// The robot's nodes: `StartOfTree`, `DescribeExhibitSpeech`, `GetVisitorResponse`,
+    /// `HandleFallBack`, `HasVisitorResponded`, `IsASREnabled`, `IsListWithExhibit`,
+    /// `IsMutualGazeDiscovered`, `IsVisitorDiscovered`, `IsVisitorPresent`,
+    /// `IsVisitorResponseYes`, `Navigate`, `PerformDeicticGesture`, `PerformIconicGesture`,
+    /// `PressYesNoDialogue`, `RetrieveInitialLocation`, `RetrieveListOfExhibits`, `SayText`,
+    /// `SelectExhibit`, `SetAnimateBehavior`, `SetOvertAttentionMode`, `SetRobotPose`,
+    /// `SetSpeechEvent`. The built-in ones include `Sequence`, `Fallback`, `Inverter`,
+    /// `KeepRunningUntilFailure`, `ForceFailure`, `RetryUntilSuccessful`, `Delay` and
+    /// `SubTree`.
+    ///
+    /// ## Why it matters
+    /// BehaviorTree.CPP refuses the whole file ("Node not recognized"): the robot stops
+    /// before the tour begins. Node names are case-sensitive.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <Saytext name="4"/>
+    /// ```
+    /// The node is `SayText`.
+    pub static MISSION_UNKNOWN_NODE = {
+        name: "mission-unknown-node",
+        category: Mission,
+        severity: Error,
+        fixable: false,
+        summary: "a node that is neither built in nor registered by the robot (did-you-mean)",
+    };
+}
+
+pub fn check(mission: &Mission, node: &Element, out: &mut Diagnostics) {
+    let Some(id) = tree::node_id(node) else {
+        out.push(
+            Diagnostic::new(
+                &MISSION_UNKNOWN_NODE,
+                node.name_span,
+                format!(
+                    "<{}> without an ID: BehaviorTree.CPP cannot tell which node it is, and \
+                     the robot cannot load the mission",
+                    node.name
+                ),
+            )
+            .with_help(format!("name the node: <{} ID=\"…\"/>", node.name)),
+        );
+        return;
+    };
+    let span = match node.attribute("ID") {
+        Some(attribute) if id != node.name => attribute.value_span,
+        _ => node.name_span,
+    };
+    let help = if mission.tree(id).is_some() {
+        format!("`{id}` is a tree: call it with <SubTree ID=\"{id}\"/>")
+    } else if let Some(near) = catalogue::nearest(id) {
+        format!("did you mean `{near}`? Node names are case-sensitive")
+    } else {
+        "use one of the nodes `ekb explain mission-unknown-node` lists, or register the node \
+         in the robot's behaviour controller"
+            .to_string()
+    };
+    out.push(
+        Diagnostic::new(
+            &MISSION_UNKNOWN_NODE,
+            span,
+            format!(
+                "`{id}` is not a node the robot knows (\"Node not recognized\"): the robot \
+                 cannot load the mission"
+            ),
+        )
+        .with_help(help),
+    );
+}

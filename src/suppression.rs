@@ -1,0 +1,499 @@
+//! Suppression comments (SPEC §7): `# ekb: ignore[RULE, …]` on a comment line silences those
+//! rules' findings on the next line that is neither a comment nor blank; `# ekb:
+//! ignore-file[RULE, …]` silences them in the whole file. A name may also be a category
+//! (`content`). A suppression that silences nothing is an `unused-suppression` finding.
+//!
+//! A comment cannot follow a value on its line: the robot would read it as part of the value.
+//! So a suppression is always a line of its own, and `ekb fmt` keeps it with the line below.
+//! `ekb check --add-ignore` writes one above every line with findings ([`add_ignores`]).
+//!
+//! Files are scanned for `ekb:` first (memchr), so a file without suppressions costs one
+//! quick pass and no line is lexed for this.
+
+use std::collections::BTreeMap;
+
+use crate::diagnostic::Diagnostic;
+use crate::rules::selection::{RuleSelector, RuleSet};
+use crate::rules::structure::unused_suppression;
+use crate::rules::Rule;
+use crate::syntax::{lines_from, Body, Line, Span, BOM};
+
+/// What marks a suppression, after the `#` and any blanks.
+const MARK: &str = "ekb:";
+
+/// One suppression comment.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Suppression {
+    /// The whole line, its ending included (what removing it removes).
+    pub line: Span,
+    /// The comment, from `#` to its last non-blank character.
+    pub comment: Span,
+    pub scope: Scope,
+    /// The names between the brackets, each with its span; empty if the brackets are.
+    pub names: Vec<Name>,
+    /// The span between the brackets, where names are rewritten.
+    pub list: Span,
+}
+
+/// What a suppression covers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scope {
+    /// The next line that is neither a comment nor blank (`None` if there is none).
+    Line(Option<Span>),
+    File,
+}
+
+/// One name of a suppression, and whether it is a rule or category.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Name {
+    pub span: Span,
+    /// `Err` with the reason when it names neither.
+    pub selector: Result<RuleSelector, String>,
+}
+
+/// A comment that starts like a suppression (`# ekb: ignore`) but cannot be read as one.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Malformed {
+    /// The whole line, its ending included.
+    pub line: Span,
+    pub comment: Span,
+}
+
+/// The suppression comments of `text`, and those that cannot be read.
+pub fn find(text: &str) -> (Vec<Suppression>, Vec<Malformed>) {
+    let (mut found, mut malformed) = (Vec::new(), Vec::new());
+    let mut last_line_start = None;
+    for at in memchr::memmem::find_iter(text.as_bytes(), MARK) {
+        let line_start = text[..at].rfind('\n').map_or(0, |newline| newline + 1);
+        if last_line_start == Some(line_start) {
+            continue;
+        }
+        last_line_start = Some(line_start);
+        let mut lines = lines_from(text, line_start);
+        let Some(line) = lines.next() else { continue };
+        let Body::Comment(comment) = line.body else {
+            continue;
+        };
+        match parse(text, comment) {
+            Parsed::Suppression(scope, list, names) => {
+                let scope = match scope {
+                    ParsedScope::File => Scope::File,
+                    ParsedScope::Line => Scope::Line(target(lines)),
+                };
+                found.push(Suppression {
+                    line: line.span,
+                    comment,
+                    scope,
+                    names,
+                    list,
+                });
+            }
+            Parsed::Malformed => malformed.push(Malformed {
+                line: line.span,
+                comment,
+            }),
+            Parsed::Other => {}
+        }
+    }
+    (found, malformed)
+}
+
+/// Whether `comment` (from its `#`) is a suppression of the line below it.
+pub fn is_for_next_line(comment: &str) -> bool {
+    let span = Span::new(0, comment.len());
+    matches!(
+        parse(comment, span),
+        Parsed::Suppression(ParsedScope::Line, ..)
+    )
+}
+
+/// The next line that is neither a comment nor blank.
+fn target(lines: impl Iterator<Item = Line>) -> Option<Span> {
+    lines
+        .into_iter()
+        .find(|line| matches!(line.body, Body::Entry { .. }))
+        .map(|line| line.span)
+}
+
+enum ParsedScope {
+    Line,
+    File,
+}
+
+enum Parsed {
+    Suppression(ParsedScope, Span, Vec<Name>),
+    Malformed,
+    /// Some other comment that mentions `ekb:`.
+    Other,
+}
+
+/// Reads `# ekb: ignore[a, b]` or `# ekb: ignore-file[a]` (blanks allowed around each part).
+fn parse(text: &str, comment: Span) -> Parsed {
+    let body = comment.text(text);
+    let start = comment.start as usize;
+    let rest = body[1..].trim_start_matches([' ', '\t']);
+    let Some(rest) = rest.strip_prefix(MARK) else {
+        return Parsed::Other;
+    };
+    let directive = rest.trim_start_matches([' ', '\t']);
+    let (scope, after) = if let Some(after) = directive.strip_prefix("ignore-file") {
+        (ParsedScope::File, after)
+    } else if let Some(after) = directive.strip_prefix("ignore") {
+        (ParsedScope::Line, after)
+    } else {
+        return Parsed::Other;
+    };
+    let after = after.trim_start_matches([' ', '\t']);
+    let Some(list) = after.strip_prefix('[').and_then(|l| l.strip_suffix(']')) else {
+        return Parsed::Malformed;
+    };
+    if list.contains(['[', ']']) {
+        return Parsed::Malformed;
+    }
+    // The list ends where the comment does, before its `]`.
+    let list_start = start + body.len() - 1 - list.len();
+    let mut names = Vec::new();
+    let mut offset = list_start;
+    for part in list.split(',') {
+        let name = part.trim_matches([' ', '\t']);
+        if !name.is_empty() {
+            let name_start = offset + (part.len() - part.trim_start_matches([' ', '\t']).len());
+            names.push(Name {
+                span: Span::new(name_start, name_start + name.len()),
+                selector: RuleSelector::parse(name),
+            });
+        }
+        offset += part.len() + 1;
+    }
+    if names.is_empty() {
+        return Parsed::Malformed;
+    }
+    Parsed::Suppression(scope, Span::new(list_start, list_start + list.len()), names)
+}
+
+/// Drops the findings of `diagnostics` (sorted by position) that `text`'s suppressions
+/// silence, and adds an `unused-suppression` finding for each suppression that silences
+/// nothing (if `rules` runs that rule). `dropped` tells how many findings of a rule were
+/// counted but not kept: a suppression of such a rule may silence one of them, so it is
+/// never called unused.
+pub fn apply(
+    text: &str,
+    diagnostics: &mut Vec<Diagnostic>,
+    rules: &RuleSet,
+    dropped: impl Fn(&'static Rule) -> usize,
+) -> Suppressed {
+    let mut suppressed = Suppressed::default();
+    // No `#`, no comment: that one byte is found faster than the mark.
+    let bytes = text.as_bytes();
+    if memchr::memchr(b'#', bytes).is_none()
+        || memchr::memmem::find(bytes, MARK.as_bytes()).is_none()
+    {
+        return suppressed;
+    }
+    let (suppressions, malformed) = find(text);
+    // For each suppression, which of its names silenced something.
+    let mut used: Vec<Vec<bool>> = suppressions
+        .iter()
+        .map(|s| vec![false; s.names.len()])
+        .collect();
+    let file_wide: Vec<(usize, usize, RuleSelector)> = selectors_of(&suppressions, Scope::File);
+    let by_line: BTreeMap<u32, Vec<(usize, usize, RuleSelector)>> = {
+        let mut by_line: BTreeMap<u32, Vec<_>> = BTreeMap::new();
+        for (index, suppression) in suppressions.iter().enumerate() {
+            if let Scope::Line(Some(target)) = suppression.scope {
+                for (n, name) in suppression.names.iter().enumerate() {
+                    if let Ok(selector) = name.selector {
+                        by_line
+                            .entry(target.start)
+                            .or_default()
+                            .push((index, n, selector));
+                    }
+                }
+            }
+        }
+        by_line
+    };
+    let silences = |diagnostic: &Diagnostic, used: &mut Vec<Vec<bool>>| {
+        let line_start = text[..diagnostic.span.start as usize]
+            .rfind('\n')
+            .map_or(0, |newline| newline + 1) as u32;
+        let on_line = by_line.get(&line_start).into_iter().flatten();
+        let mut hit = false;
+        for &(index, n, selector) in on_line.chain(&file_wide) {
+            if selector.matches(diagnostic.rule) {
+                used[index][n] = true;
+                hit = true;
+            }
+        }
+        hit
+    };
+    diagnostics.retain(|diagnostic| {
+        let hit = silences(diagnostic, &mut used);
+        if hit {
+            suppressed.add(diagnostic.rule, 1);
+        }
+        !hit
+    });
+    // A file-wide suppression silences the findings not kept as well.
+    for &(index, n, selector) in &file_wide {
+        for rule in crate::rules::ALL
+            .iter()
+            .filter(|rule| selector.matches(rule))
+        {
+            let more = dropped(rule);
+            if more > 0 {
+                used[index][n] = true;
+                suppressed.add(rule, more);
+            }
+        }
+    }
+    let mut unused = Vec::new();
+    for (suppression, used) in suppressions.iter().zip(&used) {
+        let unused_names: Vec<&Name> = suppression
+            .names
+            .iter()
+            .zip(used)
+            .filter(|&(name, &used)| {
+                !used
+                    && match name.selector {
+                        // Off for this file, or with findings not kept: it may well be needed.
+                        Ok(selector) => crate::rules::ALL.iter().any(|rule| {
+                            selector.matches(rule) && rules.is_enabled(rule) && dropped(rule) == 0
+                        }),
+                        Err(_) => true,
+                    }
+            })
+            .map(|(name, _)| name)
+            .collect();
+        if !unused_names.is_empty() {
+            unused.push(unused_suppression::finding(
+                text,
+                suppression,
+                &unused_names,
+            ));
+        }
+    }
+    unused.extend(
+        malformed
+            .iter()
+            .map(|m| unused_suppression::malformed(text, m)),
+    );
+    if rules.is_enabled(&unused_suppression::UNUSED_SUPPRESSION) {
+        for finding in unused {
+            // Only a file-wide suppression reaches a comment line.
+            if !silences(&finding, &mut used) {
+                diagnostics.push(finding);
+                suppressed.unused += 1;
+            }
+        }
+    }
+    suppressed
+}
+
+/// The names of the suppressions of `scope`, as (suppression, name, selector).
+fn selectors_of(suppressions: &[Suppression], scope: Scope) -> Vec<(usize, usize, RuleSelector)> {
+    let mut selectors = Vec::new();
+    for (index, suppression) in suppressions.iter().enumerate() {
+        if suppression.scope == scope {
+            for (n, name) in suppression.names.iter().enumerate() {
+                if let Ok(selector) = name.selector {
+                    selectors.push((index, n, selector));
+                }
+            }
+        }
+    }
+    selectors
+}
+
+/// What [`apply`] did.
+#[derive(Debug, Default)]
+pub struct Suppressed {
+    /// How many findings of each rule suppressions silenced (a file-wide one, all of them,
+    /// kept or only counted).
+    pub silenced: Vec<(&'static Rule, usize)>,
+    /// How many `unused-suppression` findings it added.
+    pub unused: usize,
+}
+
+impl Suppressed {
+    fn add(&mut self, rule: &'static Rule, n: usize) {
+        match self
+            .silenced
+            .iter_mut()
+            .find(|(r, _)| std::ptr::eq(*r, rule))
+        {
+            Some((_, count)) => *count += n,
+            None => self.silenced.push((rule, n)),
+        }
+    }
+}
+
+/// `text` with a suppression above every line that has findings in `diagnostics`, naming
+/// their rules (`ekb check --add-ignore`), and how many comments were written or extended. A
+/// line that already has a suppression above it gets the new names added to that one. A
+/// finding on a comment or blank line (which an `ignore` cannot reach), or past the last
+/// line, is silenced for the whole file by an `ignore-file` at the top.
+pub fn add_ignores(text: &str, diagnostics: &[Diagnostic]) -> (String, usize) {
+    let (suppressions, _) = find(text);
+    // The names each line start needs, and those the whole file needs.
+    let mut per_line: BTreeMap<usize, Vec<&'static str>> = BTreeMap::new();
+    let mut file_wide: Vec<&'static str> = Vec::new();
+    for diagnostic in diagnostics {
+        let at = diagnostic.span.start as usize;
+        let line_start = text[..at.min(text.len())]
+            .rfind('\n')
+            .map_or(0, |newline| newline + 1);
+        let line = lines_from(text, line_start).next();
+        match line {
+            Some(line) if matches!(line.body, Body::Entry { .. }) && at < text.len() => per_line
+                .entry(line_start)
+                .or_default()
+                .push(diagnostic.rule.name),
+            _ => file_wide.push(diagnostic.rule.name),
+        }
+    }
+    let mut edits: Vec<(Span, String)> = Vec::new();
+    for (&line_start, names) in &per_line {
+        let above = suppressions.iter().rev().find(|s| {
+            s.scope == Scope::Line(Some(Span::new(line_start, line_end(text, line_start))))
+        });
+        match above {
+            Some(existing) => edits.push(extend(text, existing, names)),
+            None => {
+                let ending = match lines_from(text, line_start).next() {
+                    Some(line) if line.ending.as_str() == "\r\n" => "\r\n",
+                    _ => "\n",
+                };
+                let start = skip_bom(text, line_start);
+                edits.push((
+                    Span::empty_at(start),
+                    format!("# ekb: ignore[{}]{ending}", joined(names)),
+                ));
+            }
+        }
+    }
+    if !file_wide.is_empty() {
+        match suppressions.iter().find(|s| s.scope == Scope::File) {
+            Some(existing) => edits.push(extend(text, existing, &file_wide)),
+            None => edits.push((
+                Span::empty_at(skip_bom(text, 0)),
+                format!("# ekb: ignore-file[{}]\n", joined(&file_wide)),
+            )),
+        }
+    }
+    edits.sort_by_key(|(span, _)| (span.start, span.end));
+    let mut out = String::with_capacity(text.len() + edits.len() * 40);
+    let mut at = 0;
+    for (span, replacement) in &edits {
+        out.push_str(&text[at..span.start as usize]);
+        out.push_str(replacement);
+        at = span.end as usize;
+    }
+    out.push_str(&text[at..]);
+    (out, edits.len())
+}
+
+/// Where the line starting at `start` ends (after its newline).
+fn line_end(text: &str, start: usize) -> usize {
+    lines_from(text, start)
+        .next()
+        .map_or(text.len(), |line| line.span.end as usize)
+}
+
+/// After a byte-order mark at `offset` 0: a comment put before it would move it into the
+/// file, where it is no byte-order mark.
+fn skip_bom(text: &str, offset: usize) -> usize {
+    if offset == 0 && text.starts_with(BOM) {
+        BOM.len()
+    } else {
+        offset
+    }
+}
+
+/// The edit that adds `names` to `existing`'s list.
+fn extend(text: &str, existing: &Suppression, names: &[&str]) -> (Span, String) {
+    let mut all: Vec<&str> = existing.names.iter().map(|n| n.span.text(text)).collect();
+    all.extend_from_slice(names);
+    (existing.list, joined(&all))
+}
+
+/// The names, sorted, each once, comma-separated.
+fn joined(names: &[&str]) -> String {
+    let mut names = names.to_vec();
+    names.sort_unstable();
+    names.dedup();
+    names.join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn suppressions_are_read_with_blanks_anywhere() {
+        let text = "#ekb:ignore[ key-case ,repeated-word]\n\n# note\nkey 1 x\n  # ekb: ignore-file[content]\n# ekb: ignore\n# ekb: to do\n";
+        let (found, malformed) = find(text);
+        assert_eq!(found.len(), 2);
+        let names: Vec<&str> = found[0].names.iter().map(|n| n.span.text(text)).collect();
+        assert_eq!(names, ["key-case", "repeated-word"]);
+        let key = text.find("key 1").unwrap();
+        assert_eq!(found[0].scope, Scope::Line(Some(Span::new(key, key + 8))));
+        assert_eq!(found[0].list.text(text), " key-case ,repeated-word");
+        assert_eq!(found[1].scope, Scope::File);
+        assert_eq!(malformed.len(), 1, "`# ekb: ignore` names no rule");
+    }
+
+    #[test]
+    fn a_category_silences_its_rules_and_an_off_rule_is_never_unused() {
+        use crate::model::build::Options;
+        use crate::rules::selection::Choice;
+        let text = "# ekb: ignore[content]\n\
+                    preGestureMessageEnglish 1 the the  \n\
+                    # ekb: ignore[tour-missing, key-case]\n\
+                    preGestureMessageIsiZulu 1 Sawubona\n";
+        let source = crate::SourceFile::from_bytes("t", text.into());
+        let names = |rules: &RuleSet| -> Vec<&str> {
+            let checked = crate::check::check_with(&source, &Options::default(), rules);
+            checked
+                .diagnostics
+                .iter()
+                .map(|d| d.rule.name)
+                .filter(|n| *n != "missing-field")
+                .collect()
+        };
+        // repeated-word and trailing-whitespace are silenced; tour-missing is at line 1,
+        // not below the second comment, and key-case finds nothing there.
+        assert_eq!(
+            names(&RuleSet::default()),
+            ["tour-missing", "unused-suppression"]
+        );
+        let without_tour = Choice {
+            ignore: vec![
+                RuleSelector::parse("tour").unwrap(),
+                RuleSelector::parse("key-case").unwrap(),
+            ],
+            ..Choice::default()
+        };
+        assert!(names(&RuleSet::chosen(&[&without_tour])).is_empty());
+    }
+
+    #[test]
+    fn ignores_are_added_above_lines_and_merged_into_those_there() {
+        let rule = |name| crate::rules::by_name(name).unwrap();
+        let at = |name, start: usize| Diagnostic::new(rule(name), Span::new(start, start + 1), "x");
+        let text = "# ekb: ignore[key-case]\nkey 1 x\r\nother 2 y\r\n\n";
+        let diagnostics = [
+            at("repeated-word", 24),
+            at("untranslated-message", 35),
+            at("unknown-key", 35),
+            at("trailing-whitespace", 44),
+        ];
+        let (new, count) = add_ignores(text, &diagnostics);
+        assert_eq!(count, 3);
+        assert_eq!(
+            new,
+            "# ekb: ignore-file[trailing-whitespace]\n# ekb: ignore[key-case, repeated-word]\nkey 1 x\r\n\
+             # ekb: ignore[unknown-key, untranslated-message]\r\nother 2 y\r\n\n"
+        );
+    }
+}
