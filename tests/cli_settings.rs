@@ -313,7 +313,7 @@ fn settings_shows_each_value_and_where_it_comes_from() {
     let toml = "ekb.toml";
     for expected in [
         format!("reader = \"2025-06\"  # {toml}:1"),
-        "select = [\"structure\", \"tour\", \"content\", \"compat\"]  # default: every rule".into(),
+        "select = [\"structure\", \"tour\", \"content\", \"compat\", \"map\", \"mission\", \"culture\", \"translation\"]  # default: every rule".into(),
         format!("ignore = [\"untranslated-message\", \"tour\"]  # {toml}:3, then the command line"),
         format!(
             "config-dir = \"{}\"  # {toml}:5",
