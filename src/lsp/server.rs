@@ -373,7 +373,9 @@ impl Server {
         document.with_analysed(|analysed| {
             f(&Snapshot {
                 uri,
+                path: path.as_deref(),
                 version: document.version,
+                workspace: &self.workspace,
                 positions,
                 analysed,
             })

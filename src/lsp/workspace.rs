@@ -7,8 +7,11 @@ use lsp_types::{InitializeParams, Uri};
 
 use crate::commands::Context;
 use crate::config::{self, Config};
+use crate::mission::culture::ValueTypes;
+use crate::mission::setup::{self, MissionPaths};
 use crate::model::build::Options;
 use crate::rules::selection::{Choice, RuleSet};
+use crate::source::SourceFile;
 
 /// The configuration in force, and what went wrong finding it (to tell the user once).
 #[derive(Debug)]
@@ -58,6 +61,40 @@ impl Workspace {
             .rules_for(path, &Choice::default())
             .map_err(|error| error.to_string())?;
         Ok((options, rules))
+    }
+
+    /// The culture knowledge base's keys, which `culturalKnowledge` words name: declared in the
+    /// types file of the robot's configuration folder — `[mission] config-dir` of the
+    /// document's `ekb.toml`, else the folder of the environment configuration when it holds
+    /// the culture configuration too (the robot keeps them side by side). Read at each ask,
+    /// so that an edit of the culture files shows at once; none when there is no such folder
+    /// or its files cannot be read.
+    pub fn culture_keys(&self, document: Option<&Path>) -> Vec<String> {
+        let from_settings = self
+            .context
+            .settings_for(document.unwrap_or(Path::new("-")))
+            .ok()
+            .and_then(|settings| settings.mission.config_dir)
+            .map(|dir| dir.value);
+        let beside_config = || {
+            let config = self.context.config().ok()?;
+            let folder = config.path.as_deref()?.parent()?;
+            folder
+                .join(setup::CULTURE_INI)
+                .is_file()
+                .then(|| folder.to_path_buf())
+        };
+        let types = from_settings
+            .or_else(beside_config)
+            .and_then(|dir| MissionPaths::from_config_dir(&dir).ok())
+            .and_then(|paths| paths.culture_types)
+            .and_then(|path| SourceFile::read(&path).ok());
+        types.map_or_else(Vec::new, |types| {
+            ValueTypes::parse(types.text())
+                .keys()
+                .map(str::to_string)
+                .collect()
+        })
     }
 
     /// How to read a document with broken settings: as the command line's `--reader` says,
@@ -162,5 +199,68 @@ mod tests {
             options.unwrap().0.reader,
             Some(crate::reader::Reader::V2026_02)
         );
+    }
+
+    /// The robot's layout: `config/` with the three configurations, the files in `data/`.
+    fn robot_folder(root: &Path) {
+        let (config, data) = (root.join("config"), root.join("data"));
+        std::fs::create_dir_all(&config).unwrap();
+        std::fs::create_dir_all(&data).unwrap();
+        std::fs::write(
+            config.join(setup::ENVIRONMENT_INI),
+            "knowledgeBase kb.dat\n",
+        )
+        .unwrap();
+        std::fs::write(
+            config.join(setup::CULTURE_INI),
+            "knowledgeBase culture.dat\nvalueTypes types.dat\n",
+        )
+        .unwrap();
+        std::fs::write(
+            data.join("types.dat"),
+            "deicticShape STRING\ngreeting PHRASE\n",
+        )
+        .unwrap();
+    }
+
+    #[test]
+    fn culture_keys_come_from_the_folder_of_the_configuration() {
+        let root = tempfile::tempdir().unwrap();
+        robot_folder(root.path());
+        let cli = Context::with_config(Config::default());
+        let (workspace, _) = Workspace::new(&cli, Some(root.path()));
+        let kb = root.path().join("data/kb.dat");
+        assert_eq!(
+            workspace.culture_keys(Some(&kb)),
+            ["deicticShape", "greeting"]
+        );
+    }
+
+    #[test]
+    fn culture_keys_come_from_the_mission_setting() {
+        let root = tempfile::tempdir().unwrap();
+        robot_folder(&root.path().join("robot"));
+        std::fs::write(
+            root.path().join("ekb.toml"),
+            "[mission]\nconfig-dir = \"robot/config\"\n",
+        )
+        .unwrap();
+        let cli = Context::with_config(Config::default());
+        let (workspace, _) = Workspace::new(&cli, None);
+        let kb = root.path().join("kb.dat");
+        assert_eq!(
+            workspace.culture_keys(Some(&kb)),
+            ["deicticShape", "greeting"]
+        );
+    }
+
+    #[test]
+    fn no_culture_keys_without_a_culture_configuration() {
+        let root = tempfile::tempdir().unwrap();
+        let cli = Context::with_config(Config::default());
+        let (workspace, _) = Workspace::new(&cli, Some(root.path()));
+        assert!(workspace
+            .culture_keys(Some(&root.path().join("kb.dat")))
+            .is_empty());
     }
 }

@@ -275,6 +275,56 @@ fn completion_offers_keys_ids_and_arms() {
 }
 
 #[test]
+fn cultural_knowledge_completes_the_culture_keys_of_the_robot_configuration() {
+    let mut client = Client::start();
+    // The robot's layout: the configurations side by side in `config/`, the files in `data/`.
+    let folder = client.folder.path().to_path_buf();
+    std::fs::create_dir_all(folder.join("config")).unwrap();
+    std::fs::create_dir_all(folder.join("data")).unwrap();
+    std::fs::write(
+        folder.join("config/environmentKnowledgeBaseConfiguration.ini"),
+        "knowledgeBase kb.dat\n",
+    )
+    .unwrap();
+    std::fs::write(
+        folder.join("config/cultureKnowledgeBaseConfiguration.ini"),
+        "knowledgeBase culture.dat\nvalueTypes types.dat\n",
+    )
+    .unwrap();
+    std::fs::write(
+        folder.join("data/types.dat"),
+        "deicticShape STRING\ngreetingPhrase PHRASE\nvisitorAge NUMBER\n",
+    )
+    .unwrap();
+    client.initialize(json!({}));
+    let uri = "untitled:current";
+    client.open(
+        uri,
+        "robotLocationPose 1 1 2 90\nculturalKnowledge 1 greetingPhrase \n",
+    );
+    let words = client.ask("textDocument/completion", at(uri, 1, 35));
+    assert_eq!(
+        labels(&words),
+        ["deicticShape", "visitorAge"],
+        "not the one written"
+    );
+    // After the key alone, an id comes first: no culture keys there.
+    let ids = client.ask("textDocument/completion", at(uri, 1, 18));
+    assert!(!labels(&ids).contains(&"deicticShape"));
+    assert!(client.shut_down().success());
+
+    let mut client = Client::start();
+    client.initialize(json!({}));
+    client.open(uri, "culturalKnowledge 1 \n");
+    let none = client.ask("textDocument/completion", at(uri, 0, 20));
+    assert!(
+        none.is_null() || labels(&none).is_empty(),
+        "no culture configuration: {none}"
+    );
+    assert!(client.shut_down().success());
+}
+
+#[test]
 fn a_tour_stop_leads_to_its_location_and_back() {
     let (mut client, uri, _) = seed_session(json!({}));
     let definition = client.ask("textDocument/definition", at(&uri, TOUR_LINE, TOUR_STOP_4));

@@ -1,9 +1,7 @@
 //! `textDocument/completion`: keys (of the file's dialect; those the location above lacks
-//! first, with its id), location ids (after a key, and in the tour), and `left` / `right`
-//! for `gestureArm`.
-//!
-//! `culturalKnowledge` words would come from the culture knowledge base; ekb has no way to
-//! configure one yet, so none are offered.
+//! first, with its id), location ids (after a key, and in the tour), `left` / `right` for
+//! `gestureArm`, and the culture knowledge base's keys for `culturalKnowledge` (when the
+//! workspace knows the robot's configuration folder: [`crate::lsp::workspace::Workspace::culture_keys`]).
 
 use lsp_types::{
     CompletionItem, CompletionItemKind, CompletionList, CompletionParams, CompletionResponse,
@@ -54,6 +52,10 @@ pub fn completion(
         (_, _) if is_tour && done >= 2 => at.ids(),
         (1, _) if !is_tour => at.ids_with_a_new_one(),
         (2, Some(key)) if Key::from_name(key) == Some(Key::GestureArm) => (at.arms(), false),
+        (2.., Some(key)) if Key::from_name(key) == Some(Key::CulturalKnowledge) => {
+            let written = before[..before.len() - typed.len()].split(separators);
+            (at.culture_words(written.collect()), false)
+        }
         _ => return Ok(None),
     };
     Ok(Some(CompletionResponse::List(CompletionList {
@@ -169,6 +171,19 @@ impl Completer<'_, '_, '_> {
             items.push(item);
         }
         (items, incomplete)
+    }
+
+    /// The culture knowledge base's keys that the line does not name yet.
+    fn culture_words(&self, written: Vec<&str>) -> Vec<CompletionItem> {
+        let keys = self.snapshot.workspace.culture_keys(self.snapshot.path);
+        keys.into_iter()
+            .filter(|key| !written.contains(&key.as_str()))
+            .map(|key| {
+                let mut item = self.item(key.clone(), key, CompletionItemKind::ENUM_MEMBER);
+                item.detail = Some("a key of the culture knowledge base".into());
+                item
+            })
+            .collect()
     }
 
     fn arms(&self) -> Vec<CompletionItem> {

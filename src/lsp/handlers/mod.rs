@@ -19,6 +19,7 @@ use similar::{Algorithm, DiffTag, TextDiff};
 
 use super::documents::Analysed;
 use super::position::Positions;
+use super::workspace::Workspace;
 use crate::syntax::Span;
 
 /// One version of one document, checked, as every request sees it (`'q`: the life of the
@@ -26,7 +27,11 @@ use crate::syntax::Span;
 #[derive(Debug, Clone, Copy)]
 pub struct Snapshot<'a, 'q> {
     pub uri: &'a Uri,
+    /// The document's file, if it is one.
+    pub path: Option<&'a std::path::Path>,
     pub version: i32,
+    /// The configuration the document is read with, for what lies outside it.
+    pub workspace: &'a Workspace,
     pub positions: Positions<'a>,
     pub analysed: &'a Analysed<'q>,
 }
@@ -133,7 +138,10 @@ pub fn line_edits(positions: &Positions<'_>, new: &str) -> Vec<TextEdit> {
 pub fn with_snapshot<R>(text: &str, f: impl FnOnce(&Snapshot<'_, '_>) -> R) -> R {
     use super::documents::Document;
     use super::position::Encoding;
+    use crate::commands::Context;
+    use crate::config::Config;
     let uri: Uri = "untitled:test".parse().expect("a URI");
+    let (workspace, _) = Workspace::new(&Context::with_config(Config::default()), None);
     let mut document = Document::new(1, None, text.to_string());
     document.check("test", Default::default);
     let positions = document.positions(Encoding::Utf16);
@@ -141,7 +149,9 @@ pub fn with_snapshot<R>(text: &str, f: impl FnOnce(&Snapshot<'_, '_>) -> R) -> R
         .with_analysed(|analysed| {
             f(&Snapshot {
                 uri: &uri,
+                path: None,
                 version: 1,
+                workspace: &workspace,
                 positions,
                 analysed,
             })
