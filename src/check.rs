@@ -125,20 +125,26 @@ impl Checked<'_> {
         sort_by_position(&mut self.diagnostics);
     }
 
-    /// The findings that say the reader crashes on the file (a tree too deep, two split
-    /// culturalKnowledge words in one location).
+    /// The findings that say the reader crashes on the file (a tree too deep, four or more
+    /// culturalKnowledge words in one location as the reader counts them).
     pub fn reader_crashes(&self) -> Vec<Diagnostic> {
-        use rules::compat::{compat_cultural_word_split as split, compat_reader_crash as crash};
+        use rules::compat::{
+            compat_cultural_word_split as split, compat_reader_crash as crash,
+            compat_too_many_cultural_keys as too_many,
+        };
         let crashes_at = |id: Option<u32>| {
             id.and_then(|id| self.kb.location(id))
-                .is_some_and(split::crashes)
+                .is_some_and(|location| too_many::crashes(location, self.reader))
+        };
+        let about_words = |rule| {
+            std::ptr::eq(rule, &split::COMPAT_CULTURAL_WORD_SPLIT)
+                || std::ptr::eq(rule, &too_many::COMPAT_TOO_MANY_CULTURAL_KEYS)
         };
         self.diagnostics
             .iter()
             .filter(|d| {
                 std::ptr::eq(d.rule, &crash::COMPAT_READER_CRASH)
-                    || (std::ptr::eq(d.rule, &split::COMPAT_CULTURAL_WORD_SPLIT)
-                        && crashes_at(d.location_id))
+                    || (about_words(d.rule) && crashes_at(d.location_id))
             })
             .cloned()
             .collect()

@@ -337,7 +337,7 @@ fn check_location(location: &Location<'_>, context: &LocationContext<'_>, out: &
     content::theta_out_of_range::check(location, context, out);
     content::gesture_target_sums_to_zero::check(location, out);
     content::gesture_behind_robot::check(location, out);
-    compat::compat_too_many_cultural_keys::check(location, out);
+    compat::compat_too_many_cultural_keys::check(location, context.reader, out);
     compat::compat_cultural_word_split::check(location, context.reader, out);
     translation::check(location, out);
 }

@@ -243,3 +243,81 @@ fn as_loaded_refuses_a_file_the_reader_crashes_on() {
         1_800
     );
 }
+
+/// A location whose culturalKnowledge line is `words`, as a file of the current dialect.
+fn culture_words_file(dir: &std::path::Path, words: &str) -> String {
+    let path = dir.join(format!("{}.dat", words.len()));
+    std::fs::write(
+        &path,
+        format!(
+            "robotLocationPose 1 1.0 2.0 90\nculturalKnowledge 1 {words}\ntourSpecification 1 1\n"
+        ),
+    )
+    .unwrap();
+    path.to_str().unwrap().to_string()
+}
+
+#[test]
+fn culture_words_crash_the_reader_from_four_as_it_counts_them() {
+    let dir = tempfile::tempdir().unwrap();
+    // Three words (written apart, or one split by the reader): loaded past the buffer.
+    for words in ["a b c", "Deictic_Shape Bow"] {
+        let path = culture_words_file(dir.path(), words);
+        let out = run(&["export", "--as-loaded", "--reader", "2025-06", &path]);
+        assert_eq!(out.code, 0, "{words}: {}", out.stderr);
+        assert_eq!(
+            json(&out.stdout)["locations"][0]["culturalKnowledge"]
+                .as_array()
+                .unwrap()
+                .len(),
+            3,
+            "{words}"
+        );
+    }
+    let three = run(&[
+        "check",
+        "--format",
+        "concise",
+        &culture_words_file(dir.path(), "a b c"),
+    ]);
+    assert!(
+        three
+            .stdout
+            .contains(":2:25: error[compat-too-many-cultural-keys]")
+            && three
+                .stdout
+                .contains("writes c past the end of its buffer and corrupts"),
+        "{}",
+        three.stdout
+    );
+    // Four: written apart or split, the reader crashes alike.
+    for (words, rule) in [
+        ("a b c d", "compat-too-many-cultural-keys"),
+        ("Deictic_Shape Bow's", "compat-cultural-word-split"),
+        ("Deictic_Shape Bow Smile", "compat-too-many-cultural-keys"),
+    ] {
+        let path = culture_words_file(dir.path(), words);
+        let out = run(&["export", "--as-loaded", "--reader", "2025-06", &path]);
+        assert_eq!(out.code, 1, "{words}");
+        assert!(
+            out.stderr.contains(&format!("error[{rule}]"))
+                && out.stderr.contains("reader 2025-06 crashes on"),
+            "{words}: {}",
+            out.stderr
+        );
+    }
+    // The document's reader has no culturalKnowledge: it ignores the line whole.
+    let path = culture_words_file(dir.path(), "a b c d");
+    let seed = run(&["export", "--as-loaded", "--reader", "d5.4.2", &path]);
+    assert_eq!(seed.code, 0, "{}", seed.stderr);
+    assert_eq!(
+        json(&seed.stdout)["locations"][0]["culturalKnowledge"],
+        serde_json::Value::Null
+    );
+    let check = run(&["check", "--reader", "d5.4.2", "--format", "concise", &path]);
+    assert!(
+        !check.stdout.contains("compat-too-many-cultural-keys"),
+        "{}",
+        check.stdout
+    );
+}

@@ -4,6 +4,9 @@ use crate::model::Location;
 use crate::reader::line::word_pieces;
 use crate::reader::Reader;
 use crate::render::clip;
+use crate::rules::compat::compat_too_many_cultural_keys::{
+    crashes, loaded_words, MAX_CULTURAL_KEYS,
+};
 use crate::rules::declare_rule;
 use crate::syntax;
 
@@ -33,7 +36,7 @@ declare_rule! {
 }
 
 /// The reader's buffer of culturalKnowledge words.
-const WORD_BUFFER: usize = 2;
+const WORD_BUFFER: usize = MAX_CULTURAL_KEYS;
 
 /// Two words that the reader splits overflow its buffer and crash it (SPEC §2.12).
 const CRASHING_SPLIT_WORDS: usize = 2;
@@ -43,13 +46,6 @@ fn split_words(words: &str) -> usize {
     syntax::tokens(words, 0)
         .filter(|(_, word)| word_pieces(word).len() > 1)
         .count()
-}
-
-/// Whether the reader crashes on `location`'s culturalKnowledge words.
-pub fn crashes(location: &Location<'_>) -> bool {
-    location
-        .cultural_knowledge()
-        .is_some_and(|words| split_words(words.value) >= CRASHING_SPLIT_WORDS)
 }
 
 /// Checks the culturalKnowledge words of `location`, if `reader` reads them.
@@ -68,7 +64,7 @@ pub fn check(location: &Location<'_>, reader: Reader, out: &mut Diagnostics) {
         return;
     }
     let tokens: Vec<_> = syntax::tokens(words.value, words.span.start as usize).collect();
-    let loaded: usize = tokens.iter().map(|(_, word)| word_pieces(word).len()).sum();
+    let loaded = loaded_words(words.value);
     let split = split_words(words.value);
     for (index, (span, word)) in tokens.iter().enumerate() {
         let pieces = word_pieces(word);
@@ -78,6 +74,10 @@ pub fn check(location: &Location<'_>, reader: Reader, out: &mut Diagnostics) {
         }
         let consequence = if split >= CRASHING_SPLIT_WORDS {
             " Two such words overflow its buffer of two words: the reader crashes while the robot starts.".to_string()
+        } else if crashes(location, reader) {
+            format!(
+                " With the others that makes {loaded} words, twice what its buffer holds ({WORD_BUFFER}) or more: the reader crashes while the robot starts."
+            )
         } else if loaded > WORD_BUFFER {
             format!(
                 " With the others that makes {loaded} words, more than its buffer holds ({WORD_BUFFER})."
