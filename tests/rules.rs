@@ -276,6 +276,7 @@ rule_tests! {
     compat_bom: "compat-bom" => [(1, 1)];
     compat_too_many_cultural_keys: "compat-too-many-cultural-keys" => [(11, 71)];
     compat_indented_line: "compat-indented-line" => [(2, 1), (5, 1), (21, 1)];
+    compat_key_too_long: "compat-key-too-long" => [(1, 1), (5, 200), (11, 33)];
     compat_cultural_word_split: "compat-cultural-word-split" => [(10, 33), (20, 33), (20, 39)];
     compat_ignored_key: "compat-ignored-key" [reader(Reader::V2025_06)] => [(4, 1), (15, 1)];
     not_an_environment_knowledge_base: "not-an-environment-knowledge-base" => [(1, 1)];
@@ -380,6 +381,7 @@ fn the_catalogue_is_the_specified_one() {
         ("compat-bom", Error, true),
         ("compat-too-many-cultural-keys", Error, false),
         ("compat-indented-line", Error, true),
+        ("compat-key-too-long", Error, false),
         ("compat-cultural-word-split", Error, false),
         ("compat-reader-crash", Error, true),
         ("compat-slow-load", Warning, false),
@@ -713,6 +715,39 @@ fn compat_line_too_long_says_where_the_robot_stops() {
         "{}",
         messages[2]
     );
+}
+
+#[test]
+fn compat_key_too_long_follows_where_the_reader_cuts_the_line() {
+    let at = |reader_version| -> Vec<(u32, u32)> {
+        let all = findings("rules/compat-key-too-long/bad.dat", reader(reader_version));
+        of_rule(&all, "compat-key-too-long")
+            .iter()
+            .map(|f| (f.line, f.column))
+            .collect()
+    };
+    // A 600-byte buffer reads line 5 whole: its long word is a message's, not a first word.
+    assert_eq!(at(Reader::V2026_03), [(1, 1), (11, 33)]);
+    // The document's reader has no culturalKnowledge, and cuts line 5 at 199 bytes.
+    assert_eq!(at(Reader::D542), [(1, 1), (5, 200)]);
+    let all = findings("rules/compat-key-too-long/bad.dat", Options::default());
+    let cut = of_rule(&all, "compat-key-too-long")[1];
+    assert_eq!(
+        cut.diagnostic.location_id,
+        Some(1),
+        "the message's location"
+    );
+    // The cuts at 199 and 397 bytes fall inside an `é`: each finding starts at that character.
+    let text = format!("preGestureMessageEnglish 1 x{}\n", "é".repeat(400));
+    let all = findings_of(
+        &SourceFile::from_bytes("e.dat", text.into_bytes()),
+        Options::default(),
+    );
+    let cut: Vec<(u32, u32)> = of_rule(&all, "compat-key-too-long")
+        .iter()
+        .map(|f| (f.line, f.column))
+        .collect();
+    assert_eq!(cut, [(1, 114), (1, 214), (1, 313)]);
 }
 
 #[test]

@@ -13,7 +13,7 @@
 use std::borrow::Cow;
 
 use crate::reader::chunks;
-use crate::syntax::Span;
+use crate::syntax::{floor_char_boundary, Span};
 
 /// The robot reads both files with this buffer (`STRING_LENGTH`).
 pub const LINE_BUFFER: usize = 200;
@@ -127,14 +127,6 @@ fn c_words(line: &str, offset: usize) -> Vec<(&str, Span)> {
         at += word.len() + 1;
     }
     words
-}
-
-fn floor_char_boundary(text: &str, mut at: usize) -> usize {
-    at = at.min(text.len());
-    while !text.is_char_boundary(at) {
-        at -= 1;
-    }
-    at
 }
 
 /// The types file: the keys of the culture knowledge base and the type of each.

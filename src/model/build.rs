@@ -353,7 +353,7 @@ impl<'a> Builder<'a> {
     }
 
     fn line(&mut self, line: &Line, out: &mut impl LineFindings) {
-        self.facts.note_length(line);
+        self.facts.note_length(line, self.text);
         out.line(line, self.text);
         if let Body::Entry { key, args } = line.body {
             if syntax::is_c_space_only(&self.text.as_bytes()[key.start as usize..args.end as usize])

@@ -274,13 +274,22 @@ pub struct LineFacts {
     pub long_lines: Vec<Span>,
     /// Lines of a key that start with a blank, in file order.
     pub indented_lines: Vec<Span>,
+    /// Lines shorter than every reader's line buffer whose first word is as long as the
+    /// reader's key buffer or longer, in file order (the longer lines are in `long_lines`).
+    pub long_first_words: Vec<Span>,
 }
 
 impl LineFacts {
-    /// Notes `line`'s length.
-    pub fn note_length(&mut self, line: &crate::syntax::Line) {
-        if line.span.len() >= crate::reader::Reader::SMALLEST_LINE_BUFFER {
+    /// Notes `line`'s length, and the length of its first word where it can matter.
+    pub fn note_length(&mut self, line: &crate::syntax::Line, text: &str) {
+        use crate::reader::{key_buffer, Reader};
+        let length = line.span.len();
+        if length >= Reader::SMALLEST_LINE_BUFFER {
             self.long_lines.push(line.span);
+        } else if length >= key_buffer::KEY_BUFFER
+            && key_buffer::overflows(&text.as_bytes()[line.span.range()])
+        {
+            self.long_first_words.push(line.span);
         }
     }
 
@@ -296,6 +305,7 @@ impl LineFacts {
         }
         self.long_lines.extend(later.long_lines);
         self.indented_lines.extend(later.indented_lines);
+        self.long_first_words.extend(later.long_first_words);
     }
 }
 

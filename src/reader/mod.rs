@@ -7,6 +7,7 @@
 //! single lines ([`line::read`]) and of the written model.
 
 pub mod export;
+pub mod key_buffer;
 pub mod line;
 mod load;
 mod scan;

@@ -164,6 +164,7 @@ pub static ALL: &[&Rule] = &[
     &compat::compat_bom::COMPAT_BOM,
     &compat::compat_too_many_cultural_keys::COMPAT_TOO_MANY_CULTURAL_KEYS,
     &compat::compat_indented_line::COMPAT_INDENTED_LINE,
+    &compat::compat_key_too_long::COMPAT_KEY_TOO_LONG,
     &compat::compat_cultural_word_split::COMPAT_CULTURAL_WORD_SPLIT,
     &compat::compat_reader_crash::COMPAT_READER_CRASH,
     &compat::compat_slow_load::COMPAT_SLOW_LOAD,

@@ -14,7 +14,7 @@ mod span;
 mod swar;
 
 pub use line::{lines, lines_from, Body, Line, LineEnding, Lines, BOM};
-pub use span::Span;
+pub use span::{floor_char_boundary, Span};
 
 use blanks::{first_gap, next_blank, next_non_blank};
 

@@ -7,7 +7,26 @@ pub struct Span {
     pub end: u32,
 }
 
+/// The last character boundary of `text` at or before `at` (its end, past it).
+pub fn floor_char_boundary(text: &str, at: usize) -> usize {
+    let mut at = at.min(text.len());
+    while !text.is_char_boundary(at) {
+        at -= 1;
+    }
+    at
+}
+
 impl Span {
+    /// The smallest span of whole characters of `text` that holds its bytes `start..end`
+    /// (the robot's reader cuts bytes, sometimes inside a character).
+    pub fn of_characters(text: &str, start: usize, end: usize) -> Span {
+        let mut end = end.min(text.len());
+        while !text.is_char_boundary(end) {
+            end += 1;
+        }
+        Span::new(floor_char_boundary(text, start), end)
+    }
+
     pub fn new(start: usize, end: usize) -> Span {
         debug_assert!(start <= end);
         Span {

@@ -6,6 +6,7 @@ pub mod compat_crlf;
 pub mod compat_cultural_word_split;
 pub mod compat_ignored_key;
 pub mod compat_indented_line;
+pub mod compat_key_too_long;
 pub mod compat_leading_symbol;
 pub mod compat_line_too_long;
 pub mod compat_no_final_newline;
@@ -26,6 +27,7 @@ pub fn check_file(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut 
     compat_line_too_long::check(kb, text, reader, out);
     compat_no_final_newline::check(text, reader, out);
     compat_indented_line::check(kb, text, reader, out);
+    compat_key_too_long::check(kb, text, reader, out);
     legacy_key::check(kb, text, reader, out);
     compat_ignored_key::check(kb, text, reader, out);
     arm_blanks_are_errors(kb, text, reader, out);
