@@ -329,6 +329,7 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
         'ekb;report' {
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Write the page here (`-` is standard output)')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Write the page here (`-` is standard output)')
+            [CompletionResult]::new('--po', '--po', [CompletionResultType]::ParameterName, 'Mark the translations these translators'' PO files (of `ekb export --format po`) say were made for an English text that has since changed (stale)')
             [CompletionResult]::new('--map-config', '--map-config', [CompletionResultType]::ParameterName, 'The robot''s mapGenerationConfiguration.ini: check poses against its map and draw on it')
             [CompletionResult]::new('--map-image', '--map-image', [CompletionResultType]::ParameterName, 'A map image instead (PNG: white free, black occupied), with --map-size; the robot''s radius is taken as 0.3 m')
             [CompletionResult]::new('--map-size', '--map-size', [CompletionResultType]::ParameterName, 'The map image''s width and height, in metres')

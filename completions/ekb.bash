@@ -1308,7 +1308,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__report)
-            opts="-o -v -q -h -V --output --map-config --map-image --map-size --config --color --verbose --reader --quiet --settings --isolated --help --version"
+            opts="-o -v -q -h -V --output --po --map-config --map-image --map-size --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1319,6 +1319,10 @@ _ekb() {
                     return 0
                     ;;
                 -o)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --po)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

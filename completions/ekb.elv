@@ -311,6 +311,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
         &'ekb;report'= {
             cand -o 'Write the page here (`-` is standard output)'
             cand --output 'Write the page here (`-` is standard output)'
+            cand --po 'Mark the translations these translators'' PO files (of `ekb export --format po`) say were made for an English text that has since changed (stale)'
             cand --map-config 'The robot''s mapGenerationConfiguration.ini: check poses against its map and draw on it'
             cand --map-image 'A map image instead (PNG: white free, black occupied), with --map-size; the robot''s radius is taken as 0.3 m'
             cand --map-size 'The map image''s width and height, in metres'

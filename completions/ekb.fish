@@ -357,6 +357,7 @@ complete -c ekb -n "__fish_ekb_using_subcommand map" -l isolated -d 'Use no sett
 complete -c ekb -n "__fish_ekb_using_subcommand map" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand map" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand report" -s o -l output -d 'Write the page here (`-` is standard output)' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand report" -l po -d 'Mark the translations these translators\' PO files (of `ekb export --format po`) say were made for an English text that has since changed (stale)' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand report" -l map-config -d 'The robot\'s mapGenerationConfiguration.ini: check poses against its map and draw on it' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand report" -l map-image -d 'A map image instead (PNG: white free, black occupied), with --map-size; the robot\'s radius is taken as 0.3 m' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand report" -l map-size -d 'The map image\'s width and height, in metres' -r

@@ -13,8 +13,8 @@ use crate::diagnostic::{Diagnostic, RuleCount, Summary};
 use crate::map::LabMap;
 use crate::model::build::{build, Options};
 use crate::model::KnowledgeBase;
-use crate::reader::{Loaded, Reader};
-use crate::rules::selection::RuleSet;
+use crate::reader::Reader;
+use crate::rules::selection::{RuleSelector, RuleSet};
 use crate::rules::{self, compat, structure, Rule};
 use crate::source::SourceFile;
 use crate::suppression;
@@ -150,29 +150,6 @@ impl Checked<'_> {
             .collect()
     }
 
-    /// Runs the map rules (SPEC §10) on `loaded`, this file as [`Checked::reader`] loads
-    /// it, and adds their findings as if the check had made them.
-    pub fn check_map(&mut self, map: &LabMap, loaded: &Loaded<'_>) {
-        let mut found = Diagnostics {
-            kept: std::mem::take(&mut self.diagnostics),
-            counts: std::mem::take(&mut self.counts),
-            keep_every_fix: false,
-        };
-        let mut on_map = Diagnostics::default();
-        rules::map::check(&self.kb, loaded, map, &mut on_map);
-        on_map.kept.retain(|d| self.rules.is_enabled(d.rule));
-        on_map
-            .counts
-            .0
-            .retain(|(rule, _)| self.rules.is_enabled(rule));
-        found.append(on_map);
-        let Diagnostics { kept, counts, .. } = found;
-        self.diagnostics = kept;
-        sort_by_position(&mut self.diagnostics);
-        self.omitted = omitted_notes(&self.diagnostics, &counts);
-        self.counts = counts;
-    }
-
     /// The findings to show, in order: the first [`MAX_SHOWN_PER_RULE`] of each rule, and
     /// in place of the others the rule's note from [`Checked::omitted`].
     pub fn shown(&self) -> impl Iterator<Item = &Diagnostic> {
@@ -199,7 +176,19 @@ pub fn check<'a>(source: &'a SourceFile, options: &Options) -> Checked<'a> {
 /// the file's suppression comments silence what they name. A fix that the robot's reader
 /// would misread the result of is not offered ([`verify_fixes`]).
 pub fn check_with<'a>(source: &'a SourceFile, options: &Options, rules: &RuleSet) -> Checked<'a> {
-    check_verified(source, options, rules, Diagnostics::default())
+    check_on_map(source, options, rules, None)
+}
+
+/// [`check_with`], and with a `map`, the map rules (SPEC §10) too, on the poses as the
+/// robot's reader loads them: their findings are chosen, suppressed and graded with the
+/// others ([`finish`]), so that a suppression only they use is used.
+pub fn check_on_map<'a>(
+    source: &'a SourceFile,
+    options: &Options,
+    rules: &RuleSet,
+    map: Option<&LabMap>,
+) -> Checked<'a> {
+    check_verified(source, options, rules, Diagnostics::default(), map)
 }
 
 /// [`check_with`], keeping every finding of a fixable rule, not the first
@@ -207,7 +196,8 @@ pub fn check_with<'a>(source: &'a SourceFile, options: &Options, rules: &RuleSet
 /// file, however many there are (a pass for each ten thousand made a million fixes
 /// quadratic). Past the first [`MAX_KEPT_PER_RULE`], a finding keeps its fix and no words
 /// (its message, help and labels are empty): the memory it takes grows with the number of
-/// fixes, as the edits do.
+/// fixes, as the edits do. The map rules do not run (none has a fix), so a suppression of
+/// theirs is never unused here, and never removed.
 pub fn check_for_fix<'a>(
     source: &'a SourceFile,
     options: &Options,
@@ -217,17 +207,18 @@ pub fn check_for_fix<'a>(
         keep_every_fix: true,
         ..Diagnostics::default()
     };
-    check_verified(source, options, rules, out)
+    check_verified(source, options, rules, out, None)
 }
 
-/// [`check_with`], reporting into `out` (which says what it keeps).
+/// [`check_on_map`], reporting into `out` (which says what it keeps).
 fn check_verified<'a>(
     source: &'a SourceFile,
     options: &Options,
     rules: &RuleSet,
     out: Diagnostics,
+    map: Option<&LabMap>,
 ) -> Checked<'a> {
-    let mut checked = check_unverified(source, options, rules, out);
+    let mut checked = check_unverified(source, options, rules, out, map);
     verify_fixes(
         &mut checked.diagnostics,
         source.text(),
@@ -237,13 +228,27 @@ fn check_verified<'a>(
     checked
 }
 
-/// [`check_verified`], its fixes as the rules made them.
+/// The check of `source` (with the map rules when there is a `map`), reported into `out`
+/// (which says what it keeps), its fixes as the rules made them.
 fn check_unverified<'a>(
     source: &'a SourceFile,
     options: &Options,
     rules: &RuleSet,
     mut out: Diagnostics,
+    map: Option<&LabMap>,
 ) -> Checked<'a> {
+    // Without a map the map rules do not run: a suppression of theirs cannot be judged
+    // unused.
+    let without_map;
+    let rules = match map {
+        Some(_) => rules,
+        None => {
+            let mut off = rules.clone();
+            off.ignore(&[RuleSelector::Category(rules::Category::Map)]);
+            without_map = off;
+            &without_map
+        }
+    };
     structure::invalid_utf8::check(source, &mut out);
     compat::compat_bom::check(source.text(), &mut out);
     // The source keeps the first invalid range of a bounded number of lines only.
@@ -263,6 +268,10 @@ fn check_unverified<'a>(
         .reader
         .unwrap_or_else(|| Reader::default_for(options.dialect.or(kb.dialect)));
     rules::check_model(&kb, source.text(), reader, &mut out);
+    if let Some(map) = map {
+        let loaded = crate::reader::load(source.text().as_bytes(), reader);
+        rules::map::check(&kb, &loaded, map, &mut out);
+    }
     finish(
         source,
         FileKind::EnvironmentKnowledgeBase,
@@ -392,7 +401,8 @@ fn misread_once_fixed(text: &str, edits: &[crate::diagnostic::Edit], options: &O
             .iter()
             .any(|span| d.span.start < span.end && span.start < d.span.end.max(d.span.start + 1))
     };
-    check_unverified(&fixed, options, &RuleSet::default(), Diagnostics::default())
+    let rules = RuleSet::default();
+    check_unverified(&fixed, options, &rules, Diagnostics::default(), None)
         .diagnostics
         .iter()
         .any(|d| d.severity() == crate::Severity::Error && about_reading(d) && overlaps(d))

@@ -648,3 +648,188 @@ fn the_png_scales_the_map_when_the_drawing_does() {
         "location 1, off the map"
     );
 }
+
+// ---------------------------------------------------------------------------------------
+// Map findings are chosen, suppressed and graded as every other finding is
+
+const IN_OBSTACLE: &str = "tests/fixtures/rules/pose-in-obstacle/bad.dat";
+
+/// A folder with `kb.dat`: the pose-in-obstacle fixture with `comment` written above its
+/// line `above` (1-based), and `ekb.toml` if `settings` is given.
+fn with_comment(
+    above: usize,
+    comment: &str,
+    settings: Option<&str>,
+) -> (tempfile::TempDir, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(root().join(IN_OBSTACLE)).unwrap();
+    let mut lines: Vec<&str> = text.lines().collect();
+    if !comment.is_empty() {
+        lines.insert(above - 1, comment);
+    }
+    let kb = dir.path().join("kb.dat");
+    std::fs::write(&kb, lines.join("\n") + "\n").unwrap();
+    if let Some(settings) = settings {
+        std::fs::write(dir.path().join("ekb.toml"), settings).unwrap();
+    }
+    let kb = kb.to_str().unwrap().to_string();
+    (dir, kb)
+}
+
+/// The findings of the map rules and of `unused-suppression` of `ekb check FILE ARGS`
+/// (JSON), as (rule, line, severity).
+fn map_and_unused(file: &str, args: &[&str]) -> Vec<(String, u64, String)> {
+    let run = ekb(&[&["check", file, "--format", "json"][..], args].concat());
+    let json: serde_json::Value = serde_json::from_slice(&run.stdout).expect(&run.stderr);
+    json["diagnostics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|d| {
+            let rule = ekb::rules::by_name(d["rule"].as_str().unwrap()).unwrap();
+            rule.category == ekb::rules::Category::Map || rule.name == "unused-suppression"
+        })
+        .map(|d| {
+            let text = |key: &str| d[key].as_str().unwrap().to_string();
+            (text("rule"), d["line"].as_u64().unwrap(), text("severity"))
+        })
+        .collect()
+}
+
+fn finding(rule: &str, line: u64, severity: &str) -> (String, u64, String) {
+    (rule.to_string(), line, severity.to_string())
+}
+
+/// How many times `ekb map` and `ekb report` show `rule` as a finding of `file`: the red
+/// labels of the drawing, and the rows of the report's findings.
+fn drawn_and_reported(file: &str, args: &[&str], rule: &str) -> (usize, usize) {
+    let svg = svg_of(file, args);
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let drawn = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text") && n.attribute("fill") == Some("#c8102e"))
+        .filter(|n| n.text() == Some(rule))
+        .count();
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("report.html");
+    let run = ekb(&[&["report", file, "-o", out.to_str().unwrap()][..], args].concat());
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let page = std::fs::read_to_string(out).unwrap();
+    let reported = page
+        .matches(&format!("<td><code>{rule}</code></td>"))
+        .count();
+    (drawn, reported)
+}
+
+#[test]
+fn a_suppression_silences_a_map_finding_in_every_output_and_is_used() {
+    let map = ["--map-config", LAB_MAP];
+    let (_dir, kb) = with_comment(2, "# ekb: ignore[pose-in-obstacle]", None);
+    // Location 1's pose (now line 3) is silenced; location 2's (line 15) is not.
+    assert_eq!(
+        map_and_unused(&kb, &map),
+        [finding("pose-in-obstacle", 15, "error")]
+    );
+    assert_eq!(drawn_and_reported(&kb, &map, "pose-in-obstacle"), (1, 1));
+    let concise = ekb(&["check", &kb, "--format", "concise", "--map-config", LAB_MAP]);
+    let stdout = String::from_utf8(concise.stdout).unwrap();
+    assert!(
+        !stdout.contains(":3:33: error[pose-in-obstacle]"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains(":15:33: error[pose-in-obstacle]"),
+        "{stdout}"
+    );
+    // Without the suppression, both are found and drawn.
+    assert_eq!(
+        drawn_and_reported(IN_OBSTACLE, &map, "pose-in-obstacle"),
+        (2, 2)
+    );
+    // A category works as the rule's name does, and a file-wide suppression too.
+    let (_dir, kb) = with_comment(2, "# ekb: ignore[map]", None);
+    assert_eq!(
+        map_and_unused(&kb, &map),
+        [finding("pose-in-obstacle", 15, "error")]
+    );
+    let (_dir, kb) = with_comment(1, "# ekb: ignore-file[pose-in-obstacle]", None);
+    assert_eq!(map_and_unused(&kb, &map), []);
+    assert_eq!(drawn_and_reported(&kb, &map, "pose-in-obstacle"), (0, 0));
+}
+
+#[test]
+fn a_map_suppression_moved_off_its_line_is_unused_and_without_a_map_is_not_judged() {
+    let map = ["--map-config", LAB_MAP];
+    // Above location 1's English message instead of its pose.
+    let (_dir, kb) = with_comment(5, "# ekb: ignore[pose-in-obstacle]", None);
+    assert_eq!(
+        map_and_unused(&kb, &map),
+        [
+            finding("pose-in-obstacle", 2, "error"),
+            finding("unused-suppression", 5, "warning"),
+            finding("pose-in-obstacle", 15, "error"),
+        ]
+    );
+    // Without a map the map rules do not run, so nothing says whether it is used; `ekb
+    // fix` (which runs no map rule) keeps it.
+    assert_eq!(map_and_unused(&kb, &[]), []);
+    let run = ekb(&["fix", &kb]);
+    assert_eq!(
+        run.code, 1,
+        "errors are left to correct by hand: {}",
+        run.stderr
+    );
+    let text = std::fs::read_to_string(&kb).unwrap();
+    assert!(text.contains("# ekb: ignore[pose-in-obstacle]\n"), "{text}");
+    // A rule of another category in the same comment is still judged.
+    let (_dir, kb) = with_comment(5, "# ekb: ignore[pose-in-obstacle, repeated-word]", None);
+    let unused = map_and_unused(&kb, &[]);
+    assert_eq!(unused, [finding("unused-suppression", 5, "warning")]);
+}
+
+#[test]
+fn settings_choose_and_grade_the_map_rules_in_every_output() {
+    let config = root().join(LAB_MAP);
+    let map = format!("[map]\nconfig = {:?}\n", config.to_str().unwrap());
+    // `[map] config` alone: the map rules run, as `--map-config` runs them.
+    let (_dir, kb) = with_comment(1, "", Some(&map));
+    let both = [
+        finding("pose-in-obstacle", 2, "error"),
+        finding("pose-in-obstacle", 14, "error"),
+    ];
+    assert_eq!(map_and_unused(&kb, &[]), both);
+    assert_eq!(drawn_and_reported(&kb, &[], "pose-in-obstacle"), (2, 2));
+    // `ignore = ["map"]`: none runs, in check, map and report alike.
+    let (_dir, kb) = with_comment(1, "", Some(&format!("{map}[check]\nignore = [\"map\"]\n")));
+    assert_eq!(map_and_unused(&kb, &[]), []);
+    assert_eq!(drawn_and_reported(&kb, &[], "pose-in-obstacle"), (0, 0));
+    // …and a suppression of a rule the settings turn off is not judged either.
+    let settings = format!("{map}[check]\nignore = [\"pose-in-obstacle\"]\n");
+    let (_dir, kb) = with_comment(5, "# ekb: ignore[pose-in-obstacle]", Some(&settings));
+    assert_eq!(map_and_unused(&kb, &[]), []);
+    // A severity override grades them.
+    let settings = format!("{map}[check]\nseverity = {{ pose-in-obstacle = \"warning\" }}\n");
+    let (_dir, kb) = with_comment(1, "", Some(&settings));
+    assert_eq!(
+        map_and_unused(&kb, &[]),
+        [
+            finding("pose-in-obstacle", 2, "warning"),
+            finding("pose-in-obstacle", 14, "warning"),
+        ]
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("report.html");
+    let run = ekb(&["report", &kb, "-o", out.to_str().unwrap()]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let page = std::fs::read_to_string(out).unwrap();
+    assert_eq!(
+        page.matches("<tr class=\"warning\"><td>2:33</td><td><span class=\"severity\">warning</span></td><td><code>pose-in-obstacle</code>").count(),
+        1,
+        "{page}"
+    );
+    // `per-file-ignores` too.
+    let settings = format!("{map}[check]\nper-file-ignores = {{ \"kb.dat\" = [\"map\"] }}\n");
+    let (_dir, kb) = with_comment(1, "", Some(&settings));
+    assert_eq!(map_and_unused(&kb, &[]), []);
+    assert_eq!(drawn_and_reported(&kb, &[], "pose-in-obstacle"), (0, 0));
+}

@@ -143,9 +143,174 @@ fn copies_of_the_english_and_failing_translations_are_marked() {
         "{page}"
     );
     let (_, page) = report(dir.path(), "tests/fixtures/rules/double-space/bad.dat", &[]);
-    assert!(page.contains("<td class=\"failing\" lang=\"zu\">Siyakwamukela  elebhu yamarobhothi <span class=\"rule\">double-space</span>"));
+    assert!(page.contains("<td class=\"failing\" lang=\"zu\"><span class=\"badge fails\" title=\"double-space: two or more spaces in a row inside a message, in any language\">fails: double-space</span> Siyakwamukela  elebhu yamarobhothi <span class=\"line\">"));
     // The status counts them as the translations command does.
     assert!(page.contains("<tr><th scope=\"row\">isiZulu</th>"));
+}
+
+const STALE_AND_FAILING: &str = "tests/fixtures/report/stale-and-failing.dat";
+const STALE_PO: &str = "tests/fixtures/report/stale-and-failing.zu.po";
+
+/// One message cell of the tour: where it is, its classes, and its badges as (text, title).
+#[derive(Debug)]
+struct Cell {
+    location: u32,
+    phase: String,
+    lang: String,
+    classes: Vec<String>,
+    badges: Vec<(String, String)>,
+}
+
+/// The message cells of the page's tour, each `<td>` parsed as XML (what the page writes
+/// inside a cell is well-formed).
+fn message_cells(page: &str) -> Vec<Cell> {
+    let mut cells = Vec::new();
+    for article in page.split("<article class=\"stop\" id=\"location-").skip(1) {
+        let location = article[..article.find('"').unwrap()].parse().unwrap();
+        let article = &article[..article.find("</article>").unwrap()];
+        for row in article.split("<tr><th scope=\"row\">").skip(1) {
+            let phase = row[..row.find(" pointing</th>").unwrap()].to_string();
+            for td in row.split("<td").skip(1) {
+                let td = format!("<td{}</td>", &td[..td.find("</td>").unwrap()]);
+                let doc = roxmltree::Document::parse(&td).unwrap_or_else(|e| panic!("{e}: {td}"));
+                let cell = doc.root_element();
+                let badges = cell
+                    .children()
+                    .filter(|n| {
+                        n.attribute("class")
+                            .is_some_and(|c| c.starts_with("badge "))
+                    })
+                    .map(|n| {
+                        let title = n.attribute("title").expect("a badge has a title");
+                        (n.text().unwrap().to_string(), title.to_string())
+                    })
+                    .collect();
+                cells.push(Cell {
+                    location,
+                    phase: phase.clone(),
+                    lang: cell.attribute("lang").unwrap_or("").to_string(),
+                    classes: cell
+                        .attribute("class")
+                        .unwrap_or("")
+                        .split_whitespace()
+                        .map(str::to_string)
+                        .collect(),
+                    badges,
+                });
+            }
+        }
+    }
+    cells
+}
+
+#[test]
+fn stale_and_failing_translations_are_marked_on_exactly_their_cells() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, page) = report(dir.path(), STALE_AND_FAILING, &["--po", STALE_PO]);
+    let cells = message_cells(&page);
+    assert_eq!(
+        cells.len(),
+        2 * 2 * 3,
+        "two locations, two messages, three languages"
+    );
+    for cell in &cells {
+        let at = (cell.location, cell.phase.as_str(), cell.lang.as_str());
+        let texts: Vec<&str> = cell.badges.iter().map(|(text, _)| text.as_str()).collect();
+        match at {
+            // The PO file says it was made for "Welcome to the lab".
+            (1, "Before", "zu") => {
+                assert_eq!(texts, ["stale"], "{cell:?}");
+                assert!(cell.classes.contains(&"stale".to_string()), "{cell:?}");
+                assert!(!cell.classes.contains(&"failing".to_string()), "{cell:?}");
+                assert_eq!(
+                    cell.badges[0].1,
+                    format!("stale: translated from \"Welcome to the lab\", an English text that has since changed ({STALE_PO}:7)")
+                );
+            }
+            // The English asks, the isiZulu does not.
+            (2, "After", "zu") => {
+                assert_eq!(texts, ["fails: end-punctuation-mismatch"], "{cell:?}");
+                assert_eq!(cell.classes, ["failing"], "{cell:?}");
+                assert!(cell.badges[0]
+                    .1
+                    .starts_with("end-punctuation-mismatch: `.` `?`"));
+            }
+            // Everything else is clean: the PO file's current entry (location 1 after) and
+            // its stale entry whose translation the file no longer has (location 2 before)
+            // mark nothing.
+            _ => {
+                assert!(texts.is_empty(), "{cell:?}");
+                assert_eq!(cell.classes, [""; 0], "{cell:?}");
+            }
+        }
+    }
+    // The same facts as `ekb translations`: one isiZulu message fails a check.
+    assert!(page.contains("<tr><th scope=\"row\">isiZulu</th>"));
+    // The legend says what each mark means, in words.
+    for legend in [
+        "<span class=\"badge stale\">stale</span> translated from an English text that has since changed, as the translators' PO files given say",
+        "<span class=\"badge fails\">fails: RULE</span> the message fails that translation rule",
+    ] {
+        assert!(page.contains(legend), "{legend}");
+    }
+    // Print styles are intact, and the marks are styled.
+    let style = &page[page.find("<style>").unwrap()..page.find("</style>").unwrap()];
+    for rule in ["@media print", ".badge.stale", ".badge.fails", "td.stale"] {
+        assert!(style.contains(rule), "{rule}");
+    }
+}
+
+#[test]
+fn without_a_po_file_nothing_is_stale_and_the_legend_says_how_to_tell() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, page) = report(dir.path(), STALE_AND_FAILING, &[]);
+    let marked: Vec<Cell> = message_cells(&page)
+        .into_iter()
+        .filter(|cell| !cell.badges.is_empty())
+        .collect();
+    assert_eq!(marked.len(), 1, "{marked:?}");
+    let (cell, badge) = (&marked[0], &marked[0].badges[0].0);
+    assert_eq!(
+        (cell.location, cell.lang.as_str(), badge.as_str()),
+        (2, "zu", "fails: end-punctuation-mismatch")
+    );
+    assert!(page.contains("(no PO file was given: <code>ekb report --po zu.po</code> tells)"));
+}
+
+#[test]
+fn a_po_file_of_another_knowledge_base_is_an_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let po = dir.path().join("other.po");
+    let text = std::fs::read_to_string(root().join(STALE_PO)).unwrap();
+    std::fs::write(
+        &po,
+        text.replace(
+            "location 2 preGestureMessage",
+            "location 9 preGestureMessage",
+        ),
+    )
+    .unwrap();
+    let out = dir.path().join("report.html");
+    let output = assert_cmd::cargo::cargo_bin_cmd!("ekb")
+        .current_dir(root())
+        .env_remove("EKB_CONFIG")
+        .args([
+            "report",
+            STALE_AND_FAILING,
+            "--po",
+            po.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("other.po:17: unknown `msgctxt \"location 9 preGestureMessage\"`: the file has no such location"),
+        "{stderr}"
+    );
+    assert!(!out.exists(), "no page is written");
 }
 
 // ---------------------------------------------------------------------------------------
@@ -263,6 +428,15 @@ fn the_report_renders_in_chromium_without_console_errors() {
         );
         assert!(dom.contains(&html_text(&message)), "{message} not rendered");
     }
+    // The stale and failing marks render too.
+    let (marked, _) = report(dir.path(), STALE_AND_FAILING, &["--po", STALE_PO]);
+    let dump = headless(&chromium, &marked, &["--dump-dom"]);
+    assert_eq!(console_messages(&dump), Vec::<String>::new());
+    let dom = String::from_utf8(dump.stdout).unwrap();
+    assert!(
+        dom.contains(">stale</span>") && dom.contains(">fails: end-punctuation-mismatch</span>")
+    );
+    let (page, _) = report(dir.path(), SEED, &["--map-config", LAB_MAP]);
     // The screenshot: a PNG of the window's size, with the page drawn on it.
     let shot = dir.path().join("report.png");
     let run = headless(

@@ -393,7 +393,7 @@ mod any_input {
             ];
             check_set(&files);
             for source in &files[..3] {
-                ekb::mission::check::check_file(source, &Options::default(), &RuleSet::default());
+                ekb::mission::check::check_file(source, &Options::default(), &RuleSet::default(), None);
             }
             let Ok(mission) = ekb::mission::check::read_mission(files[0].text()) else {
                 return Ok(());

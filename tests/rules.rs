@@ -10,13 +10,14 @@
 
 use std::path::{Path, PathBuf};
 
-use ekb::commands::map::check_on_map;
+use ekb::check::check_on_map;
 use ekb::commands::rules::markdown_table;
 use ekb::diagnostic::{Diagnostic, Edit};
 use ekb::map::LabMap;
 use ekb::model::build::Options;
 use ekb::model::Dialect;
 use ekb::reader::Reader;
+use ekb::rules::selection::RuleSet;
 use ekb::rules::{self, Category, Rule};
 use ekb::source::{LineIndex, Position};
 use ekb::{Severity, SourceFile};
@@ -65,7 +66,7 @@ fn findings_on(source: &SourceFile, options: Options, map: Option<&LabMap>) -> V
         reader: options.reader.or_else(reads_arms),
         ..options
     };
-    let (checked, _) = check_on_map(source, &options, map);
+    let checked = check_on_map(source, &options, &RuleSet::default(), map);
     let text = source.text();
     let index = LineIndex::new(text);
     let at = |offset: u32| -> Position { index.position(text, offset) };

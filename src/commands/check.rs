@@ -3,7 +3,7 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use super::map::{on_map, MapArgs};
+use super::map::MapArgs;
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::Checked;
 use crate::diagnostic::{Hidden, Severity, Summary};
@@ -114,13 +114,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     // A mission or a culture file is recognised by its content and checked alone.
     let checked: Vec<Checked> = read
         .iter()
-        .map(|(_, options, rules, source)| {
-            let checked = check_file(source, options, rules);
-            match &map {
-                Some(map) => on_map(checked, Some(map)).0,
-                None => checked,
-            }
-        })
+        .map(|(_, options, rules, source)| check_file(source, options, rules, map.as_ref()))
         .collect();
     let exit = if args.add_ignore {
         let paths: Vec<PathBuf> = read.iter().map(|(path, ..)| path.clone()).collect();

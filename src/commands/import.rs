@@ -93,22 +93,46 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     )
 }
 
+/// A translator's PO file, read, and the language it is in.
+pub struct TranslatorsFile {
+    /// Its name, escaped for the terminal.
+    pub name: String,
+    pub po: po::PoFile,
+    pub language: Language,
+}
+
+impl TranslatorsFile {
+    /// Reads the PO file at `path`, in `lang` (else the language its header says); an
+    /// error names its line.
+    pub fn read(path: &Path, lang: Option<Language>) -> Result<TranslatorsFile, CommandError> {
+        let source = SourceFile::read(path)?;
+        let name = escape(source.name()).into_owned();
+        if let Some(bad) = source.invalid_utf8().first() {
+            let line = crate::source::LineIndex::new(source.text()).line(bad.start);
+            return Err(CommandError::Failed(format!(
+                "{name}:{line}: not UTF-8: save the PO file as UTF-8 (its header should say charset=UTF-8)"
+            )));
+        }
+        let fail_at = |line: u32, message: &str| {
+            CommandError::Failed(format!("{name}:{line}: {}", escape(message)))
+        };
+        let po = po::parse(source.text()).map_err(|e| fail_at(e.line, &e.message))?;
+        let language = import::language_of(&po, lang).map_err(|e| fail_at(e.line, &e.message))?;
+        Ok(TranslatorsFile { name, po, language })
+    }
+}
+
 /// `ekb import --po`: exit 1 when an entry was not imported (stale, refused), 2 when the PO
 /// file cannot be read or belongs to another knowledge base (nothing is written then).
 fn import_po(args: &Args, po_path: &Path, context: &Context) -> CommandResult {
-    let po_source = SourceFile::read(po_path)?;
-    let po_name = escape(po_source.name()).into_owned();
-    if let Some(bad) = po_source.invalid_utf8().first() {
-        let line = crate::source::LineIndex::new(po_source.text()).line(bad.start);
-        return Err(CommandError::Failed(format!(
-            "{po_name}:{line}: not UTF-8: save the PO file as UTF-8 (its header should say charset=UTF-8)"
-        )));
-    }
+    let TranslatorsFile {
+        name: po_name,
+        po,
+        language,
+    } = TranslatorsFile::read(po_path, args.lang)?;
     let fail_at = |line: u32, message: &str| {
         CommandError::Failed(format!("{po_name}:{line}: {}", escape(message)))
     };
-    let po = po::parse(po_source.text()).map_err(|e| fail_at(e.line, &e.message))?;
-    let language = import::language_of(&po, args.lang).map_err(|e| fail_at(e.line, &e.message))?;
     let path = context.file_to_rewrite(args.input.as_deref())?;
     let options = context.read_options(&path)?;
     let source = context.read(&path)?;

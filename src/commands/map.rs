@@ -5,13 +5,14 @@ use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 
 use super::{CommandError, CommandResult, Context, Exit};
-use crate::check::{check, Checked};
+use crate::check::{check_on_map, Checked};
 use crate::draw::{self, svg::MapImage, Scene};
 use crate::map::LabMap;
 use crate::model::build::Options;
 use crate::present;
 use crate::reader::{self, Loaded};
 use crate::render::escape::escape;
+use crate::rules::selection::{Choice, RuleSet};
 use crate::source::SourceFile;
 use crate::stderr_line;
 
@@ -57,26 +58,6 @@ impl MapArgs {
             None => Ok(None),
         }
     }
-}
-
-/// `source` checked (with the map rules when there is a map), and loaded as the reader it
-/// was checked against loads it.
-pub fn check_on_map<'a>(
-    source: &'a SourceFile,
-    options: &Options,
-    map: Option<&LabMap>,
-) -> (Checked<'a>, Loaded<'a>) {
-    on_map(check(source, options), map)
-}
-
-/// `checked` with the map rules run on it when there is a map, and its file as the reader
-/// it was checked against loads it.
-pub fn on_map<'a>(mut checked: Checked<'a>, map: Option<&LabMap>) -> (Checked<'a>, Loaded<'a>) {
-    let loaded = reader::load(checked.source.text().as_bytes(), checked.reader);
-    if let Some(map) = map {
-        checked.check_map(map, &loaded);
-    }
-    (checked, loaded)
 }
 
 #[derive(Debug, clap::Args)]
@@ -152,10 +133,12 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     Ok(Exit::Clean)
 }
 
-/// What `map` and `report` work on: a knowledge base, how to read it, and the map.
+/// What `map` and `report` work on: a knowledge base, how to read it, the rules its
+/// settings choose (as `ekb check` runs them), and the map.
 pub struct MapInput {
     pub source: SourceFile,
     pub options: Options,
+    pub rules: RuleSet,
     pub map: Option<LabMap>,
 }
 
@@ -168,12 +151,14 @@ impl MapInput {
     ) -> Result<MapInput, CommandError> {
         let path = context.input(file)?;
         let options = context.read_options(&path)?;
+        let rules = context.rules_for(&path, &Choice::default())?;
         let map_config = context.settings_for(&path)?.map.config;
         let map = map_args.load(map_config.map(|config| config.value))?;
         let source = context.read(&path)?;
         Ok(MapInput {
             source,
             options,
+            rules,
             map,
         })
     }
@@ -181,7 +166,9 @@ impl MapInput {
     /// The file checked (with the map rules), and loaded as its reader loads it; unless
     /// `quiet`, a note on standard error if it has errors.
     pub fn check(&self, quiet: bool) -> (Checked<'_>, Loaded<'_>) {
-        let (checked, loaded) = check_on_map(&self.source, &self.options, self.map.as_ref());
+        let map = self.map.as_ref();
+        let checked = check_on_map(&self.source, &self.options, &self.rules, map);
+        let loaded = reader::load(self.source.text().as_bytes(), checked.reader);
         present::note_errors(&checked, quiet);
         (checked, loaded)
     }

@@ -2,6 +2,7 @@
 //! (`ekb check FILE`, which recognises a mission or a culture file by its content).
 
 use crate::check::{self as env, Checked, Diagnostics, FileKind};
+use crate::map::LabMap;
 use crate::model::build::Options;
 use crate::model::{KnowledgeBase, Language};
 use crate::reader::Reader;
@@ -177,10 +178,18 @@ pub fn recognise(text: &str) -> FileKind {
     }
 }
 
-/// `ekb check FILE`: the file checked as the kind its content says, alone.
-pub fn check_file<'s>(source: &'s SourceFile, options: &Options, rules: &RuleSet) -> Checked<'s> {
+/// `ekb check FILE`: the file checked as the kind its content says, alone (an environment
+/// knowledge base with the map rules too when there is a `map`).
+pub fn check_file<'s>(
+    source: &'s SourceFile,
+    options: &Options,
+    rules: &RuleSet,
+    map: Option<&LabMap>,
+) -> Checked<'s> {
     let alone = match recognise(source.text()) {
-        FileKind::EnvironmentKnowledgeBase => return env::check_with(source, options, rules),
+        FileKind::EnvironmentKnowledgeBase => {
+            return env::check_on_map(source, options, rules, map)
+        }
         FileKind::Mission => MissionSources {
             mission: Some(source),
             ..MissionSources::default()

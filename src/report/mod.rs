@@ -19,12 +19,20 @@ use crate::present::{self, Gesture, Lines};
 use crate::reader::Loaded;
 use crate::render::markup::markup;
 use crate::render::FileReport;
+use crate::rules::Rule;
+use crate::translations::import::StaleTranslation;
 use crate::translations::{Catalog, State, Status, Unit};
 
 const STYLE: &str = include_str!("report.css");
 
-/// The page for `checked` (its file as `loaded`, on `map`).
-pub fn page(checked: &Checked<'_>, loaded: &Loaded<'_>, map: Option<&LabMap>) -> String {
+/// The page for `checked` (its file as `loaded`, on `map`), its `stale` translations
+/// marked (`None`: no translators' PO file was given to tell them).
+pub fn page(
+    checked: &Checked<'_>,
+    loaded: &Loaded<'_>,
+    map: Option<&LabMap>,
+    stale: Option<&[StaleTranslation]>,
+) -> String {
     let report = FileReport::new(checked);
     let lines = Lines::new(checked.source.text());
     // The rules found on each line, to mark the messages they are about.
@@ -79,6 +87,7 @@ pub fn page(checked: &Checked<'_>, loaded: &Loaded<'_>, map: Option<&LabMap>) ->
         lines: &lines,
         units: &units,
         findings_at: &findings_at,
+        stale,
     };
     tour_section(&mut html, checked, &views);
     status_section(
@@ -128,13 +137,20 @@ struct Views<'v> {
     lines: &'v Lines<'v>,
     units: &'v Units<'v, 'v>,
     findings_at: &'v dyn Fn(u32) -> Vec<&'static str>,
+    /// The translations that translators' PO files say were made for another English;
+    /// `None` without PO files.
+    stale: Option<&'v [StaleTranslation]>,
 }
 
 fn tour_section(html: &mut String, checked: &Checked<'_>, views: &Views<'_>) {
     html.push_str("<section id=\"tour\" aria-labelledby=\"tour-heading\">\n<h2 id=\"tour-heading\">The tour, stop by stop</h2>\n");
+    let stale = match views.stale {
+        Some(_) => "translated from an English text that has since changed, as the translators' PO files given say",
+        None => "translated from an English text that has since changed (no PO file was given: <code>ekb report --po zu.po</code> tells)",
+    };
     let _ = writeln!(
         html,
-        "<p class=\"legend\"><span class=\"placeholder\">placeholder</span> not translated yet · <span class=\"missing\">missing</span> the robot says nothing · <span class=\"same\">same as English</span> not translated · <span class=\"failing\">finding</span> a rule found something in this message · poses as the {} reader loads them.</p>",
+        "<p class=\"legend\"><span class=\"placeholder\">placeholder</span> not translated yet · <span class=\"missing\">missing</span> the robot says nothing · <span class=\"same\">same as English</span> not translated · <span class=\"badge stale\">stale</span> {stale} · <span class=\"badge fails\">fails: RULE</span> the message fails that translation rule (as <code>ekb translations</code> counts it) · <span class=\"failing\">finding</span> a rule found something in this message · poses as the {} reader loads them.</p>",
         checked.reader.name()
     );
     let stops: Vec<u32> = checked.kb.tour_stops().collect();
@@ -218,22 +234,18 @@ fn location_block(
         );
         let unit = views.units.get(&(location.id, phase)).copied();
         for language in Language::ALL {
-            message_cell(html, unit, language, views.findings_at);
+            message_cell(html, unit, language, views);
         }
         html.push_str("</tr>\n");
     }
     html.push_str("</tbody>\n</table>\n</article>\n");
 }
 
-fn message_cell(
-    html: &mut String,
-    unit: Option<&Unit<'_>>,
-    language: Language,
-    findings_at: &dyn Fn(u32) -> Vec<&'static str>,
-) {
+fn message_cell(html: &mut String, unit: Option<&Unit<'_>>, language: Language, views: &Views<'_>) {
     let lang = language_code(language);
     let message = unit.map(|unit| &unit.messages[language.index()]);
-    let (Some(message), Some(value)) = (message, message.and_then(|m| m.value)) else {
+    let (Some(unit), Some(message), Some(value)) = (unit, message, message.and_then(|m| m.value))
+    else {
         // Written with its key in the wrong case, the English is there but never said.
         let miscased = unit
             .and_then(|unit| unit.source)
@@ -246,7 +258,6 @@ fn message_cell(
         );
         return;
     };
-    let rules = findings_at(value.span.start);
     let mut classes = Vec::new();
     let mut tags = String::new();
     match message.state {
@@ -260,7 +271,43 @@ fn message_cell(
         }
         State::Translated | State::Missing => {}
     }
-    if fails(&rules) {
+    let stale = views
+        .stale
+        .unwrap_or_default()
+        .iter()
+        .find(|s| (s.location, s.phase, s.language) == (unit.location, unit.phase, language));
+    if let Some(stale) = stale {
+        classes.push("stale");
+        let _ = write!(
+            tags,
+            "<span class=\"badge stale\" title=\"{}\">stale</span> ",
+            markup(&stale.explanation())
+        );
+    }
+    // The translation rules it fails, as `ekb translations` counts them; a copy of the
+    // English says so in its own tag.
+    let same_as_source = crate::rules::translation::same_as_source::SAME_AS_SOURCE.name;
+    let failed: Vec<&'static Rule> = message
+        .checks
+        .iter()
+        .copied()
+        .filter(|rule| rule.name != same_as_source)
+        .collect();
+    for rule in &failed {
+        let _ = write!(
+            tags,
+            "<span class=\"badge fails\" title=\"{}: {}\">fails: {}</span> ",
+            rule.name,
+            markup(rule.summary),
+            rule.name
+        );
+    }
+    // The other rules found on its line.
+    let rules: Vec<&str> = (views.findings_at)(value.span.start)
+        .into_iter()
+        .filter(|rule| !failed.iter().any(|failed| failed.name == *rule))
+        .collect();
+    if !failed.is_empty() || fails(&rules) {
         classes.push("failing");
     }
     let findings: String = rules

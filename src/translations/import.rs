@@ -148,3 +148,61 @@ pub fn plan<'p>(
     }
     Ok(plan)
 }
+
+/// A translation in the file that a PO file says was made for another English text: the
+/// entry is [stale](Plan::stale) and its translation is what the file has (a file whose
+/// translation differs from the entry's was translated anew since, as far as it tells).
+#[derive(Debug, Clone, PartialEq)]
+pub struct StaleTranslation {
+    pub location: u32,
+    pub phase: Phase,
+    pub language: Language,
+    /// The English the translation was made for (the entry's `msgid`).
+    pub translated_from: String,
+    /// Where the PO file says so: `zu.po:12`.
+    pub entry: String,
+}
+
+impl StaleTranslation {
+    /// One sentence: what the translation was made for, and where that is said.
+    pub fn explanation(&self) -> String {
+        format!(
+            "stale: translated from {}, an English text that has since changed ({})",
+            crate::present::quoted(&self.translated_from),
+            self.entry
+        )
+    }
+}
+
+/// The translations of the file of `catalog` in `language` that `po` (named `po_name`)
+/// says are stale: [`plan`]'s stale entries whose translation the file has.
+pub fn stale_translations(
+    po: &PoFile,
+    po_name: &str,
+    catalog: &Catalog<'_>,
+    language: Language,
+) -> Result<Vec<StaleTranslation>, Mismatch> {
+    let plan = plan(po, catalog, language, false)?;
+    let in_file = |location: u32, phase: Phase| {
+        let unit = catalog
+            .units
+            .iter()
+            .find(|unit| (unit.location, unit.phase) == (location, phase))?;
+        unit.messages[language.index()].value.map(|v| v.value)
+    };
+    Ok(plan
+        .stale
+        .iter()
+        .filter_map(|(entry, _)| {
+            let (location, phase) = parse_context(entry.msgctxt.as_deref()?)?;
+            let translation = entry.msgstr.trim_matches([' ', '\t']);
+            (in_file(location, phase) == Some(translation)).then(|| StaleTranslation {
+                location,
+                phase,
+                language,
+                translated_from: entry.msgid.clone(),
+                entry: format!("{po_name}:{}", entry.line),
+            })
+        })
+        .collect())
+}
