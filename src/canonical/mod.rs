@@ -39,6 +39,7 @@ use std::ops::ControlFlow;
 use crate::model::Key;
 use crate::reader::Reader;
 use crate::syntax::{self, Body, Line};
+use crate::unified::{NewLine, NewLines};
 use from_source::Place;
 
 /// Padding never makes a line as long as the smallest reader's line buffer.
@@ -209,13 +210,14 @@ impl<'a> Document<'a> {
         }
     }
 
-    /// The comments of the lines from `from` up to `end` (a line start), in order.
-    fn comments_between(&self, from: u32, end: u32) -> impl Iterator<Item = &str> + '_ {
+    /// The comments of the lines from `from` up to `end` (a line start), in order, each with
+    /// where its line starts.
+    fn comments_between(&self, from: u32, end: u32) -> impl Iterator<Item = (u32, &str)> + '_ {
         let text: &str = &self.text;
         syntax::lines_from(text, from as usize)
             .take_while(move |line| line.span.start < end)
             .filter_map(move |line| match line.body {
-                Body::Comment(comment) => Some(comment.text(text)),
+                Body::Comment(comment) => Some((line.span.start, comment.text(text))),
                 _ => None,
             })
     }
@@ -236,10 +238,15 @@ impl<'a> Document<'a> {
         at.max(self.header_end as usize) as u32
     }
 
+    /// The text whose lines these are.
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+
     /// The canonical text.
     pub fn render(&self) -> String {
         let mut out = String::with_capacity(self.text.len() + self.text.len() / 4);
-        let _ = self.walk(|item| {
+        let _ = self.walk(|item, _| {
             push_item(&mut out, &item);
             ControlFlow::Continue(())
         });
@@ -256,7 +263,7 @@ impl<'a> Document<'a> {
         let mut buffer = String::from("\n");
         let mut first = true;
         let mut failed = None;
-        let _ = self.walk(|item| {
+        let _ = self.walk(|item, _| {
             buffer.truncate(1);
             push_item(&mut buffer, &item);
             let (text, start) = match std::mem::take(&mut first) {
@@ -285,7 +292,7 @@ impl<'a> Document<'a> {
     pub fn renders_as(&self, text: &str) -> bool {
         let mut line = String::new();
         let mut rest = text.as_bytes();
-        let walked = self.walk(|item| {
+        let walked = self.walk(|item, _| {
             line.clear();
             push_item(&mut line, &item);
             let Some(after) = rest.strip_prefix(line.as_bytes()) else {
@@ -297,29 +304,33 @@ impl<'a> Document<'a> {
         walked.is_continue() && rest.is_empty()
     }
 
-    /// Every line of the canonical text, in order, until `visit` breaks.
-    fn walk(&self, mut visit: impl FnMut(Item<'_>) -> ControlFlow<()>) -> ControlFlow<()> {
+    /// Every line of the canonical text, in order, each with where the line of the text it
+    /// was made from starts (none for a blank line the layout adds), until `visit` breaks.
+    fn walk(
+        &self,
+        mut visit: impl FnMut(Item<'_>, Option<u32>) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
         let mut sections = 0;
-        let mut visit = |item: Item<'_>, new_section: bool| {
+        let mut visit = |item: Item<'_>, origin: u32, new_section: bool| {
             if new_section {
                 // Sections are apart; and a first line starting with U+FEFF would be read as a
                 // byte-order mark.
                 if sections > 0 || item.starts_with_byte_order_mark() {
-                    visit(Item::Blank)?;
+                    visit(Item::Blank, None)?;
                 }
                 sections += 1;
             }
-            visit(item)
+            visit(item, Some(origin))
         };
-        for (n, comment) in self.comments_between(0, self.header_end).enumerate() {
-            visit(Item::Comment(comment), n == 0)?;
+        for (n, (start, comment)) in self.comments_between(0, self.header_end).enumerate() {
+            visit(Item::Comment(comment), start, n == 0)?;
         }
         let mut entry = |start: u32, new_section: bool, tour: bool| {
             let mut first = new_section;
-            for comment in self.comments_between(self.comments_start(start), start) {
-                visit(Item::Comment(comment), std::mem::take(&mut first))?;
+            for (line, comment) in self.comments_between(self.comments_start(start), start) {
+                visit(Item::Comment(comment), line, std::mem::take(&mut first))?;
             }
-            visit(Item::Entry(self.entry_at(start, tour)), first)
+            visit(Item::Entry(self.entry_at(start, tour)), start, first)
         };
         for (n, &start) in self.unplaced.iter().enumerate() {
             entry(start, n == 0, false)?;
@@ -335,10 +346,25 @@ impl<'a> Document<'a> {
             entry(start, n == 0, true)?;
         }
         let footer = self.comments_between(self.footer_start, self.text.len() as u32);
-        for (n, comment) in footer.enumerate() {
-            visit(Item::Comment(comment), n == 0)?;
+        for (n, (start, comment)) in footer.enumerate() {
+            visit(Item::Comment(comment), start, n == 0)?;
         }
         ControlFlow::Continue(())
+    }
+}
+
+/// The canonical text, each line with the line of the document's text it was made from.
+impl NewLines for Document<'_> {
+    fn each_line(&self, visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>) -> ControlFlow<()> {
+        let mut line = String::new();
+        self.walk(|item, origin| {
+            line.clear();
+            push_item(&mut line, &item);
+            visit(NewLine {
+                text: &line,
+                origin,
+            })
+        })
     }
 }
 
@@ -413,7 +439,7 @@ mod tests {
     /// [`Document::write_checked`] checks of each line as it writes it).
     fn reads_back_from(document: &Document<'_>, formatted: &str) -> bool {
         let mut lines = syntax::lines(formatted);
-        let walked = document.walk(|item| {
+        let walked = document.walk(|item, _| {
             let line = lines.next();
             match line.is_some_and(|line| reads_as(formatted, &line, &item)) {
                 true => ControlFlow::Continue(()),
