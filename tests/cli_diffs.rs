@@ -147,6 +147,24 @@ fn the_balanced_order_of_fix_applies() {
         .map(|id| format!("robotLocationDescription      {id} Stop {id}\n\n"))
         .collect();
     let diff = patch_gives_what_ekb_writes(text.as_bytes(), &["fix", "--diff"], "fix");
+    // What is left is told of the file as it is (the diff writes nothing), less what the
+    // order broke.
+    let (dir, _path) = temp_file("kb.dat", text.as_bytes());
+    let output = ekb()
+        .current_dir(dir.path())
+        .args(["fix", "--diff", "kb.dat"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert!(
+        stderr.starts_with("kb.dat: would fix 1 compat-reader-crash\n"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("kb.dat:1:1: error[missing-field] location 1 lacks"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("[compat-"), "{stderr}");
     // The middle id first.
     assert!(
         diff.contains("\n+robotLocationDescription      3001 Stop 3001\n"),

@@ -230,7 +230,10 @@ impl<'a> Document<'a> {
         let mut at = start as usize;
         while at > self.header_end as usize {
             let previous = memchr::memrchr(b'\n', &bytes[..at - 1]).map_or(0, |i| i + 1);
-            if matches!(self.line_at(previous as u32).body, Body::Entry { .. }) {
+            // A line that begins with its key is an entry (nearly every line): no lexing.
+            let begins_with_key =
+                previous > 0 && !matches!(bytes[previous], b' ' | b'\t' | b'#' | b'\r' | b'\n');
+            if begins_with_key || matches!(self.line_at(previous as u32).body, Body::Entry { .. }) {
                 break;
             }
             at = previous;
@@ -241,6 +244,11 @@ impl<'a> Document<'a> {
     /// The text whose lines these are.
     pub fn text(&self) -> &str {
         &self.text
+    }
+
+    /// [`Document::text`], given back.
+    pub fn into_text(self) -> Cow<'a, str> {
+        self.text
     }
 
     /// The canonical text.
@@ -327,8 +335,12 @@ impl<'a> Document<'a> {
         }
         let mut entry = |start: u32, new_section: bool, tour: bool| {
             let mut first = new_section;
-            for (line, comment) in self.comments_between(self.comments_start(start), start) {
-                visit(Item::Comment(comment), line, std::mem::take(&mut first))?;
+            let comments = self.comments_start(start);
+            // (Without comments above it, the line is not lexed once more to find none.)
+            if comments < start {
+                for (line, comment) in self.comments_between(comments, start) {
+                    visit(Item::Comment(comment), line, std::mem::take(&mut first))?;
+                }
             }
             visit(Item::Entry(self.entry_at(start, tour)), start, first)
         };
@@ -381,7 +393,10 @@ fn push_item(out: &mut String, item: &Item<'_>) {
 fn push_entry(out: &mut String, key: &str, id: Option<&str>, value: &str) {
     out.push_str(key);
     if let Some(id) = id {
-        let key_width = key.chars().count();
+        let key_width = match key.is_ascii() {
+            true => key.len(),
+            false => key.chars().count(),
+        };
         let padded = (VALUE_COLUMN - 1).max(key_width + 1) - key_width;
         let value_length = if value.is_empty() { 0 } else { 1 + value.len() };
         let unpadded_length = key.len() + 1 + id.len() + value_length + "\n".len();
