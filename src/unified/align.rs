@@ -1,9 +1,10 @@
-//! Which new lines keep their place ([`kept`]), and the changes around them ([`changes`]).
+//! Which new lines keep their place ([`first_reading`]), and the changes around them
+//! ([`changes`]).
 
 use std::collections::BTreeMap;
 use std::ops::{ControlFlow, Range};
 
-use super::{old_line, NewLines};
+use super::{old_line, NewLine, NewLines};
 
 /// New lines whose origins follow one another in the old text (blank old lines between
 /// them, which the layout drops, and new lines without an origin do not end a run).
@@ -23,11 +24,23 @@ struct Run {
 /// The new lines (by index, ascending ranges) that keep their place.
 pub(super) struct Kept(Vec<Range<u32>>);
 
+/// What the first reading of the new lines finds.
+pub(super) enum FirstReading {
+    /// The origins ascend, so every line with one keeps its place: the changes, found on
+    /// the way (no second reading).
+    InOrder(Changes),
+    /// Lines moved: which keep their place.
+    Moved(Kept),
+}
+
 /// The runs of new lines, then the chain of runs whose origins ascend from one to the next
 /// that keeps the most equal lines (a longest increasing subsequence, of runs weighted by
-/// their equal lines; a text that only changed in place, or moved nothing, is one run).
-pub(super) fn kept(old: &str, new: &impl NewLines) -> Kept {
+/// their equal lines). When the runs all ascend (a text that only changed in place, or
+/// moved nothing), the chain is every run, and the changes are found in the same reading.
+pub(super) fn first_reading(old: &str, new: &impl NewLines) -> FirstReading {
     let mut runs: Vec<Run> = Vec::new();
+    let mut in_order = true;
+    let mut pairing = Pairing::new(old);
     let mut index = 0u32;
     let _ = new.each_line(&mut |line| {
         if let Some(origin) = line.origin {
@@ -41,25 +54,34 @@ pub(super) fn kept(old: &str, new: &impl NewLines) -> Kept {
                     run.lines.1 = index + 1;
                     run.equal += equal;
                 }
-                _ => runs.push(Run {
-                    first: origin,
-                    last: origin,
-                    next,
-                    lines: (index, index + 1),
-                    equal,
-                }),
+                previous => {
+                    in_order &= previous.is_none_or(|run| run.last < origin);
+                    runs.push(Run {
+                        first: origin,
+                        last: origin,
+                        next,
+                        lines: (index, index + 1),
+                        equal,
+                    });
+                }
             }
+        }
+        if in_order {
+            pairing.line(line, true);
         }
         index += 1;
         ControlFlow::Continue(())
     });
+    if in_order {
+        return FirstReading::InOrder(pairing.finish());
+    }
     let chain = heaviest_chain(&runs);
-    Kept(
+    FirstReading::Moved(Kept(
         chain
             .into_iter()
             .map(|run| runs[run].lines.0..runs[run].lines.1)
             .collect(),
-    )
+    ))
 }
 
 /// Whether the old line at `origin` follows the one that ends at `next`: nothing but blank
@@ -135,82 +157,113 @@ pub(super) struct Changes {
     pub new_lines: u32,
 }
 
-/// Pairs the new lines with old ones, in order: a kept line with its origin (equal, or
-/// changed in place), any other new line with the next old line if it is equal to it, else
-/// it is put in; the old lines passed over are taken out.
+/// The changes when lines moved: a second reading, which pairs the lines that `kept` says
+/// keep their place.
 pub(super) fn changes(old: &str, new: &impl NewLines, kept: &Kept) -> Changes {
-    let mut changes = Changes::default();
-    // The next old line, by start and number.
-    let (mut at, mut line) = (0usize, 0u32);
-    // Where the change being found started (old line, new line).
-    let mut open: Option<(u32, u32)> = None;
+    let mut pairing = Pairing::new(old);
     let mut kept_ranges = kept.0.iter().peekable();
-    let mut index = 0u32;
-    // Whether the new line before was a blank line put in.
-    let mut blank_put_in = false;
-    let _ = new.each_line(&mut |new_line| {
+    let _ = new.each_line(&mut |line| {
+        let index = pairing.index;
         while kept_ranges.next_if(|range| range.end <= index).is_some() {}
         let is_kept = kept_ranges
             .peek()
             .is_some_and(|range| range.contains(&index));
+        pairing.line(line, is_kept);
+        ControlFlow::Continue(())
+    });
+    pairing.finish()
+}
+
+/// Pairs the new lines with old ones, in order: a kept line with its origin (equal, or
+/// changed in place), any other new line with the next old line if it is equal to it, else
+/// it is put in; the old lines passed over are taken out.
+struct Pairing<'o> {
+    old: &'o str,
+    changes: Changes,
+    /// The next old line, by start and number.
+    at: usize,
+    line: u32,
+    /// The next new line.
+    index: u32,
+    /// Where the change being found started (old line, new line).
+    open: Option<(u32, u32)>,
+    /// Whether the new line before was a blank line put in.
+    blank_put_in: bool,
+}
+
+impl<'o> Pairing<'o> {
+    fn new(old: &'o str) -> Pairing<'o> {
+        Pairing {
+            old,
+            changes: Changes::default(),
+            at: 0,
+            line: 0,
+            index: 0,
+            open: None,
+            blank_put_in: false,
+        }
+    }
+
+    /// Pairs the next new line, which keeps its place if `is_kept` and it has an origin.
+    fn line(&mut self, new_line: NewLine<'_>, is_kept: bool) {
+        let old = self.old;
         let origin = new_line.origin.map(|origin| origin as usize);
         let pair = match origin {
-            Some(origin) if is_kept && origin >= at => {
-                if origin > at {
-                    let (old_start, new_start) = *open.get_or_insert((line, index));
-                    line += memchr::memchr_iter(b'\n', &old.as_bytes()[at..origin]).count() as u32;
-                    at = origin;
+            Some(origin) if is_kept && origin >= self.at => {
+                if origin > self.at {
+                    let (old_start, new_start) = *self.open.get_or_insert((self.line, self.index));
+                    let passed = &old.as_bytes()[self.at..origin];
+                    self.line += memchr::memchr_iter(b'\n', passed).count() as u32;
+                    self.at = origin;
                     // A blank line put in just before, where a blank line is taken out: the
                     // same line, left in place (the layout's blank line between blocks).
-                    if blank_put_in && ends_with_blank_line(&old[..origin]) {
-                        open = None;
-                        let region = Region {
-                            old: old_start..line - 1,
-                            new: new_start..index - 1,
-                        };
-                        if !region.old.is_empty() || !region.new.is_empty() {
-                            changes.regions.push(region);
-                        }
+                    if self.blank_put_in && ends_with_blank_line(&old[..origin]) {
+                        self.open = None;
+                        self.close(old_start..self.line - 1, new_start..self.index - 1);
                     }
                 }
                 true
             }
-            _ => at < old.len() && old_line(old, at) == new_line.text,
+            _ => self.at < old.len() && old_line(old, self.at) == new_line.text,
         };
-        blank_put_in = !pair && new_line.text == "\n";
+        self.blank_put_in = !pair && new_line.text == "\n";
         if pair {
-            let old_text = old_line(old, at);
+            let old_text = old_line(old, self.at);
             if old_text == new_line.text {
-                if let Some((old_start, new_start)) = open.take() {
-                    changes.regions.push(Region {
-                        old: old_start..line,
-                        new: new_start..index,
-                    });
+                if let Some((old_start, new_start)) = self.open.take() {
+                    self.close(old_start..self.line, new_start..self.index);
                 }
             } else {
-                open.get_or_insert((line, index));
+                self.open.get_or_insert((self.line, self.index));
             }
-            at += old_text.len();
-            line += 1;
+            self.at += old_text.len();
+            self.line += 1;
         } else {
-            open.get_or_insert((line, index));
+            self.open.get_or_insert((self.line, self.index));
         }
-        index += 1;
-        ControlFlow::Continue(())
-    });
-    if at < old.len() {
-        open.get_or_insert((line, index));
-        line += super::lines_inclusive(&old[at..]).count() as u32;
+        self.index += 1;
     }
-    if let Some((old_start, new_start)) = open {
-        changes.regions.push(Region {
-            old: old_start..line,
-            new: new_start..index,
-        });
+
+    /// A change found, unless it is empty.
+    fn close(&mut self, old: Range<u32>, new: Range<u32>) {
+        if !old.is_empty() || !new.is_empty() {
+            self.changes.regions.push(Region { old, new });
+        }
     }
-    changes.old_lines = line;
-    changes.new_lines = index;
-    changes
+
+    /// The changes, the old lines after the last new one taken out.
+    fn finish(mut self) -> Changes {
+        if self.at < self.old.len() {
+            self.open.get_or_insert((self.line, self.index));
+            self.line += super::lines_inclusive(&self.old[self.at..]).count() as u32;
+        }
+        if let Some((old_start, new_start)) = self.open.take() {
+            self.close(old_start..self.line, new_start..self.index);
+        }
+        self.changes.old_lines = self.line;
+        self.changes.new_lines = self.index;
+        self.changes
+    }
 }
 
 /// Whether `text` ends with a line that is only a line ending (`\n`), after another line or

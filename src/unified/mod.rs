@@ -5,10 +5,12 @@
 //! old line it was made from, if any (its *origin*). The diff pairs each new line with its
 //! origin where the origins ascend, so that lines that moved (a block put in order, the
 //! tour moved to the end) are shown as taken out and put in, and every other line in
-//! place: equal, or changed. Three readings of the new lines, none holding the new text:
+//! place: equal, or changed. Three readings of the new lines at most, none holding the new
+//! text:
 //!
-//! 1. [`align::kept`]: the new lines that keep their place, the longest ascending chain of
-//!    runs of ascending origins (weighted by their equal lines);
+//! 1. [`align::first_reading`]: the new lines that keep their place, the longest ascending
+//!    chain of runs of consecutive origins (weighted by their equal lines); when the runs
+//!    all ascend (nothing moved), the changes too, and there is no second reading;
 //! 2. [`align::changes`]: the changes, each a range of old lines replaced by a range of new
 //!    ones, with what is equal between them;
 //! 3. [`print`]: the hunks, with three lines of context, written as they come (old lines
@@ -59,9 +61,10 @@ pub fn write_diff(
     new: &impl NewLines,
     style: Style<'_>,
 ) -> io::Result<bool> {
-    let kept = align::kept(old, new);
-    let changes = align::changes(old, new, &kept);
-    drop(kept);
+    let changes = match align::first_reading(old, new) {
+        align::FirstReading::InOrder(changes) => changes,
+        align::FirstReading::Moved(kept) => align::changes(old, new, &kept),
+    };
     if changes.regions.is_empty() {
         return Ok(false);
     }
