@@ -44,21 +44,48 @@ pub struct Choice {
 
 /// Applies every safe fix the checks of `source` offer, pass after pass.
 pub fn fix(source: &SourceFile, options: &Options) -> Fixed {
-    let (text, counts) = fix_unless_clean(source, options, &Choice::default());
+    let (outcome, counts) = fixes(source, options, &Choice::default());
     Fixed {
-        text: text.unwrap_or_else(|| source.text().to_string()),
+        text: outcome
+            .into_text()
+            .unwrap_or_else(|| source.text().to_string()),
         counts,
     }
 }
 
-/// [`fix`], whose text is `None` when nothing was fixed: a file with nothing to fix is
-/// checked as it is, never copied (two copies of 60 MB were most of `ekb fix --diff`'s
-/// memory).
-pub fn fix_unless_clean(
-    source: &SourceFile,
+/// What the fixes of a file make of it.
+#[derive(Debug)]
+pub enum Outcome<'a> {
+    /// Nothing to fix: the file is checked as it is, never copied (two copies of 60 MB were
+    /// most of `ekb fix --diff`'s memory).
+    Unchanged,
+    /// The text after the fixes' edits.
+    Edited(String),
+    /// The file, or its text after the edits ([`Document::text`]), with the location blocks
+    /// in the order that builds a balanced tree in the robot's reader: the fix of
+    /// `compat-reader-crash`, the one fix that is no edit. Laid out as `ekb fmt` writes,
+    /// and not written out yet (`ekb fix --diff` shows it from the layout).
+    Balanced(Document<'a>),
+}
+
+impl Outcome<'_> {
+    /// The new text, `None` when nothing is fixed.
+    pub fn into_text(self) -> Option<String> {
+        match self {
+            Outcome::Unchanged => None,
+            Outcome::Edited(text) => Some(text),
+            Outcome::Balanced(document) => Some(document.render()),
+        }
+    }
+}
+
+/// The fixes of `source` that `choice` allows, pass after pass, and how many findings of
+/// each rule they fix.
+pub fn fixes<'a>(
+    source: &'a SourceFile,
     options: &Options,
     choice: &Choice,
-) -> (Option<String>, BTreeMap<&'static str, usize>) {
+) -> (Outcome<'a>, BTreeMap<&'static str, usize>) {
     let mut fixed: Option<String> = None;
     let mut counts = BTreeMap::new();
     let mut options = *options;
@@ -91,17 +118,24 @@ pub fn fix_unless_clean(
         }
         fixed = Some(new);
     }
-    if crashes_reader && choice.rules.is_enabled(&COMPAT_READER_CRASH) {
-        // The one fix that is no edit: the location blocks in a balanced order, which
-        // `ekb fmt`'s layout writes.
-        let text = fixed.as_deref().unwrap_or(source.text());
-        if let Ok(mut document) = Document::parse(text) {
+    let balance = crashes_reader && choice.rules.is_enabled(&COMPAT_READER_CRASH);
+    let document = match (balance, fixed) {
+        (false, None) => return (Outcome::Unchanged, counts),
+        (false, Some(text)) => return (Outcome::Edited(text), counts),
+        (true, None) => Document::parse(source.text()).map_err(|_| None),
+        (true, Some(text)) => Document::parse_owned(text).map_err(Some),
+    };
+    let outcome = match document {
+        Ok(mut document) => {
             document.balance();
-            fixed = Some(document.render());
             *counts.entry(COMPAT_READER_CRASH.name).or_insert(0) += 1;
+            Outcome::Balanced(document)
         }
-    }
-    (fixed, counts)
+        // A file the layout cannot write keeps its order.
+        Err(Some(text)) => Outcome::Edited(text),
+        Err(None) => Outcome::Unchanged,
+    };
+    (outcome, counts)
 }
 
 /// `bytes` with every byte that is not part of a UTF-8 sequence read as Windows-1252 (the

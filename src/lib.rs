@@ -54,6 +54,7 @@ pub mod streams;
 pub mod suppression;
 pub mod syntax;
 pub mod translations;
+pub mod unified;
 pub mod write;
 
 pub use check::{check, Checked};

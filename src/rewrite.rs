@@ -11,14 +11,12 @@
 
 use std::io::{self, Write};
 use std::path::Path;
-use std::time::Duration;
-
-use similar::{Algorithm, TextDiff};
 
 use crate::commands::{CommandError, Exit};
 use crate::render::escape::escape;
 use crate::rules::structure::not_a_knowledge_base;
 use crate::source::{LineIndex, SourceFile};
+use crate::unified::{self, InOrder, NewLines};
 use crate::write;
 
 /// What to do with a file's new text.
@@ -74,7 +72,9 @@ pub fn deliver(
     let changed = old != new;
     let stdin = path == Path::new("-");
     match mode {
-        Mode::Diff if changed => print_diff(source.name(), old, new, style)?,
+        Mode::Diff if changed => {
+            print_diff(source.name(), old, &InOrder { old, new }, style)?;
+        }
         Mode::Diff => {}
         Mode::Write if stdin => io::stdout().lock().write_all(new.as_bytes())?,
         Mode::Write if changed => match source.stamp() {
@@ -127,9 +127,6 @@ pub fn for_each_file(
     worst
 }
 
-/// How long a diff may take to be minimal.
-const DIFF_TIMEOUT: Duration = Duration::from_secs(2);
-
 /// How many lines a refusal names before it says "and N more".
 pub const NAMED_LINES: usize = 5;
 
@@ -147,42 +144,20 @@ pub fn name_lines(lines: &[(u32, String)]) -> String {
     }
 }
 
-/// A unified diff of `old` and `new`, as `patch` reads it.
-pub fn unified_diff(name: &str, old: &str, new: &str) -> String {
-    // Patience anchors on unique lines, so a formatted file (a blank line between every block)
-    // diffs in about linear time; the deadline bounds the rest, at worst with a coarser diff.
-    TextDiff::configure()
-        .algorithm(Algorithm::Patience)
-        .timeout(DIFF_TIMEOUT)
-        .diff_lines(old, new)
-        .unified_diff()
-        .context_radius(3)
-        .header(name, name)
-        .to_string()
-}
-
-/// Prints the diff of `old` and `new`, every line escaped as every output of ekb is, on a
-/// terminal or not: a diff is file text, and a CI log shows it too. (A line with something
-/// escaped no longer applies with `patch`; every other line does.)
-fn print_diff(name: &str, old: &str, new: &str, style: DiffStyle) -> io::Result<()> {
-    let diff = unified_diff(name, old, new);
-    // A line at a time through a buffer: standard output alone is flushed at every line.
-    let mut stdout = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
-    for line in diff.split_inclusive('\n') {
-        let colour = match line.as_bytes().first() {
-            _ if !style.color => None,
-            Some(b'+') => Some("\x1b[32m"),
-            Some(b'-') => Some("\x1b[31m"),
-            Some(b'@') => Some("\x1b[36m"),
-            _ => None,
-        };
-        let text = escape(line.strip_suffix('\n').unwrap_or(line));
-        match colour {
-            Some(colour) => writeln!(stdout, "{colour}{text}\x1b[0m")?,
-            None => writeln!(stdout, "{text}")?,
-        }
-    }
-    stdout.flush()
+/// Prints the unified diff of `old` and the new text `new` (nothing if they are equal),
+/// written from where each new line came from ([`crate::unified`]). Returns whether they
+/// differ.
+pub fn print_diff(
+    name: &str,
+    old: &str,
+    new: &impl NewLines,
+    style: DiffStyle,
+) -> io::Result<bool> {
+    let style = unified::Style {
+        name,
+        color: style.color,
+    };
+    unified::write_diff(&mut io::stdout().lock(), old, new, style)
 }
 
 #[cfg(test)]
@@ -196,15 +171,6 @@ mod tests {
         assert_eq!(
             name_lines(&lines),
             "line 1 (`k1`), line 2 (`k2`), line 3 (`k3`), line 4 (`k4`), line 5 (`k5`) and 2 more"
-        );
-    }
-
-    #[test]
-    fn diff_has_headers_and_hunks() {
-        let diff = unified_diff("kb.dat", "a\nb\n", "a\nc\n");
-        assert_eq!(
-            diff,
-            "--- kb.dat\n+++ kb.dat\n@@ -1,2 +1,2 @@\n a\n-b\n+c\n"
         );
     }
 }

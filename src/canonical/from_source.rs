@@ -53,6 +53,14 @@ impl<'a> Document<'a> {
         Document::parse_text(Cow::Borrowed(text))
     }
 
+    /// Lays out the lines of `text`, which the document owns; `text` back if it cannot be.
+    pub fn parse_owned(text: String) -> Result<Document<'static>, String> {
+        match Layout::read(&text) {
+            Ok(layout) => Ok(Document::laid_out(Cow::Owned(text), layout)),
+            Err(_) => Err(text),
+        }
+    }
+
     /// Lays out the lines of `text`, which the document keeps.
     ///
     /// Memory is what matters on a huge file: the lines are read twice rather than each
@@ -61,8 +69,13 @@ impl<'a> Document<'a> {
     /// order where it is not already, by reading its lines a third time.
     pub(super) fn parse_text(text: Cow<'a, str>) -> Result<Document<'a>, Unformattable> {
         let layout = Layout::read(&text)?;
+        Ok(Document::laid_out(text, layout))
+    }
+
+    /// The document of `text`, whose first reading found `layout`.
+    fn laid_out(text: Cow<'a, str>, layout: Layout) -> Document<'a> {
         let (order, block_ends) = arrange(&text, layout.blocks, layout.located);
-        Ok(Document {
+        Document {
             text,
             header_end: layout.header_end,
             footer_start: layout.footer_start,
@@ -70,7 +83,7 @@ impl<'a> Document<'a> {
             order,
             block_ends,
             tour: layout.tour,
-        })
+        }
     }
 }
 

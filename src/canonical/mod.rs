@@ -39,6 +39,7 @@ use std::ops::ControlFlow;
 use crate::model::Key;
 use crate::reader::Reader;
 use crate::syntax::{self, Body, Line};
+use crate::unified::{NewLine, NewLines};
 use from_source::Place;
 
 /// Padding never makes a line as long as the smallest reader's line buffer.
@@ -209,13 +210,14 @@ impl<'a> Document<'a> {
         }
     }
 
-    /// The comments of the lines from `from` up to `end` (a line start), in order.
-    fn comments_between(&self, from: u32, end: u32) -> impl Iterator<Item = &str> + '_ {
+    /// The comments of the lines from `from` up to `end` (a line start), in order, each with
+    /// where its line starts.
+    fn comments_between(&self, from: u32, end: u32) -> impl Iterator<Item = (u32, &str)> + '_ {
         let text: &str = &self.text;
         syntax::lines_from(text, from as usize)
             .take_while(move |line| line.span.start < end)
             .filter_map(move |line| match line.body {
-                Body::Comment(comment) => Some(comment.text(text)),
+                Body::Comment(comment) => Some((line.span.start, comment.text(text))),
                 _ => None,
             })
     }
@@ -228,7 +230,10 @@ impl<'a> Document<'a> {
         let mut at = start as usize;
         while at > self.header_end as usize {
             let previous = memchr::memrchr(b'\n', &bytes[..at - 1]).map_or(0, |i| i + 1);
-            if matches!(self.line_at(previous as u32).body, Body::Entry { .. }) {
+            // A line that begins with its key is an entry (nearly every line): no lexing.
+            let begins_with_key =
+                previous > 0 && !matches!(bytes[previous], b' ' | b'\t' | b'#' | b'\r' | b'\n');
+            if begins_with_key || matches!(self.line_at(previous as u32).body, Body::Entry { .. }) {
                 break;
             }
             at = previous;
@@ -236,10 +241,20 @@ impl<'a> Document<'a> {
         at.max(self.header_end as usize) as u32
     }
 
+    /// The text whose lines these are.
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+
+    /// [`Document::text`], given back.
+    pub fn into_text(self) -> Cow<'a, str> {
+        self.text
+    }
+
     /// The canonical text.
     pub fn render(&self) -> String {
         let mut out = String::with_capacity(self.text.len() + self.text.len() / 4);
-        let _ = self.walk(|item| {
+        let _ = self.walk(|item, _| {
             push_item(&mut out, &item);
             ControlFlow::Continue(())
         });
@@ -256,7 +271,7 @@ impl<'a> Document<'a> {
         let mut buffer = String::from("\n");
         let mut first = true;
         let mut failed = None;
-        let _ = self.walk(|item| {
+        let _ = self.walk(|item, _| {
             buffer.truncate(1);
             push_item(&mut buffer, &item);
             let (text, start) = match std::mem::take(&mut first) {
@@ -285,7 +300,7 @@ impl<'a> Document<'a> {
     pub fn renders_as(&self, text: &str) -> bool {
         let mut line = String::new();
         let mut rest = text.as_bytes();
-        let walked = self.walk(|item| {
+        let walked = self.walk(|item, _| {
             line.clear();
             push_item(&mut line, &item);
             let Some(after) = rest.strip_prefix(line.as_bytes()) else {
@@ -297,29 +312,37 @@ impl<'a> Document<'a> {
         walked.is_continue() && rest.is_empty()
     }
 
-    /// Every line of the canonical text, in order, until `visit` breaks.
-    fn walk(&self, mut visit: impl FnMut(Item<'_>) -> ControlFlow<()>) -> ControlFlow<()> {
+    /// Every line of the canonical text, in order, each with where the line of the text it
+    /// was made from starts (none for a blank line the layout adds), until `visit` breaks.
+    fn walk(
+        &self,
+        mut visit: impl FnMut(Item<'_>, Option<u32>) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
         let mut sections = 0;
-        let mut visit = |item: Item<'_>, new_section: bool| {
+        let mut visit = |item: Item<'_>, origin: u32, new_section: bool| {
             if new_section {
                 // Sections are apart; and a first line starting with U+FEFF would be read as a
                 // byte-order mark.
                 if sections > 0 || item.starts_with_byte_order_mark() {
-                    visit(Item::Blank)?;
+                    visit(Item::Blank, None)?;
                 }
                 sections += 1;
             }
-            visit(item)
+            visit(item, Some(origin))
         };
-        for (n, comment) in self.comments_between(0, self.header_end).enumerate() {
-            visit(Item::Comment(comment), n == 0)?;
+        for (n, (start, comment)) in self.comments_between(0, self.header_end).enumerate() {
+            visit(Item::Comment(comment), start, n == 0)?;
         }
         let mut entry = |start: u32, new_section: bool, tour: bool| {
             let mut first = new_section;
-            for comment in self.comments_between(self.comments_start(start), start) {
-                visit(Item::Comment(comment), std::mem::take(&mut first))?;
+            let comments = self.comments_start(start);
+            // (Without comments above it, the line is not lexed once more to find none.)
+            if comments < start {
+                for (line, comment) in self.comments_between(comments, start) {
+                    visit(Item::Comment(comment), line, std::mem::take(&mut first))?;
+                }
             }
-            visit(Item::Entry(self.entry_at(start, tour)), first)
+            visit(Item::Entry(self.entry_at(start, tour)), start, first)
         };
         for (n, &start) in self.unplaced.iter().enumerate() {
             entry(start, n == 0, false)?;
@@ -335,10 +358,25 @@ impl<'a> Document<'a> {
             entry(start, n == 0, true)?;
         }
         let footer = self.comments_between(self.footer_start, self.text.len() as u32);
-        for (n, comment) in footer.enumerate() {
-            visit(Item::Comment(comment), n == 0)?;
+        for (n, (start, comment)) in footer.enumerate() {
+            visit(Item::Comment(comment), start, n == 0)?;
         }
         ControlFlow::Continue(())
+    }
+}
+
+/// The canonical text, each line with the line of the document's text it was made from.
+impl NewLines for Document<'_> {
+    fn each_line(&self, visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>) -> ControlFlow<()> {
+        let mut line = String::new();
+        self.walk(|item, origin| {
+            line.clear();
+            push_item(&mut line, &item);
+            visit(NewLine {
+                text: &line,
+                origin,
+            })
+        })
     }
 }
 
@@ -355,7 +393,10 @@ fn push_item(out: &mut String, item: &Item<'_>) {
 fn push_entry(out: &mut String, key: &str, id: Option<&str>, value: &str) {
     out.push_str(key);
     if let Some(id) = id {
-        let key_width = key.chars().count();
+        let key_width = match key.is_ascii() {
+            true => key.len(),
+            false => key.chars().count(),
+        };
         let padded = (VALUE_COLUMN - 1).max(key_width + 1) - key_width;
         let value_length = if value.is_empty() { 0 } else { 1 + value.len() };
         let unpadded_length = key.len() + 1 + id.len() + value_length + "\n".len();
@@ -413,7 +454,7 @@ mod tests {
     /// [`Document::write_checked`] checks of each line as it writes it).
     fn reads_back_from(document: &Document<'_>, formatted: &str) -> bool {
         let mut lines = syntax::lines(formatted);
-        let walked = document.walk(|item| {
+        let walked = document.walk(|item, _| {
             let line = lines.next();
             match line.is_some_and(|line| reads_as(formatted, &line, &item)) {
                 true => ControlFlow::Continue(()),

@@ -1,23 +1,28 @@
 //! `ekb fix [FILE...] [--diff] [--dialect D]`: apply the machine-applicable fixes of the rule
 //! catalogue ([`crate::fixing`]), and migrate a file from one dialect to the other.
 
+use std::borrow::Cow;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use super::check::RuleArgs;
 use super::{errors_to_stderr, CommandError, CommandResult, Context, Exit};
+use crate::canonical::Document;
 use crate::check::check_with;
-use crate::fixing;
+use crate::fixing::{self, Outcome};
 use crate::model::build::Options;
 use crate::model::{Dialect, Key};
 use crate::reader::Reader;
 use crate::render::escape::escape;
 use crate::rewrite::{self, DiffStyle, Mode};
-use crate::rules::selection::RuleSet;
+use crate::rules::compat::compat_reader_crash::COMPAT_READER_CRASH;
+use crate::rules::compat::compat_slow_load::COMPAT_SLOW_LOAD;
+use crate::rules::selection::{RuleSelector, RuleSet};
 use crate::rules::structure::invalid_utf8::INVALID_UTF8;
 use crate::source::SourceFile;
 use crate::stderr_line;
 use crate::syntax::{self, Body};
+use crate::unified::{InOrder, Through};
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -78,7 +83,7 @@ fn fix_file(
     if let Some(target) = args.dialect {
         refuse_inexpressible(source, target)?;
     }
-    let (fixed, mut counts) = fixing::fix_unless_clean(source, options, choice);
+    let (outcome, mut counts) = fixing::fixes(source, options, choice);
     if converted.is_some() {
         counts.insert(INVALID_UTF8.name, read.invalid_utf8_lines());
     }
@@ -86,15 +91,39 @@ fn fix_file(
     let style = DiffStyle {
         color: context.color_stdout(),
     };
-    let new_text = fixed.as_deref().unwrap_or(source.text());
-    let changed = rewrite::deliver(path, &read, new_text, mode, style)?;
-    // Nothing fixed: the file is what is left, without a copy of it.
-    let after = fixed.map(|text| SourceFile::from_bytes(source.name(), text.into_bytes()));
+    let mut rules = choice.rules.clone();
+    let (changed, after) = match (outcome, mode) {
+        (Outcome::Balanced(document), Mode::Diff) => {
+            let changed = print_balanced(&read, &document, style)?;
+            // What is left to correct is what the text before the balance has but for the
+            // order of its ids, which the balanced order mends (its tree is log2(n) deep):
+            // checked without the rules of that order, the balanced text is never made.
+            rules.ignore(&[
+                RuleSelector::Rule(&COMPAT_READER_CRASH),
+                RuleSelector::Rule(&COMPAT_SLOW_LOAD),
+            ]);
+            (changed, document.into_text())
+        }
+        (outcome, mode) => {
+            let fixed = outcome.into_text();
+            let new_text = fixed.as_deref().unwrap_or(source.text());
+            let changed = rewrite::deliver(path, &read, new_text, mode, style)?;
+            (
+                changed,
+                fixed.map_or(Cow::Borrowed(source.text()), Cow::Owned),
+            )
+        }
+    };
+    // Nothing fixed, or only the order: the file is what is left, without a copy of it.
+    let after = match after {
+        Cow::Borrowed(_) => None,
+        Cow::Owned(text) => Some(SourceFile::from_bytes(source.name(), text.into_bytes())),
+    };
     let errors_left = report(
         after.as_ref().unwrap_or(source),
         &counts,
         options,
-        &choice.rules,
+        &rules,
         context,
         mode,
     )?;
@@ -103,6 +132,31 @@ fn fix_file(
         Mode::Write if errors_left => Exit::Findings,
         _ => Exit::Clean,
     })
+}
+
+/// Prints the diff of `read` and its blocks put in a balanced order (`document`), from the
+/// layout: the lines of the text the document laid out taken back to the lines of `read`
+/// they came from, when that text is not `read`'s (the fixes edited it, or it was read as
+/// Latin-1). Returns whether they differ.
+fn print_balanced(
+    read: &SourceFile,
+    document: &Document<'_>,
+    style: DiffStyle,
+) -> Result<bool, CommandError> {
+    let old = read.text();
+    if std::ptr::eq(document.text(), old) {
+        return Ok(rewrite::print_diff(read.name(), old, document, style)?);
+    }
+    let between = InOrder {
+        old,
+        new: document.text(),
+    }
+    .origins();
+    let new = Through {
+        new: document,
+        between: &between,
+    };
+    Ok(rewrite::print_diff(read.name(), old, &new, style)?)
 }
 
 /// The file at `path`, not UTF-8, read as Latin-1 (Windows-1252): `--unsafe-fixes` guesses

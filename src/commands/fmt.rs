@@ -4,7 +4,7 @@ use std::io;
 use std::path::{Path, PathBuf};
 
 use super::{CommandError, CommandResult, Context, Exit};
-use crate::canonical::{self, Document, WriteError};
+use crate::canonical::{Document, WriteError};
 use crate::render::escape::escape;
 use crate::rewrite::{self, DiffStyle, Mode};
 use crate::stderr_line;
@@ -56,15 +56,15 @@ fn format_file(
     let cannot = |reason: String| {
         CommandError::Failed(format!("cannot format {}: {reason}", escape(source.name())))
     };
-    if mode == Mode::Diff {
-        let formatted = canonical::format(source.text()).map_err(cannot)?;
-        let formatted = formatted.as_deref().unwrap_or(source.text());
-        return rewrite::deliver(path, &source, formatted, mode, style);
-    }
     let document = Document::parse(source.text()).map_err(|e| cannot(e.to_string()))?;
     if document.renders_as(source.text()) {
         // Already canonical: reading it back is reading the file again, which gave `document`.
         return rewrite::deliver(path, &source, source.text(), mode, style);
+    }
+    if mode == Mode::Diff {
+        // Written from the layout, a line at a time: never the formatted text, nor the diff.
+        rewrite::print_diff(source.name(), source.text(), &document, style)?;
+        return Ok(true);
     }
     // A formatted file can be several times the original (every id padded to column 31): it
     // is written as it is made, never held whole; each line is read back as it is written

@@ -1,0 +1,273 @@
+//! Which new lines keep their place ([`first_reading`]), and the changes around them
+//! ([`changes`]).
+
+use std::collections::BTreeMap;
+use std::ops::{ControlFlow, Range};
+
+use super::{old_line, NewLine, NewLines};
+
+/// New lines whose origins follow one another in the old text (blank old lines between
+/// them, which the layout drops, and new lines without an origin do not end a run).
+#[derive(Debug, Clone, Copy)]
+struct Run {
+    /// The first and last origins.
+    first: u32,
+    last: u32,
+    /// Where the old line after the last origin starts.
+    next: u32,
+    /// The new lines it spans: its first line with an origin to its last.
+    lines: (u32, u32),
+    /// How many of its lines are equal to their origin.
+    equal: u32,
+}
+
+/// The new lines (by index, ascending ranges) that keep their place.
+pub(super) struct Kept(Vec<Range<u32>>);
+
+/// What the first reading of the new lines finds.
+pub(super) enum FirstReading {
+    /// The origins ascend, so every line with one keeps its place: the changes, found on
+    /// the way (no second reading).
+    InOrder(Changes),
+    /// Lines moved: which keep their place.
+    Moved(Kept),
+}
+
+/// The runs of new lines, then the chain of runs whose origins ascend from one to the next
+/// that keeps the most equal lines (a longest increasing subsequence, of runs weighted by
+/// their equal lines). When the runs all ascend (a text that only changed in place, or
+/// moved nothing), the chain is every run, and the changes are found in the same reading.
+pub(super) fn first_reading(old: &str, new: &impl NewLines) -> FirstReading {
+    let mut runs: Vec<Run> = Vec::new();
+    let mut in_order = true;
+    let mut pairing = Pairing::new(old);
+    let mut index = 0u32;
+    let _ = new.each_line(&mut |line| {
+        if let Some(origin) = line.origin {
+            let old_text = old_line(old, origin as usize);
+            let equal = u32::from(old_text == line.text);
+            let next = origin + old_text.len() as u32;
+            match runs.last_mut() {
+                Some(run) if follows(old, run.next, origin) => {
+                    run.last = origin;
+                    run.next = next;
+                    run.lines.1 = index + 1;
+                    run.equal += equal;
+                }
+                previous => {
+                    in_order &= previous.is_none_or(|run| run.last < origin);
+                    runs.push(Run {
+                        first: origin,
+                        last: origin,
+                        next,
+                        lines: (index, index + 1),
+                        equal,
+                    });
+                }
+            }
+        }
+        if in_order {
+            pairing.line(line, true);
+        }
+        index += 1;
+        ControlFlow::Continue(())
+    });
+    if in_order {
+        return FirstReading::InOrder(pairing.finish());
+    }
+    let chain = heaviest_chain(&runs);
+    FirstReading::Moved(Kept(
+        chain
+            .into_iter()
+            .map(|run| runs[run].lines.0..runs[run].lines.1)
+            .collect(),
+    ))
+}
+
+/// Whether the old line at `origin` follows the one that ends at `next`: nothing but blank
+/// lines between them. (Runs of lines that follow one another, rather than merely ascend,
+/// make a line moved far ahead a run of its own, which the chain can leave out.)
+fn follows(old: &str, next: u32, origin: u32) -> bool {
+    origin >= next
+        && old.as_bytes()[next as usize..origin as usize]
+            .iter()
+            .all(|byte| matches!(byte, b'\n' | b'\r' | b' ' | b'\t'))
+}
+
+/// The indices of the runs, ascending, of the chain whose origins ascend from run to run
+/// with the most equal lines.
+fn heaviest_chain(runs: &[Run]) -> Vec<usize> {
+    const NONE: u32 = u32::MAX;
+    if runs.len() <= 1 {
+        return (0..runs.len()).collect();
+    }
+    // For each last origin, the heaviest chain ending there and its last run; only chains
+    // heavier than every chain ending before are kept, so the weights ascend with the keys.
+    let mut frontier: BTreeMap<u32, (u64, u32)> = BTreeMap::new();
+    let mut previous = vec![NONE; runs.len()];
+    for (index, run) in runs.iter().enumerate() {
+        let before = frontier
+            .range(..run.first)
+            .next_back()
+            .map(|(_, &chain)| chain);
+        let weight = u64::from(run.equal) + before.map_or(0, |(weight, _)| weight);
+        previous[index] = before.map_or(NONE, |(_, last)| last);
+        let beaten = frontier
+            .range(..=run.last)
+            .next_back()
+            .is_some_and(|(_, &(other, _))| other >= weight);
+        if beaten {
+            continue;
+        }
+        let lighter: Vec<u32> = frontier
+            .range(run.last..)
+            .take_while(|(_, &(other, _))| other <= weight)
+            .map(|(&last, _)| last)
+            .collect();
+        for last in lighter {
+            frontier.remove(&last);
+        }
+        frontier.insert(run.last, (weight, index as u32));
+    }
+    let mut chain = Vec::new();
+    let mut at = frontier
+        .last_key_value()
+        .map_or(NONE, |(_, &(_, last))| last);
+    while at != NONE {
+        chain.push(at as usize);
+        at = previous[at as usize];
+    }
+    chain.reverse();
+    chain
+}
+
+/// A change: old lines (0-based, end excluded) replaced by new lines.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(super) struct Region {
+    pub old: Range<u32>,
+    pub new: Range<u32>,
+}
+
+/// Every change, in order, and how many lines each text has. Between two changes, and
+/// before the first and after the last, the lines are equal.
+#[derive(Debug, Default)]
+pub(super) struct Changes {
+    pub regions: Vec<Region>,
+    pub old_lines: u32,
+    pub new_lines: u32,
+}
+
+/// The changes when lines moved: a second reading, which pairs the lines that `kept` says
+/// keep their place.
+pub(super) fn changes(old: &str, new: &impl NewLines, kept: &Kept) -> Changes {
+    let mut pairing = Pairing::new(old);
+    let mut kept_ranges = kept.0.iter().peekable();
+    let _ = new.each_line(&mut |line| {
+        let index = pairing.index;
+        while kept_ranges.next_if(|range| range.end <= index).is_some() {}
+        let is_kept = kept_ranges
+            .peek()
+            .is_some_and(|range| range.contains(&index));
+        pairing.line(line, is_kept);
+        ControlFlow::Continue(())
+    });
+    pairing.finish()
+}
+
+/// Pairs the new lines with old ones, in order: a kept line with its origin (equal, or
+/// changed in place), any other new line with the next old line if it is equal to it, else
+/// it is put in; the old lines passed over are taken out.
+struct Pairing<'o> {
+    old: &'o str,
+    changes: Changes,
+    /// The next old line, by start and number.
+    at: usize,
+    line: u32,
+    /// The next new line.
+    index: u32,
+    /// Where the change being found started (old line, new line).
+    open: Option<(u32, u32)>,
+    /// Whether the new line before was a blank line put in.
+    blank_put_in: bool,
+}
+
+impl<'o> Pairing<'o> {
+    fn new(old: &'o str) -> Pairing<'o> {
+        Pairing {
+            old,
+            changes: Changes::default(),
+            at: 0,
+            line: 0,
+            index: 0,
+            open: None,
+            blank_put_in: false,
+        }
+    }
+
+    /// Pairs the next new line, which keeps its place if `is_kept` and it has an origin.
+    fn line(&mut self, new_line: NewLine<'_>, is_kept: bool) {
+        let old = self.old;
+        let origin = new_line.origin.map(|origin| origin as usize);
+        let pair = match origin {
+            Some(origin) if is_kept && origin >= self.at => {
+                if origin > self.at {
+                    let (old_start, new_start) = *self.open.get_or_insert((self.line, self.index));
+                    let passed = &old.as_bytes()[self.at..origin];
+                    self.line += memchr::memchr_iter(b'\n', passed).count() as u32;
+                    self.at = origin;
+                    // A blank line put in just before, where a blank line is taken out: the
+                    // same line, left in place (the layout's blank line between blocks).
+                    if self.blank_put_in && ends_with_blank_line(&old[..origin]) {
+                        self.open = None;
+                        self.close(old_start..self.line - 1, new_start..self.index - 1);
+                    }
+                }
+                true
+            }
+            _ => self.at < old.len() && old_line(old, self.at) == new_line.text,
+        };
+        self.blank_put_in = !pair && new_line.text == "\n";
+        if pair {
+            let old_text = old_line(old, self.at);
+            if old_text == new_line.text {
+                if let Some((old_start, new_start)) = self.open.take() {
+                    self.close(old_start..self.line, new_start..self.index);
+                }
+            } else {
+                self.open.get_or_insert((self.line, self.index));
+            }
+            self.at += old_text.len();
+            self.line += 1;
+        } else {
+            self.open.get_or_insert((self.line, self.index));
+        }
+        self.index += 1;
+    }
+
+    /// A change found, unless it is empty.
+    fn close(&mut self, old: Range<u32>, new: Range<u32>) {
+        if !old.is_empty() || !new.is_empty() {
+            self.changes.regions.push(Region { old, new });
+        }
+    }
+
+    /// The changes, the old lines after the last new one taken out.
+    fn finish(mut self) -> Changes {
+        if self.at < self.old.len() {
+            self.open.get_or_insert((self.line, self.index));
+            self.line += super::lines_inclusive(&self.old[self.at..]).count() as u32;
+        }
+        if let Some((old_start, new_start)) = self.open.take() {
+            self.close(old_start..self.line, new_start..self.index);
+        }
+        self.changes.old_lines = self.line;
+        self.changes.new_lines = self.index;
+        self.changes
+    }
+}
+
+/// Whether `text` ends with a line that is only a line ending (`\n`), after another line or
+/// at the start.
+fn ends_with_blank_line(text: &str) -> bool {
+    matches!(text.as_bytes(), [b'\n'] | [.., b'\n', b'\n'])
+}

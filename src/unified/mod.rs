@@ -1,0 +1,316 @@
+//! Unified diffs written from where each new line came from, instead of by diffing two
+//! whole texts: `ekb fmt --check` and `ekb fix --diff` on a file of any size.
+//!
+//! A new text is given as its lines in order ([`NewLines`]), each with the start of the
+//! old line it was made from, if any (its *origin*). The diff pairs each new line with its
+//! origin where the origins ascend, so that lines that moved (a block put in order, the
+//! tour moved to the end) are shown as taken out and put in, and every other line in
+//! place: equal, or changed. Three readings of the new lines at most, none holding the new
+//! text:
+//!
+//! 1. [`align::first_reading`]: the new lines that keep their place, the longest ascending
+//!    chain of runs of consecutive origins (weighted by their equal lines); when the runs
+//!    all ascend (nothing moved), the changes too, and there is no second reading;
+//! 2. [`align::changes`]: the changes, each a range of old lines replaced by a range of new
+//!    ones, with what is equal between them;
+//! 3. [`print`]: the hunks, with three lines of context, written as they come (old lines
+//!    from the old text, new ones as the third reading reaches them).
+//!
+//! The memory is a few words per run and per change, however large the file: never the
+//! new text, nor the diff. Any origins give a correct diff (a line is only shown equal when
+//! it is equal); good origins give a small one.
+
+mod align;
+mod in_order;
+mod print;
+
+pub use in_order::{InOrder, Origins, Through};
+
+use std::io::{self, Write};
+use std::ops::ControlFlow;
+
+/// One line of a new text.
+#[derive(Debug, Clone, Copy)]
+pub struct NewLine<'t> {
+    /// The line with its line ending (the last line of a text may have none).
+    pub text: &'t str,
+    /// Where the old line it was made from starts in the old text, if it was made from one.
+    pub origin: Option<u32>,
+}
+
+/// A new text, line by line, as many times as asked: the same lines every time.
+pub trait NewLines {
+    /// Visits each line in order until `visit` breaks.
+    fn each_line(&self, visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>) -> ControlFlow<()>;
+}
+
+/// How the diff is printed.
+#[derive(Debug, Clone, Copy)]
+pub struct Style<'n> {
+    /// The file's name in the headers (escaped as they are printed).
+    pub name: &'n str,
+    /// ANSI colours: `+` lines green, `-` lines red, hunk headers cyan.
+    pub color: bool,
+}
+
+/// Writes the unified diff of `old` and `new` to `out` (nothing if they are equal), each
+/// printed line escaped as every output of ekb is. Returns whether they differ.
+pub fn write_diff(
+    out: &mut impl Write,
+    old: &str,
+    new: &impl NewLines,
+    style: Style<'_>,
+) -> io::Result<bool> {
+    let changes = match align::first_reading(old, new) {
+        align::FirstReading::InOrder(changes) => changes,
+        align::FirstReading::Moved(kept) => align::changes(old, new, &kept),
+    };
+    if changes.regions.is_empty() {
+        return Ok(false);
+    }
+    print::print(out, old, new, &changes, style)?;
+    Ok(true)
+}
+
+/// The lines of `text` with their line endings, each with where it starts.
+pub(crate) fn lines_inclusive(text: &str) -> impl Iterator<Item = (usize, &str)> + '_ {
+    let mut start = 0;
+    std::iter::from_fn(move || {
+        if start >= text.len() {
+            return None;
+        }
+        let end =
+            memchr::memchr(b'\n', &text.as_bytes()[start..]).map_or(text.len(), |i| start + i + 1);
+        let line = (start, &text[start..end]);
+        start = end;
+        Some(line)
+    })
+}
+
+/// The old line that starts at `start`, with its line ending.
+fn old_line(old: &str, start: usize) -> &str {
+    let end = memchr::memchr(b'\n', &old.as_bytes()[start..]).map_or(old.len(), |i| start + i + 1);
+    &old[start..end]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// New lines given with their origins, as old line numbers (0-based) of `old`.
+    struct Given<'a> {
+        lines: Vec<(&'a str, Option<usize>)>,
+        old: &'a str,
+    }
+
+    impl NewLines for Given<'_> {
+        fn each_line(
+            &self,
+            visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>,
+        ) -> ControlFlow<()> {
+            let starts: Vec<usize> = lines_inclusive(self.old).map(|(start, _)| start).collect();
+            for &(text, origin) in &self.lines {
+                visit(NewLine {
+                    text,
+                    origin: origin.map(|line| starts[line] as u32),
+                })?;
+            }
+            ControlFlow::Continue(())
+        }
+    }
+
+    fn diff(old: &str, new: &impl NewLines) -> String {
+        let mut out = Vec::new();
+        let style = Style {
+            name: "kb.dat",
+            color: false,
+        };
+        write_diff(&mut out, old, new, style).unwrap();
+        String::from_utf8(out).unwrap()
+    }
+
+    fn in_order(old: &str, new: &str) -> String {
+        diff(old, &InOrder { old, new })
+    }
+
+    /// `old` with the unified diff `diff` applied, as `patch` does (hunks in order, each
+    /// checked against `old`).
+    fn apply(old: &str, diff: &str) -> String {
+        let old_lines: Vec<&str> = lines_inclusive(old).map(|(_, line)| line).collect();
+        let mut out = String::new();
+        let mut next_old = 0;
+        let mut lines = diff.lines().skip(2).peekable();
+        while let Some(header) = lines.next() {
+            let ranges: Vec<&str> = header
+                .trim_start_matches("@@ -")
+                .trim_end_matches(" @@")
+                .split(" +")
+                .collect();
+            let start = |range: &str| -> (usize, usize) {
+                let (start, length) = range.split_once(',').unwrap_or((range, "1"));
+                let (start, length): (usize, usize) =
+                    (start.parse().unwrap(), length.parse().unwrap());
+                (if length == 0 { start } else { start - 1 }, length)
+            };
+            let (old_start, _) = start(ranges[0]);
+            for line in &old_lines[next_old..old_start] {
+                out.push_str(line);
+            }
+            next_old = old_start;
+            while let Some(line) = lines.next_if(|line| !line.starts_with("@@")) {
+                let (tag, text) = line.split_at(1);
+                let ends = lines.next_if(|line| line.starts_with('\\')).is_none();
+                let text = if ends {
+                    format!("{text}\n")
+                } else {
+                    text.to_string()
+                };
+                if tag != "+" {
+                    assert_eq!(old_lines[next_old], text, "{diff}");
+                    next_old += 1;
+                }
+                if tag != "-" {
+                    out.push_str(&text);
+                }
+            }
+        }
+        for line in &old_lines[next_old..] {
+            out.push_str(line);
+        }
+        out
+    }
+
+    #[test]
+    fn a_line_changed_in_place() {
+        assert_eq!(
+            in_order("a\nb\n", "a\nc\n"),
+            "--- kb.dat\n+++ kb.dat\n@@ -1,2 +1,2 @@\n a\n-b\n+c\n"
+        );
+        assert_eq!(in_order("a\nb\n", "a\nb\n"), "");
+    }
+
+    #[test]
+    fn a_text_without_a_final_newline_says_so() {
+        assert_eq!(
+            in_order("a\nb", "a\nb\n"),
+            "--- kb.dat\n+++ kb.dat\n@@ -1,2 +1,2 @@\n a\n-b\n\\ No newline at end of file\n+b\n"
+        );
+    }
+
+    #[test]
+    fn an_empty_side_names_the_line_before() {
+        assert_eq!(
+            in_order("", "x\n"),
+            "--- kb.dat\n+++ kb.dat\n@@ -0,0 +1 @@\n+x\n"
+        );
+        assert_eq!(
+            in_order("x\n", ""),
+            "--- kb.dat\n+++ kb.dat\n@@ -1 +0,0 @@\n-x\n"
+        );
+    }
+
+    #[test]
+    fn changes_six_lines_apart_share_a_hunk_and_seven_do_not() {
+        let old: String = (0..20).map(|n| format!("{n}\n")).collect();
+        let six = old.replace("\n3\n", "\n3x\n").replace("\n10\n", "\n10x\n");
+        let diff = in_order(&old, &six);
+        assert_eq!(diff.matches("@@ -").count(), 1, "{diff}");
+        assert!(diff.contains("@@ -1,14 +1,14 @@"), "{diff}");
+        let seven = old.replace("\n3\n", "\n3x\n").replace("\n11\n", "\n11x\n");
+        let diff = in_order(&old, &seven);
+        assert_eq!(diff.matches("@@ -").count(), 2, "{diff}");
+        assert!(
+            diff.contains("@@ -1,7 +1,7 @@") && diff.contains("@@ -9,7 +9,7 @@"),
+            "{diff}"
+        );
+    }
+
+    #[test]
+    fn a_line_moved_is_taken_out_and_put_in() {
+        let old = "1\n2\n3\n4\n";
+        let new = Given {
+            lines: vec![
+                ("4\n", Some(3)),
+                ("1\n", Some(0)),
+                ("2\n", Some(1)),
+                ("3\n", Some(2)),
+            ],
+            old,
+        };
+        assert_eq!(
+            diff(old, &new),
+            "--- kb.dat\n+++ kb.dat\n@@ -1,4 +1,4 @@\n+4\n 1\n 2\n 3\n-4\n"
+        );
+    }
+
+    #[test]
+    fn a_blank_line_the_layout_adds_where_one_was_is_left_alone() {
+        let old = "a\n\nb\nc\n";
+        let new = Given {
+            lines: vec![
+                ("c\n", Some(3)),
+                ("a\n", Some(0)),
+                ("\n", None),
+                ("b\n", Some(2)),
+            ],
+            old,
+        };
+        assert_eq!(
+            diff(old, &new),
+            "--- kb.dat\n+++ kb.dat\n@@ -1,4 +1,4 @@\n+c\n a\n \n b\n-c\n"
+        );
+    }
+
+    #[test]
+    fn lines_put_in_and_taken_out_by_edits_are_found_again() {
+        let old: String = (0..30).map(|n| format!("{n}\n")).collect();
+        let new = old
+            .replace("\n5\n", "\n5\nnew\n")
+            .replace("\n20\n21\n", "\n");
+        let diff = in_order(&old, &new);
+        assert_eq!(diff.matches("@@ -").count(), 2, "{diff}");
+        assert_eq!(apply(&old, &diff), new);
+    }
+
+    /// A few short lines, often equal to each other.
+    fn text() -> impl Strategy<Value = String> {
+        proptest::collection::vec(prop_oneof![Just(String::new()), "[abc]{1,2}"], 0..40)
+            .prop_flat_map(|lines| {
+                (Just(lines), any::<bool>()).prop_map(|(lines, last_newline)| {
+                    let mut text = lines.join("\n");
+                    if last_newline && !text.is_empty() {
+                        text.push('\n');
+                    }
+                    text
+                })
+            })
+    }
+
+    proptest! {
+        #[test]
+        fn the_diff_of_any_two_texts_gives_the_new_one(old in text(), new in text()) {
+            let diff = in_order(&old, &new);
+            prop_assert_eq!(diff.is_empty(), old == new);
+            prop_assert_eq!(apply(&old, &diff), new);
+        }
+
+        #[test]
+        fn any_origins_give_a_diff_that_gives_the_new_text(
+            old in text(),
+            new in text(),
+            picks in proptest::collection::vec(any::<Option<u8>>(), 40),
+        ) {
+            let old_count = lines_inclusive(&old).count();
+            let lines = lines_inclusive(&new)
+                .zip(&picks)
+                .map(|((_, line), pick)| {
+                    let origin = pick.filter(|_| old_count > 0).map(|pick| pick as usize % old_count);
+                    (line, origin)
+                })
+                .collect();
+            let diff = diff(&old, &Given { lines, old: &old });
+            prop_assert_eq!(apply(&old, &diff), new);
+        }
+    }
+}
