@@ -93,12 +93,18 @@ impl Rows {
     fn widths(&self) -> Option<Vec<usize>> {
         let mut widths = vec![1; self.header.len()];
         let header = self.header.iter().map(String::as_str);
-        let cells = self
-            .rows()
-            .flat_map(|row| row.enumerate().map(|(i, range)| (i, &self.text[range])));
-        for (column, cell) in header.enumerate().chain(cells) {
+        let widen = |widths: &mut Vec<usize>, column: usize, cell: &str| {
             for line in cell.split('\n') {
                 widths[column] = widths[column].max(width(line)?);
+            }
+            Some(())
+        };
+        for (column, cell) in header.enumerate() {
+            widen(&mut widths, column, cell)?;
+        }
+        for row in self.rows() {
+            for (column, range) in row.enumerate() {
+                widen(&mut widths, column, &self.text[range])?;
             }
         }
         Some(widths)
@@ -109,14 +115,19 @@ impl Rows {
     fn write_plain(&self, widths: &[usize], out: &mut impl Write) -> io::Result<()> {
         let header: Vec<&str> = self.header.iter().map(String::as_str).collect();
         write_border(out, widths, ["┌", "─", "┬", "┐"])?;
-        write_row(out, widths, &header)?;
+        let mut drawn = Vec::new();
+        draw_row(&mut drawn, widths, &header);
+        out.write_all(&drawn)?;
         out.write_all(b"\n")?;
         write_border(out, widths, ["╞", "═", "╪", "╡"])?;
         let mut cells = Vec::with_capacity(self.header.len());
+        let mut drawn = Vec::new();
         for ranges in self.rows() {
             cells.clear();
             cells.extend(ranges.map(|range| &self.text[range]));
-            write_row(out, widths, &cells)?;
+            drawn.clear();
+            draw_row(&mut drawn, widths, &cells);
+            out.write_all(&drawn)?;
         }
         out.write_all(b"\n")?;
         write_border(out, widths, ["└", "─", "┴", "┘"])
@@ -139,35 +150,25 @@ fn write_border(
     out.write_all(right.as_bytes())
 }
 
-/// The lines of a row, each after a newline; a cell with fewer lines than another is blank
-/// below its last.
-fn write_row(out: &mut impl Write, widths: &[usize], cells: &[&str]) -> io::Result<()> {
+/// The lines of a row, each after a newline, onto `out`; a cell with fewer lines than
+/// another is blank below its last.
+fn draw_row(out: &mut Vec<u8>, widths: &[usize], cells: &[&str]) {
     let height = cells.iter().map(|cell| cell.split('\n').count()).max();
     let mut lines: Vec<_> = cells.iter().map(|cell| cell.split('\n')).collect();
     for _ in 0..height.unwrap_or(0) {
-        out.write_all("\n│".as_bytes())?;
+        out.extend_from_slice("\n│".as_bytes());
         for (i, (cell, &width)) in lines.iter_mut().zip(widths).enumerate() {
             if i > 0 {
-                out.write_all("┆".as_bytes())?;
+                out.extend_from_slice("┆".as_bytes());
             }
             let line = cell.next().unwrap_or("");
-            out.write_all(b" ")?;
-            out.write_all(line.as_bytes())?;
-            write_spaces(out, width - width_of_known(line) + 1)?;
+            out.push(b' ');
+            out.extend_from_slice(line.as_bytes());
+            let padding = width - width_of_known(line) + 1;
+            out.resize(out.len() + padding, b' ');
         }
-        out.write_all("│".as_bytes())?;
+        out.extend_from_slice("│".as_bytes());
     }
-    Ok(())
-}
-
-fn write_spaces(out: &mut impl Write, mut count: usize) -> io::Result<()> {
-    const SPACES: [u8; 64] = [b' '; 64];
-    while count > 0 {
-        let chunk = count.min(SPACES.len());
-        out.write_all(&SPACES[..chunk])?;
-        count -= chunk;
-    }
-    Ok(())
 }
 
 /// How many columns `line` takes on a terminal, if every character of it is one whose width
@@ -178,9 +179,14 @@ fn width(line: &str) -> Option<usize> {
     if line.bytes().all(|b| matches!(b, b' '..=b'~')) {
         return Some(line.len());
     }
-    line.chars()
-        .all(|ch| matches!(ch, ' '..='~' | 'À'..='ÿ') || KNOWN_MARKS.contains(ch))
-        .then(|| line.chars().count())
+    let mut width = 0;
+    for ch in line.chars() {
+        if !matches!(ch, ' '..='~' | 'À'..='ÿ') && !KNOWN_MARKS.contains(&ch) {
+            return None;
+        }
+        width += 1;
+    }
+    Some(width)
 }
 
 /// A line's width, once [`width`] has known it.
@@ -194,7 +200,7 @@ fn width_of_known(line: &str) -> usize {
 
 /// The characters ekb's tables write besides ASCII: `—` (no value), the message marks,
 /// `θ` and `°` of a pose.
-const KNOWN_MARKS: &str = "—✓✗θ°";
+const KNOWN_MARKS: [char; 5] = ['—', '✓', '✗', 'θ', '°'];
 
 #[cfg(test)]
 mod tests {
@@ -247,7 +253,7 @@ mod tests {
 
     #[test]
     fn known_characters_are_as_wide_for_comfy_table() {
-        let known = (' '..='~').chain('À'..='ÿ').chain(KNOWN_MARKS.chars());
+        let known = (' '..='~').chain('À'..='ÿ').chain(KNOWN_MARKS);
         for ch in known {
             let text = ch.to_string();
             let mut table = Table::new();

@@ -6,7 +6,7 @@
 
 use std::borrow::Cow;
 
-use serde::Serialize;
+use serde::{Serialize, Serializer};
 
 use super::line::LoadedValue;
 use super::load::{Loaded, LoadedLocation};
@@ -21,9 +21,28 @@ pub struct LoadedExport<'a> {
     pub reader: &'static str,
     pub dialect: Dialect,
     /// In ascending id order.
-    pub locations: Vec<LoadedLocationExport<'a>>,
+    pub locations: LoadedLocations<'a>,
     /// `null` when no line set the tour; a `null` stop holds whatever was in memory.
     pub tour: Option<Vec<Option<i32>>>,
+}
+
+/// Every location, each made as it is written: a file of 100,000 locations would otherwise
+/// hold all of them at once, as large as the file.
+#[derive(Debug)]
+pub struct LoadedLocations<'a> {
+    loaded: &'a Loaded<'a>,
+}
+
+impl Serialize for LoadedLocations<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let text = self.loaded.text();
+        serializer.collect_seq(
+            self.loaded
+                .locations
+                .values()
+                .map(|location| LoadedLocationExport::new(location, self.loaded, text)),
+        )
+    }
 }
 
 #[derive(Debug, Serialize)]
@@ -62,19 +81,14 @@ pub struct LoadedMessages<'a> {
 }
 
 impl<'a> LoadedExport<'a> {
-    /// `loaded`, whose text values are spans of `text`.
-    pub fn new(loaded: &Loaded<'_>, text: &'a [u8]) -> LoadedExport<'a> {
+    pub fn new(loaded: &'a Loaded<'a>) -> LoadedExport<'a> {
         LoadedExport {
             reader: loaded.reader.name(),
             dialect: match loaded.reader.pose_key() {
                 Key::RobotLocation => Dialect::Seed,
                 _ => Dialect::Current,
             },
-            locations: loaded
-                .locations
-                .values()
-                .map(|location| LoadedLocationExport::new(location, loaded, text))
-                .collect(),
+            locations: LoadedLocations { loaded },
             tour: loaded.tour.as_ref().map(|tour| tour.stops.clone()),
         }
     }
