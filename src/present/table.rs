@@ -1,7 +1,6 @@
 //! Terminal tables: one look for every command that prints one.
 
 use std::io::{self, Write};
-use std::ops::Range;
 
 use comfy_table::{presets, ContentArrangement, Table};
 
@@ -19,7 +18,7 @@ pub fn new(header: &[&str]) -> Table {
     table
 }
 
-/// The rows of a table of [`new`]'s look, kept in one string until written.
+/// The rows of a table of [`new`]'s look, kept in a few strings until written.
 ///
 /// A comfy-table `Table` of 100,000 rows took 2 s and 400 MB to print (a `String` for every
 /// line of every cell, and every line of the output kept until the end). When the table need
@@ -29,30 +28,67 @@ pub fn new(header: &[&str]) -> Table {
 /// the rows to comfy-table.
 pub struct Rows {
     header: Vec<String>,
-    /// The cells, row after row, one after the other.
-    text: String,
-    /// Where each cell ends in `text`.
-    ends: Vec<usize>,
+    /// The rows in parts, each made apart (on a core of its own: see [`Rows::join`]).
+    parts: Vec<Cells>,
 }
+
+/// Cells, row after row, one after the other in one string.
+#[derive(Default)]
+struct Cells {
+    text: String,
+    /// Where each cell ends in `text` (4 bytes, not 8: a table may have a million cells).
+    ends: Vec<u32>,
+}
+
+/// The most text one [`Cells`] holds before the next row starts another, so that the ends of
+/// its cells fit in a `u32`: a cell, cut after a few hundred characters, is far shorter.
+const MOST_TEXT_IN_CELLS: usize = 1 << 31;
 
 impl Rows {
     pub fn new(header: &[&str]) -> Rows {
+        Rows::with_capacity(header, 0)
+    }
+
+    /// A table with room for `rows` rows' cells.
+    pub fn with_capacity(header: &[&str], rows: usize) -> Rows {
+        let cells = Cells {
+            text: String::new(),
+            ends: Vec::with_capacity(rows * header.len()),
+        };
         Rows {
             header: header.iter().map(|cell| cell.to_string()).collect(),
-            text: String::new(),
-            ends: Vec::new(),
+            parts: vec![cells],
         }
+    }
+
+    /// The rows of `parts`, in order, under the first's header (the rows are not copied).
+    pub fn join(parts: Vec<Rows>) -> Option<Rows> {
+        let mut parts = parts.into_iter();
+        let mut joined = parts.next()?;
+        for part in parts {
+            joined.parts.extend(part.parts);
+        }
+        Some(joined)
     }
 
     /// Adds a row of as many cells as the header has.
     pub fn add_row<S: AsRef<str>>(&mut self, cells: impl IntoIterator<Item = S>) {
-        let before = self.ends.len();
+        if self
+            .parts
+            .last()
+            .is_none_or(|part| part.text.len() >= MOST_TEXT_IN_CELLS)
+        {
+            self.parts.push(Cells::default());
+        }
+        let part = self.parts.last_mut().expect("a part was just made");
+        let before = part.ends.len();
         for cell in cells {
-            self.text.push_str(cell.as_ref());
-            self.ends.push(self.text.len());
+            part.text.push_str(cell.as_ref());
+            let end = u32::try_from(part.text.len()).expect("a row is less than 2 GiB");
+            part.ends.push(end);
         }
         assert_eq!(
-            self.ends.len() - before,
+            part.ends.len() - before,
             self.header.len(),
             "a row per column"
         );
@@ -67,25 +103,33 @@ impl Rows {
             }
         }
         for row in self.rows() {
-            table.add_row(row.map(|range| &self.text[range]).collect::<Vec<_>>());
+            table.add_row(row.collect::<Vec<_>>());
         }
         write!(out, "{table}")
     }
 
-    /// The cells of each row, as ranges of `text`.
-    fn rows(&self) -> impl Iterator<Item = impl Iterator<Item = Range<usize>> + '_> + '_ {
-        self.ends
-            .chunks(self.header.len())
-            .enumerate()
-            .map(|(row, ends)| {
-                let first = row * self.header.len();
-                let mut start = if first == 0 { 0 } else { self.ends[first - 1] };
-                ends.iter().map(move |&end| {
-                    let range = start..end;
-                    start = end;
-                    range
+    /// The cells of each row.
+    fn rows(&self) -> impl Iterator<Item = impl Iterator<Item = &str> + '_> + '_ {
+        let columns = self.header.len();
+        self.parts.iter().flat_map(move |part| {
+            part.ends
+                .chunks(columns)
+                .enumerate()
+                .map(move |(row, ends)| {
+                    let first = row * columns;
+                    let mut start = if first == 0 {
+                        0
+                    } else {
+                        part.ends[first - 1] as usize
+                    };
+                    ends.iter().map(move |&end| {
+                        let end = end as usize;
+                        let cell = &part.text[start..end];
+                        start = end;
+                        cell
+                    })
                 })
-            })
+        })
     }
 
     /// The width of each column's widest line (at least 1, as comfy-table makes it), or
@@ -103,8 +147,8 @@ impl Rows {
             widen(&mut widths, column, cell)?;
         }
         for row in self.rows() {
-            for (column, range) in row.enumerate() {
-                widen(&mut widths, column, &self.text[range])?;
+            for (column, cell) in row.enumerate() {
+                widen(&mut widths, column, cell)?;
             }
         }
         Some(widths)
@@ -122,9 +166,9 @@ impl Rows {
         write_border(out, widths, ["╞", "═", "╪", "╡"])?;
         let mut cells = Vec::with_capacity(self.header.len());
         let mut drawn = Vec::new();
-        for ranges in self.rows() {
+        for row in self.rows() {
             cells.clear();
-            cells.extend(ranges.map(|range| &self.text[range]));
+            cells.extend(row);
             drawn.clear();
             draw_row(&mut drawn, widths, &cells);
             out.write_all(&drawn)?;
