@@ -296,6 +296,26 @@ mod tests {
     }
 
     #[test]
+    fn rows_made_in_parts_draw_as_rows_made_whole() {
+        let header = ["id", "description"];
+        let rows = [["1", "Hall"], ["22", "Lab\nupstairs"], ["333", "Café"]];
+        let mut whole = Rows::new(&header);
+        for row in rows {
+            whole.add_row(row);
+        }
+        let parts = rows.chunks(2).map(|chunk| {
+            let mut part = Rows::with_capacity(&header, chunk.len());
+            for row in chunk {
+                part.add_row(row);
+            }
+            part
+        });
+        let joined = Rows::join(parts.collect()).unwrap();
+        assert_eq!(plain(&joined), plain(&whole));
+        assert!(Rows::join(Vec::new()).is_none());
+    }
+
+    #[test]
     fn known_characters_are_as_wide_for_comfy_table() {
         let known = (' '..='~').chain('À'..='ÿ').chain(KNOWN_MARKS);
         for ch in known {
