@@ -1,6 +1,7 @@
 //! A whole file, loaded as one version of the robot's reader loads it.
 
 use super::line::{self, LineRead, LoadedValue};
+use super::tree::{ShapeBuilder, TreeShape};
 use super::Reader;
 use crate::model::Key;
 use crate::parallel;
@@ -14,6 +15,7 @@ pub struct Loaded<'a> {
     pub locations: Locations<'a>,
     /// `None` when no line set the tour.
     pub tour: Option<LoadedTour>,
+    pub tree: TreeShape,
     text: &'a [u8],
 }
 
@@ -118,10 +120,14 @@ fn load_in_parts(text: &[u8], reader: Reader, parts: usize) -> Loaded<'_> {
     let ranges = parallel::line_ranges(text, parts);
     let parts = parallel::map_ranges(ranges, |range| read_part(text, range, reader));
     let mut runs = Vec::with_capacity(parts.iter().map(|part| part.runs.len()).sum());
+    let mut tree = ShapeBuilder::default();
     let mut tour_line = None;
     let mut count = 0;
     let mut slots: Vec<Option<i32>> = Vec::new();
     for part in parts {
+        for run in &part.runs {
+            tree.add(run.id, run.count);
+        }
         runs.extend(part.runs);
         for (line, declared, stops) in part.tours {
             tour_line = Some(line);
@@ -171,15 +177,17 @@ fn load_in_parts(text: &[u8], reader: Reader, parts: usize) -> Loaded<'_> {
         reader,
         locations: Locations(locations),
         tour,
+        tree: tree.shape(),
         text,
     }
 }
 
 /// Consecutive lines of one location that load values: where each field's last line
-/// starts (plus one; 0: none).
+/// starts (plus one; 0: none), and how many lines there are.
 struct Run {
     id: i32,
     lines: [u32; Key::ALL.len()],
+    count: u32,
 }
 
 /// What the lines of one part of a file load, in file order.
@@ -203,10 +211,12 @@ fn read_part(text: &[u8], range: std::ops::Range<usize>, reader: Reader) -> Part
                     part.runs.push(Run {
                         id,
                         lines: [0; Key::ALL.len()],
+                        count: 0,
                     });
                 }
                 let run = part.runs.last_mut().expect("a run was just pushed");
                 run.lines[key.order()] = line.start + 1;
+                run.count += 1;
             }
             LineRead::Tour { count, stops } => part.tours.push((line, count, stops)),
             LineRead::Skipped
@@ -330,5 +340,13 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn the_tree_follows_the_order_of_ids() {
+        let text: String = (1..=5)
+            .map(|id| format!("robotLocationDescription {id} x\n"))
+            .collect();
+        assert_eq!(load(text.as_bytes(), Reader::V2025_06).tree.height, 5);
     }
 }
