@@ -120,4 +120,12 @@ mod tests {
         let back: serde_json::Value = serde_json::from_str(&printed).unwrap();
         assert_eq!(back, value);
     }
+
+    #[test]
+    fn a_ci_marker_in_plain_ascii_is_escaped_too() {
+        let mut out = Vec::new();
+        write(&serde_json::json!(["#1 ok", "see ##[warning]"]), &mut out).unwrap();
+        let printed = String::from_utf8(out).unwrap();
+        assert_eq!(printed, "[\n  \"#1 ok\",\n  \"see ##\\u005bwarning]\"\n]\n");
+    }
 }
