@@ -147,7 +147,7 @@ fn export_as_loaded(args: &Args, context: &Context, mut checked: Checked<'_>) ->
     }
     let text = checked.source.text().as_bytes();
     let loaded = reader::load(text, checked.reader);
-    write_output(args.output.as_deref(), &LoadedExport::new(&loaded, text))?;
+    write_output(args.output.as_deref(), &LoadedExport::new(&loaded))?;
     Ok(Exit::Clean)
 }
 

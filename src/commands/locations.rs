@@ -11,6 +11,7 @@ use super::{CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::export::ExportedLocation;
 use crate::model::{Dialect, Key, Language, Location, Phase};
+use crate::parallel;
 use crate::present::field::Field;
 use crate::present::{
     self, language, robot, table, Gesture, Message, TourPositions, MESSAGE_LEGEND,
@@ -77,9 +78,8 @@ fn write_table(checked: &Checked<'_>, loaded: &Loaded<'_>, out: &mut impl Write)
         header.push("arm");
     }
     header.extend(["messages", "tour stop"]);
-    let mut table = table::Rows::new(&header);
     let positions = TourPositions::new(kb);
-    for location in kb.locations() {
+    let row = |location: &Location<'_>| {
         let mut row = vec![
             location.id.to_string(),
             as_loaded(location, Field::Description, Key::RobotLocationDescription)
@@ -98,8 +98,19 @@ fn write_table(checked: &Checked<'_>, loaded: &Loaded<'_>, out: &mut impl Write)
         }
         row.push(message_marks(location));
         row.push(tour_cell(positions.of(location.id)));
-        table.add_row(row);
-    }
+        row
+    };
+    // The rows of a large file are made in parts, one per core, and drawn in order.
+    let locations = kb.locations();
+    let ranges = parallel::item_ranges(locations.len(), MIN_ROWS_PER_PART);
+    let parts = parallel::map_ranges(ranges, |range| {
+        let mut rows = table::Rows::with_capacity(&header, range.len());
+        for location in locations.iter().skip(range.start).take(range.len()) {
+            rows.add_row(row(location));
+        }
+        rows
+    });
+    let table = table::Rows::join(parts).unwrap_or_else(|| table::Rows::new(&header));
     table.write(out)?;
     let count = kb.locations().len();
     let plural = if count == 1 { "" } else { "s" };
@@ -109,6 +120,9 @@ fn write_table(checked: &Checked<'_>, loaded: &Loaded<'_>, out: &mut impl Write)
         checked.reader
     )
 }
+
+/// Below this many locations, the rows of the table are not worth a thread of their own.
+const MIN_ROWS_PER_PART: usize = 10_000;
 
 /// `before EN ✓ ZU ~ RW ~` and `after` on a second line.
 fn message_marks(location: &Location<'_>) -> String {

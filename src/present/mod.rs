@@ -12,6 +12,7 @@ pub mod table;
 
 use std::borrow::Cow;
 use std::collections::HashMap;
+use std::fmt::Write as _;
 
 use crate::check::Checked;
 use crate::model::{
@@ -30,12 +31,20 @@ pub fn number(n: f64) -> String {
 
 /// `2.6, 8.1, -90.0°` (each number as [`number`] writes it).
 pub fn pose(pose: &Pose) -> String {
-    format!("{:?}, {:?}, {:?}°", pose.x, pose.y, pose.theta)
+    numbers([pose.x, pose.y, pose.theta], "°")
 }
 
 /// `3.2, 8.4, 0.82` (each number as [`number`] writes it).
 pub fn point(point: &Point) -> String {
-    format!("{:?}, {:?}, {:?}", point.x, point.y, point.z)
+    numbers([point.x, point.y, point.z], "")
+}
+
+/// Three numbers as [`number`] writes them, then `unit`; into a string made large enough at
+/// once (`format!` grows it piece by piece, which was a tenth of `ekb locations`).
+fn numbers([a, b, c]: [f64; 3], unit: &str) -> String {
+    let mut out = String::with_capacity(64);
+    write!(out, "{a:?}, {b:?}, {c:?}{unit}").expect("a String takes any text");
+    out
 }
 
 /// Whether, and at what, the robot gestures at a location.

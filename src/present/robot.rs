@@ -117,12 +117,13 @@ fn describe(field: Field, value: &FieldValue<'_>) -> String {
 /// The tour the robot loads, where it is not the file's: each stop (`None`: whatever was in
 /// memory), empty when it loads no tour at all.
 pub fn other_tour(kb: &KnowledgeBase<'_>, loaded: &Loaded<'_>) -> Option<Vec<Option<i32>>> {
-    let written: Vec<Option<i32>> = kb.tour_stops().map(|id| i32::try_from(id).ok()).collect();
+    // Compared stop by stop, not collected: a tour may have a million stops.
+    let written = kb.tour_stops().map(|id| i32::try_from(id).ok());
     let held = loaded
         .tour
         .as_ref()
         .map_or_else(Vec::new, |tour| tour.stops.clone());
-    (held != written).then_some(held)
+    (!held.iter().copied().eq(written)).then_some(held)
 }
 
 /// `1 → 4 → ?` (`?`: undefined; at most [`super::MAX_LISTED`] stops), or `no tour at all`.

@@ -1,7 +1,6 @@
 //! Terminal tables: one look for every command that prints one.
 
 use std::io::{self, Write};
-use std::ops::Range;
 
 use comfy_table::{presets, ContentArrangement, Table};
 
@@ -19,7 +18,7 @@ pub fn new(header: &[&str]) -> Table {
     table
 }
 
-/// The rows of a table of [`new`]'s look, kept in one string until written.
+/// The rows of a table of [`new`]'s look, kept in a few strings until written.
 ///
 /// A comfy-table `Table` of 100,000 rows took 2 s and 400 MB to print (a `String` for every
 /// line of every cell, and every line of the output kept until the end). When the table need
@@ -29,30 +28,67 @@ pub fn new(header: &[&str]) -> Table {
 /// the rows to comfy-table.
 pub struct Rows {
     header: Vec<String>,
-    /// The cells, row after row, one after the other.
-    text: String,
-    /// Where each cell ends in `text`.
-    ends: Vec<usize>,
+    /// The rows in parts, each made apart (on a core of its own: see [`Rows::join`]).
+    parts: Vec<Cells>,
 }
+
+/// Cells, row after row, one after the other in one string.
+#[derive(Default)]
+struct Cells {
+    text: String,
+    /// Where each cell ends in `text` (4 bytes, not 8: a table may have a million cells).
+    ends: Vec<u32>,
+}
+
+/// The most text one [`Cells`] holds before the next row starts another, so that the ends of
+/// its cells fit in a `u32`: a cell, cut after a few hundred characters, is far shorter.
+const MOST_TEXT_IN_CELLS: usize = 1 << 31;
 
 impl Rows {
     pub fn new(header: &[&str]) -> Rows {
+        Rows::with_capacity(header, 0)
+    }
+
+    /// A table with room for `rows` rows' cells.
+    pub fn with_capacity(header: &[&str], rows: usize) -> Rows {
+        let cells = Cells {
+            text: String::new(),
+            ends: Vec::with_capacity(rows * header.len()),
+        };
         Rows {
             header: header.iter().map(|cell| cell.to_string()).collect(),
-            text: String::new(),
-            ends: Vec::new(),
+            parts: vec![cells],
         }
+    }
+
+    /// The rows of `parts`, in order, under the first's header (the rows are not copied).
+    pub fn join(parts: Vec<Rows>) -> Option<Rows> {
+        let mut parts = parts.into_iter();
+        let mut joined = parts.next()?;
+        for part in parts {
+            joined.parts.extend(part.parts);
+        }
+        Some(joined)
     }
 
     /// Adds a row of as many cells as the header has.
     pub fn add_row<S: AsRef<str>>(&mut self, cells: impl IntoIterator<Item = S>) {
-        let before = self.ends.len();
+        if self
+            .parts
+            .last()
+            .is_none_or(|part| part.text.len() >= MOST_TEXT_IN_CELLS)
+        {
+            self.parts.push(Cells::default());
+        }
+        let part = self.parts.last_mut().expect("a part was just made");
+        let before = part.ends.len();
         for cell in cells {
-            self.text.push_str(cell.as_ref());
-            self.ends.push(self.text.len());
+            part.text.push_str(cell.as_ref());
+            let end = u32::try_from(part.text.len()).expect("a row is less than 2 GiB");
+            part.ends.push(end);
         }
         assert_eq!(
-            self.ends.len() - before,
+            part.ends.len() - before,
             self.header.len(),
             "a row per column"
         );
@@ -67,25 +103,33 @@ impl Rows {
             }
         }
         for row in self.rows() {
-            table.add_row(row.map(|range| &self.text[range]).collect::<Vec<_>>());
+            table.add_row(row.collect::<Vec<_>>());
         }
         write!(out, "{table}")
     }
 
-    /// The cells of each row, as ranges of `text`.
-    fn rows(&self) -> impl Iterator<Item = impl Iterator<Item = Range<usize>> + '_> + '_ {
-        self.ends
-            .chunks(self.header.len())
-            .enumerate()
-            .map(|(row, ends)| {
-                let first = row * self.header.len();
-                let mut start = if first == 0 { 0 } else { self.ends[first - 1] };
-                ends.iter().map(move |&end| {
-                    let range = start..end;
-                    start = end;
-                    range
+    /// The cells of each row.
+    fn rows(&self) -> impl Iterator<Item = impl Iterator<Item = &str> + '_> + '_ {
+        let columns = self.header.len();
+        self.parts.iter().flat_map(move |part| {
+            part.ends
+                .chunks(columns)
+                .enumerate()
+                .map(move |(row, ends)| {
+                    let first = row * columns;
+                    let mut start = if first == 0 {
+                        0
+                    } else {
+                        part.ends[first - 1] as usize
+                    };
+                    ends.iter().map(move |&end| {
+                        let end = end as usize;
+                        let cell = &part.text[start..end];
+                        start = end;
+                        cell
+                    })
                 })
-            })
+        })
     }
 
     /// The width of each column's widest line (at least 1, as comfy-table makes it), or
@@ -93,12 +137,18 @@ impl Rows {
     fn widths(&self) -> Option<Vec<usize>> {
         let mut widths = vec![1; self.header.len()];
         let header = self.header.iter().map(String::as_str);
-        let cells = self
-            .rows()
-            .flat_map(|row| row.enumerate().map(|(i, range)| (i, &self.text[range])));
-        for (column, cell) in header.enumerate().chain(cells) {
+        let widen = |widths: &mut Vec<usize>, column: usize, cell: &str| {
             for line in cell.split('\n') {
                 widths[column] = widths[column].max(width(line)?);
+            }
+            Some(())
+        };
+        for (column, cell) in header.enumerate() {
+            widen(&mut widths, column, cell)?;
+        }
+        for row in self.rows() {
+            for (column, cell) in row.enumerate() {
+                widen(&mut widths, column, cell)?;
             }
         }
         Some(widths)
@@ -109,14 +159,19 @@ impl Rows {
     fn write_plain(&self, widths: &[usize], out: &mut impl Write) -> io::Result<()> {
         let header: Vec<&str> = self.header.iter().map(String::as_str).collect();
         write_border(out, widths, ["┌", "─", "┬", "┐"])?;
-        write_row(out, widths, &header)?;
+        let mut drawn = Vec::new();
+        draw_row(&mut drawn, widths, &header);
+        out.write_all(&drawn)?;
         out.write_all(b"\n")?;
         write_border(out, widths, ["╞", "═", "╪", "╡"])?;
         let mut cells = Vec::with_capacity(self.header.len());
-        for ranges in self.rows() {
+        let mut drawn = Vec::new();
+        for row in self.rows() {
             cells.clear();
-            cells.extend(ranges.map(|range| &self.text[range]));
-            write_row(out, widths, &cells)?;
+            cells.extend(row);
+            drawn.clear();
+            draw_row(&mut drawn, widths, &cells);
+            out.write_all(&drawn)?;
         }
         out.write_all(b"\n")?;
         write_border(out, widths, ["└", "─", "┴", "┘"])
@@ -139,35 +194,25 @@ fn write_border(
     out.write_all(right.as_bytes())
 }
 
-/// The lines of a row, each after a newline; a cell with fewer lines than another is blank
-/// below its last.
-fn write_row(out: &mut impl Write, widths: &[usize], cells: &[&str]) -> io::Result<()> {
+/// The lines of a row, each after a newline, onto `out`; a cell with fewer lines than
+/// another is blank below its last.
+fn draw_row(out: &mut Vec<u8>, widths: &[usize], cells: &[&str]) {
     let height = cells.iter().map(|cell| cell.split('\n').count()).max();
     let mut lines: Vec<_> = cells.iter().map(|cell| cell.split('\n')).collect();
     for _ in 0..height.unwrap_or(0) {
-        out.write_all("\n│".as_bytes())?;
+        out.extend_from_slice("\n│".as_bytes());
         for (i, (cell, &width)) in lines.iter_mut().zip(widths).enumerate() {
             if i > 0 {
-                out.write_all("┆".as_bytes())?;
+                out.extend_from_slice("┆".as_bytes());
             }
             let line = cell.next().unwrap_or("");
-            out.write_all(b" ")?;
-            out.write_all(line.as_bytes())?;
-            write_spaces(out, width - width_of_known(line) + 1)?;
+            out.push(b' ');
+            out.extend_from_slice(line.as_bytes());
+            let padding = width - width_of_known(line) + 1;
+            out.resize(out.len() + padding, b' ');
         }
-        out.write_all("│".as_bytes())?;
+        out.extend_from_slice("│".as_bytes());
     }
-    Ok(())
-}
-
-fn write_spaces(out: &mut impl Write, mut count: usize) -> io::Result<()> {
-    const SPACES: [u8; 64] = [b' '; 64];
-    while count > 0 {
-        let chunk = count.min(SPACES.len());
-        out.write_all(&SPACES[..chunk])?;
-        count -= chunk;
-    }
-    Ok(())
 }
 
 /// How many columns `line` takes on a terminal, if every character of it is one whose width
@@ -178,9 +223,14 @@ fn width(line: &str) -> Option<usize> {
     if line.bytes().all(|b| matches!(b, b' '..=b'~')) {
         return Some(line.len());
     }
-    line.chars()
-        .all(|ch| matches!(ch, ' '..='~' | 'À'..='ÿ') || KNOWN_MARKS.contains(ch))
-        .then(|| line.chars().count())
+    let mut width = 0;
+    for ch in line.chars() {
+        if !matches!(ch, ' '..='~' | 'À'..='ÿ') && !KNOWN_MARKS.contains(&ch) {
+            return None;
+        }
+        width += 1;
+    }
+    Some(width)
 }
 
 /// A line's width, once [`width`] has known it.
@@ -194,7 +244,7 @@ fn width_of_known(line: &str) -> usize {
 
 /// The characters ekb's tables write besides ASCII: `—` (no value), the message marks,
 /// `θ` and `°` of a pose.
-const KNOWN_MARKS: &str = "—✓✗θ°";
+const KNOWN_MARKS: [char; 5] = ['—', '✓', '✗', 'θ', '°'];
 
 #[cfg(test)]
 mod tests {
@@ -246,8 +296,28 @@ mod tests {
     }
 
     #[test]
+    fn rows_made_in_parts_draw_as_rows_made_whole() {
+        let header = ["id", "description"];
+        let rows = [["1", "Hall"], ["22", "Lab\nupstairs"], ["333", "Café"]];
+        let mut whole = Rows::new(&header);
+        for row in rows {
+            whole.add_row(row);
+        }
+        let parts = rows.chunks(2).map(|chunk| {
+            let mut part = Rows::with_capacity(&header, chunk.len());
+            for row in chunk {
+                part.add_row(row);
+            }
+            part
+        });
+        let joined = Rows::join(parts.collect()).unwrap();
+        assert_eq!(plain(&joined), plain(&whole));
+        assert!(Rows::join(Vec::new()).is_none());
+    }
+
+    #[test]
     fn known_characters_are_as_wide_for_comfy_table() {
-        let known = (' '..='~').chain('À'..='ÿ').chain(KNOWN_MARKS.chars());
+        let known = (' '..='~').chain('À'..='ÿ').chain(KNOWN_MARKS);
         for ch in known {
             let text = ch.to_string();
             let mut table = Table::new();

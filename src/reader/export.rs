@@ -6,12 +6,13 @@
 
 use std::borrow::Cow;
 
-use serde::Serialize;
+use serde::{Serialize, Serializer};
 
 use super::line::LoadedValue;
 use super::load::{Loaded, LoadedLocation};
 use super::view::shortest;
 use crate::model::{Dialect, Key, Language, Phase};
+use crate::parallel;
 
 /// The whole of what the robot holds.
 #[derive(Debug, Serialize)]
@@ -21,9 +22,41 @@ pub struct LoadedExport<'a> {
     pub reader: &'static str,
     pub dialect: Dialect,
     /// In ascending id order.
-    pub locations: Vec<LoadedLocationExport<'a>>,
+    pub locations: LoadedLocations<'a>,
     /// `null` when no line set the tour; a `null` stop holds whatever was in memory.
     pub tour: Option<Vec<Option<i32>>>,
+}
+
+/// Every location, made as it is written, a batch at a time (each batch in parts, one per
+/// core): a file of 100,000 locations would otherwise hold all of them at once, as large as
+/// the file, and read every field's line again on one core.
+#[derive(Debug)]
+pub struct LoadedLocations<'a> {
+    loaded: &'a Loaded<'a>,
+}
+
+/// How many locations are made before they are written.
+const BATCH: usize = 8192;
+
+/// Below this many locations of a batch, a part is not worth a thread.
+const MIN_PER_PART: usize = 1024;
+
+impl Serialize for LoadedLocations<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let loaded = self.loaded;
+        let locations = loaded.locations.values().as_slice();
+        let batches = locations.chunks(BATCH).flat_map(|batch| {
+            let ranges = parallel::item_ranges(batch.len(), MIN_PER_PART);
+            parallel::map_ranges(ranges, |range| {
+                let made = batch[range].iter();
+                made.map(|location| LoadedLocationExport::new(location, loaded, loaded.text()))
+                    .collect::<Vec<_>>()
+            })
+            .into_iter()
+            .flatten()
+        });
+        serializer.collect_seq(batches)
+    }
 }
 
 #[derive(Debug, Serialize)]
@@ -62,19 +95,14 @@ pub struct LoadedMessages<'a> {
 }
 
 impl<'a> LoadedExport<'a> {
-    /// `loaded`, whose text values are spans of `text`.
-    pub fn new(loaded: &Loaded<'_>, text: &'a [u8]) -> LoadedExport<'a> {
+    pub fn new(loaded: &'a Loaded<'a>) -> LoadedExport<'a> {
         LoadedExport {
             reader: loaded.reader.name(),
             dialect: match loaded.reader.pose_key() {
                 Key::RobotLocation => Dialect::Seed,
                 _ => Dialect::Current,
             },
-            locations: loaded
-                .locations
-                .values()
-                .map(|location| LoadedLocationExport::new(location, loaded, text))
-                .collect(),
+            locations: LoadedLocations { loaded },
             tour: loaded.tour.as_ref().map(|tour| tour.stops.clone()),
         }
     }

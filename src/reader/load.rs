@@ -1,7 +1,5 @@
 //! A whole file, loaded as one version of the robot's reader loads it.
 
-use std::collections::BTreeMap;
-
 use super::line::{self, LineRead, LoadedValue};
 use super::tree::{ShapeBuilder, TreeShape};
 use super::Reader;
@@ -14,7 +12,7 @@ use crate::syntax::Span;
 pub struct Loaded<'a> {
     pub reader: Reader,
     /// By id, as `%d` read it (so possibly 0 or negative).
-    pub locations: BTreeMap<i32, LoadedLocation<'a>>,
+    pub locations: Locations<'a>,
     /// `None` when no line set the tour.
     pub tour: Option<LoadedTour>,
     pub tree: TreeShape,
@@ -34,6 +32,39 @@ pub struct LoadedLocation<'a> {
     lines: [u32; Key::ALL.len()],
     text: &'a [u8],
     reader: Reader,
+}
+
+/// The locations the robot holds, in ascending id order: a sorted list, which holds 100,000
+/// of them in half the memory of a `BTreeMap`.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Locations<'a>(Vec<LoadedLocation<'a>>);
+
+impl<'a> Locations<'a> {
+    pub fn get(&self, id: &i32) -> Option<&LoadedLocation<'a>> {
+        let index = self.0.binary_search_by_key(id, |location| location.id);
+        index.ok().map(|index| &self.0[index])
+    }
+
+    /// In ascending id order.
+    pub fn values(&self) -> std::slice::Iter<'_, LoadedLocation<'a>> {
+        self.0.iter()
+    }
+
+    pub fn len(&self) -> usize {
+        self.0.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+}
+
+impl<'a> std::ops::Index<&i32> for Locations<'a> {
+    type Output = LoadedLocation<'a>;
+
+    fn index(&self, id: &i32) -> &LoadedLocation<'a> {
+        self.get(id).expect("no location with this id")
+    }
 }
 
 /// A field's value and the line (`fgets` call) it came from.
@@ -88,26 +119,16 @@ pub fn load(text: &[u8], reader: Reader) -> Loaded<'_> {
 fn load_in_parts(text: &[u8], reader: Reader, parts: usize) -> Loaded<'_> {
     let ranges = parallel::line_ranges(text, parts);
     let parts = parallel::map_ranges(ranges, |range| read_part(text, range, reader));
-    let mut locations: BTreeMap<i32, LoadedLocation> = BTreeMap::new();
+    let mut runs = Vec::with_capacity(parts.iter().map(|part| part.runs.len()).sum());
     let mut tree = ShapeBuilder::default();
     let mut tour_line = None;
     let mut count = 0;
     let mut slots: Vec<Option<i32>> = Vec::new();
     for part in parts {
-        for Run { id, lines, count } in part.runs {
-            tree.add(id, count);
-            let location = locations.entry(id).or_insert_with(|| LoadedLocation {
-                id,
-                lines: [0; Key::ALL.len()],
-                text,
-                reader,
-            });
-            for (held, later) in location.lines.iter_mut().zip(lines) {
-                if later != 0 {
-                    *held = later;
-                }
-            }
+        for run in &part.runs {
+            tree.add(run.id, run.count);
         }
+        runs.extend(part.runs);
         for (line, declared, stops) in part.tours {
             tour_line = Some(line);
             count = declared;
@@ -116,6 +137,29 @@ fn load_in_parts(text: &[u8], reader: Reader, parts: usize) -> Loaded<'_> {
             }
             for (slot, stop) in slots.iter_mut().zip(stops) {
                 *slot = stop;
+            }
+        }
+    }
+    // By id, and in file order within an id (the sort is stable), so that a later line
+    // overwrites an earlier one's field.
+    runs.sort_by_key(|run| run.id);
+    let mut locations: Vec<LoadedLocation> = Vec::with_capacity(runs.len());
+    for Run { id, lines, .. } in runs {
+        let location = match locations.last_mut() {
+            Some(last) if last.id == id => last,
+            _ => {
+                locations.push(LoadedLocation {
+                    id,
+                    lines: [0; Key::ALL.len()],
+                    text,
+                    reader,
+                });
+                locations.last_mut().expect("a location was just pushed")
+            }
+        };
+        for (held, later) in location.lines.iter_mut().zip(lines) {
+            if later != 0 {
+                *held = later;
             }
         }
     }
@@ -131,7 +175,7 @@ fn load_in_parts(text: &[u8], reader: Reader, parts: usize) -> Loaded<'_> {
     });
     Loaded {
         reader,
-        locations,
+        locations: Locations(locations),
         tour,
         tree: tree.shape(),
         text,
