@@ -318,6 +318,18 @@ proptest! {
 }
 
 #[test]
+fn a_vertical_tab_or_form_feed_after_a_key_is_a_space_to_the_reader() {
+    // Found by the property test above: `sscanf`'s `%s` ends a key at a vertical tab, so
+    // the reader loads these lines, which are no `key value` lines to ekb.
+    assert_differences_are_reported(
+        "robotLocationDescription\u{B}2 vertical tab\r\nrobotLocationDescription\u{B}2 vertical tab\npostGestureMessageEnglish\u{A0}2 no-break space\n",
+    );
+    assert_differences_are_reported(
+        "robotLocationPose 2 1 2 3\nrobotLocationDescription\u{C}2 form feed\ntourSpecification 1 2\n",
+    );
+}
+
+#[test]
 fn the_seed_and_the_corpus() {
     let fixtures = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures");
     for file in [

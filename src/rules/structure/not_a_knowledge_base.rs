@@ -46,8 +46,10 @@ pub fn check(text: &str) -> Option<Diagnostic> {
         };
         let name = key.text(text);
         // A known key, even miscased, makes it a knowledge base; ending here also keeps
-        // the check to the first line of nearly every file.
-        if Key::from_name_ignoring_case(name).is_some() {
+        // the check to the first line of nearly every file. So does a known key that a
+        // vertical tab or a form feed ends: the robot's reader takes either for a space.
+        let read_as_key = name.split(['\u{B}', '\u{C}']).next().unwrap_or(name);
+        if Key::from_name_ignoring_case(read_as_key).is_some() {
             return None;
         }
         if !args.is_empty() {
@@ -115,6 +117,9 @@ mod tests {
         assert!(check(foreign).is_some());
         assert_eq!(check(&format!("{foreign}tourSpecification 1 1\n")), None);
         assert_eq!(check(&format!("{foreign}RobotLocation 1 1 2 3\n")), None);
+        // The robot's reader reads a key that a vertical tab ends.
+        let tabbed = "robotLocationDescription\u{B}2 a\nb\u{B}1 c\nd\u{C}1 e\n";
+        assert_eq!(check(tabbed), None);
     }
 
     #[test]

@@ -49,6 +49,8 @@ pub fn name(space: char) -> String {
     match space {
         '\u{A0}' => "a no-break space (U+00A0)".to_string(),
         '\u{202F}' => "a narrow no-break space (U+202F)".to_string(),
+        '\u{B}' => "a vertical tab (U+000B)".to_string(),
+        '\u{C}' => "a form feed (U+000C)".to_string(),
         other => format!("a Unicode space (U+{:04X})", other as u32),
     }
 }

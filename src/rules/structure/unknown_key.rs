@@ -3,7 +3,7 @@ use crate::model::build::parse_id;
 use crate::model::Key;
 use crate::render::escape::{escape, is_odd_space};
 use crate::rules::{consequence, declare_rule, excerpt};
-use crate::syntax::Span;
+use crate::syntax::{self, Span};
 
 declare_rule! {
     /// ## What it does
@@ -56,31 +56,42 @@ pub fn diagnostic(span: Span, key: &str, id: Option<u32>) -> Diagnostic {
     .at_location(id)
 }
 
-/// The finding for a known key followed by a space that the robot's reader does not take
-/// for one (`preGestureMessageEnglish\u{A0}3`): the key and the id are one word to it.
+/// The finding for a known key followed by a space that is not a plain one
+/// (`preGestureMessageEnglish\u{A0}3`). To the robot's reader a no-break space or another
+/// Unicode space is no space: the key and the id are one word, and the line is ignored. A
+/// vertical tab or a form feed is a space to it (C's `isspace`): it reads the line as if a
+/// plain space were there, where ekb and other tools see one unknown word.
 fn key_before_odd_space(span: Span, written: &str) -> Option<Diagnostic> {
     let (at, space) = written.char_indices().find(|&(_, ch)| is_odd_space(ch))?;
     let key = Key::from_name(&written[..at])?;
     let id = parse_id(&written[at + space.len_utf8()..]).filter(|_| key != Key::TourSpecification);
+    let read_by_robot = space.is_ascii() && syntax::is_c_space(space as u8);
     let space = super::unicode_space::name(space);
-    Some(
-        Diagnostic::new(
-            &UNKNOWN_KEY,
-            span,
-            format!(
-                "`{}` is not a key of the knowledge base: {space}, not a plain space, follows \
-                 `{}`, so the robot's reader ignores this line; {}",
-                escape(&excerpt(written)),
-                key.name(),
-                consequence::lost(key, id)
-            ),
+    let message = if read_by_robot {
+        format!(
+            "`{}` is not a key of the knowledge base: {space}, not a plain space, follows \
+             `{}`; the robot's reader takes it for a space and reads this line, but ekb and \
+             other tools do not",
+            escape(&excerpt(written)),
+            key.name(),
         )
-        .at_location(id)
-        .with_help(format!(
-            "a plain space or a tab must separate the key from what follows: replace {space} \
-             after `{}` with a plain space",
-            key.name()
-        )),
+    } else {
+        format!(
+            "`{}` is not a key of the knowledge base: {space}, not a plain space, follows \
+             `{}`, so the robot's reader ignores this line; {}",
+            escape(&excerpt(written)),
+            key.name(),
+            consequence::lost(key, id)
+        )
+    };
+    Some(
+        Diagnostic::new(&UNKNOWN_KEY, span, message)
+            .at_location(id)
+            .with_help(format!(
+                "a plain space or a tab must separate the key from what follows: replace \
+                 {space} after `{}` with a plain space",
+                key.name()
+            )),
     )
 }
 
@@ -132,6 +143,17 @@ mod tests {
             .help
             .unwrap()
             .contains("replace a no-break space (U+00A0) after `preGestureMessageEnglish`"));
+        // A vertical tab is a space to the robot's reader: it reads the line.
+        let key = "robotLocationDescription\u{B}2";
+        let found = diagnostic(Span::new(0, key.len()), key, None);
+        assert!(
+            found
+                .message
+                .contains("takes it for a space and reads this line"),
+            "{}",
+            found.message
+        );
+        assert_eq!(found.location_id, Some(2));
         // Any other key with an odd space in it is shown escaped too.
         let found = diagnostic(Span::new(0, 10), "colour\u{2003}1", None);
         assert!(found
