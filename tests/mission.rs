@@ -166,6 +166,34 @@ rule_tests! {
 }
 
 #[test]
+fn a_culture_line_cut_inside_a_character_is_reported_at_that_character() {
+    // `k `, then two-byte characters: the robot cuts at byte 199, inside the 99th.
+    let culture = SourceFile::from_bytes(
+        "culture.dat",
+        format!("k {}\n", "é".repeat(150)).into_bytes(),
+    );
+    let sources = MissionSources {
+        mission: None,
+        culture_kb: Some(&culture),
+        culture_types: None,
+        kb: None,
+    };
+    let found = locate(&check_together(&sources, &RuleSet::default()));
+    let cut: Vec<(u32, u32, &str)> = found
+        .iter()
+        .filter(|f| f.rule == "culture-line-too-long")
+        .map(|f| (f.line, f.column, f.message.as_str()))
+        .collect();
+    assert_eq!(cut.len(), 1, "{}", show(&found));
+    assert_eq!((cut[0].0, cut[0].1), (1, 101), "the character cut in two");
+    assert!(
+        cut[0].2.contains("reads the rest (104 bytes)"),
+        "{}",
+        cut[0].2
+    );
+}
+
+#[test]
 fn every_mission_and_culture_rule_has_fixtures_and_a_test() {
     for rule in rules::ALL
         .iter()

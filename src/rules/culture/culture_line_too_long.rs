@@ -3,7 +3,7 @@ use crate::diagnostic::Diagnostic;
 use crate::mission::culture::LINE_BUFFER;
 use crate::reader::chunks;
 use crate::rules::declare_rule;
-use crate::syntax::Span;
+use crate::syntax::{floor_char_boundary, Span};
 
 declare_rule! {
     /// ## What it does
@@ -33,17 +33,25 @@ pub fn check(text: &str, out: &mut Diagnostics) {
             continue;
         }
         let cut = start + piece.len();
-        let line_end = text[cut..].find('\n').map_or(text.len(), |at| cut + at);
-        let rest = text[cut..line_end].trim_end_matches('\r');
+        // The robot cuts bytes, sometimes inside a character: the finding is about the
+        // character cut in two and what follows.
+        let at = floor_char_boundary(text, cut);
+        let line_end = text[at..]
+            .find('\n')
+            .map_or(text.len(), |newline| at + newline);
+        let rest = text[at..line_end].trim_end_matches('\r');
         // Point at what is cut off, or at the last character kept if only the newline is.
         let span = match rest.is_empty() {
-            false => Span::new(cut, cut + rest.len()),
+            false => Span::new(at, at + rest.len()),
             true => {
-                let last = text[..cut].chars().next_back().map_or(0, char::len_utf8);
-                Span::new(cut - last, cut)
+                let last = text[..at].chars().next_back().map_or(0, char::len_utf8);
+                Span::new(at - last, at)
             }
         };
-        let key = text[start..cut].split_whitespace().next().unwrap_or("");
+        let key = text[floor_char_boundary(text, start)..at]
+            .split_whitespace()
+            .next()
+            .unwrap_or("");
         out.push(
             Diagnostic::new(
                 &CULTURE_LINE_TOO_LONG,
