@@ -21,7 +21,7 @@ declare_rule! {
     ///
     /// ## Example
     /// ```text
-    /// #See_https://example.org/a/very/long/link/without/a/single/blank/in/it/that/runs/on/and/on/and/on
+    /// #See_https://example.org/a/very/long/link/without/a/single/blank/in/it/that/runs/on/and/on/and/on/and/on
     /// ```
     /// Put a blank within the first 99 bytes of the word, or shorten it.
     pub static COMPAT_KEY_TOO_LONG = {
