@@ -304,7 +304,14 @@ pub fn finish<'a>(
     }
     sort_by_position(&mut diagnostics);
     let not_kept = |rule| counts.get(rule).saturating_sub(cap(rule, keep_every_fix));
-    let suppressed = suppression::apply(source.text(), &mut diagnostics, rules, not_kept);
+    let suppression_lines = kb.lines.suppression_lines;
+    let suppressed = suppression::apply(
+        source.text(),
+        suppression_lines,
+        &mut diagnostics,
+        rules,
+        not_kept,
+    );
     for (rule, n) in suppressed.silenced {
         counts.subtract(rule, n);
     }

@@ -59,6 +59,11 @@ pub struct Malformed {
     pub comment: Span,
 }
 
+/// Whether `comment`, the text of a comment line, may be a suppression (well formed or not).
+pub fn may_be_one(comment: &str) -> bool {
+    memchr::memmem::find(comment.as_bytes(), MARK.as_bytes()).is_some()
+}
+
 /// The suppression comments of `text`, and those that cannot be read.
 pub fn find(text: &str) -> (Vec<Suppression>, Vec<Malformed>) {
     let (mut found, mut malformed) = (Vec::new(), Vec::new());
@@ -176,8 +181,12 @@ fn parse(text: &str, comment: Span) -> Parsed {
 /// nothing (if `rules` runs that rule). `dropped` tells how many findings of a rule were
 /// counted but not kept: a suppression of such a rule may silence one of them, so it is
 /// never called unused.
+///
+/// `lines`, if known, is how many lines [`may_be_one`] holds for: with none, the text is
+/// not read again.
 pub fn apply(
     text: &str,
+    lines: Option<u32>,
     diagnostics: &mut Vec<Diagnostic>,
     rules: &RuleSet,
     dropped: impl Fn(&'static Rule) -> usize,
@@ -185,7 +194,8 @@ pub fn apply(
     let mut suppressed = Suppressed::default();
     // No `#`, no comment: that one byte is found faster than the mark.
     let bytes = text.as_bytes();
-    if memchr::memchr(b'#', bytes).is_none()
+    if lines == Some(0)
+        || memchr::memchr(b'#', bytes).is_none()
         || memchr::memmem::find(bytes, MARK.as_bytes()).is_none()
     {
         return suppressed;
