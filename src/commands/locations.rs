@@ -121,8 +121,9 @@ fn write_table(checked: &Checked<'_>, loaded: &Loaded<'_>, out: &mut impl Write)
     )
 }
 
-/// Below this many locations, the rows of the table are not worth a thread of their own.
-const MIN_ROWS_PER_PART: usize = 10_000;
+/// Below this many locations, the rows of the table are not worth a thread of their own
+/// (a row takes about 13,000 instructions; a thread, about as many as 50 rows).
+const MIN_ROWS_PER_PART: usize = 1024;
 
 /// `before EN ✓ ZU ~ RW ~` and `after` on a second line.
 fn message_marks(location: &Location<'_>) -> String {
