@@ -190,16 +190,29 @@ pub const MAX_LISTED: usize = 100;
 /// `items` joined by `separator`, at most [`MAX_LISTED`] of them, then `… and N more` (a
 /// million-stop tour is one line of a file, and must not be a megabyte line of output).
 pub fn listed<T: std::fmt::Display>(mut items: impl Iterator<Item = T>, separator: &str) -> String {
+    let first: Vec<T> = items.by_ref().take(MAX_LISTED).collect();
+    let total = first.len() + items.count();
+    listed_of(first.into_iter(), total, separator)
+}
+
+/// [`listed`] of a list of `total` items, of which `items` are the first (or all).
+pub fn listed_of<T: std::fmt::Display>(
+    items: impl Iterator<Item = T>,
+    total: usize,
+    separator: &str,
+) -> String {
     let mut out = String::new();
-    for (index, item) in items.by_ref().take(MAX_LISTED).enumerate() {
-        if index > 0 {
+    let mut shown = 0;
+    for item in items.take(MAX_LISTED) {
+        if shown > 0 {
             out.push_str(separator);
         }
-        out.push_str(&item.to_string());
+        write!(out, "{item}").expect("a String takes any text");
+        shown += 1;
     }
-    let more = items.count();
+    let more = total.saturating_sub(shown);
     if more > 0 {
-        out.push_str(&format!(" … and {more} more"));
+        write!(out, " … and {more} more").expect("a String takes any text");
     }
     out
 }
@@ -249,20 +262,43 @@ pub fn line_range((first, last): (u32, u32)) -> String {
 /// Where each location is on the tour: 1-based positions (a location may be visited more
 /// than once), computed once so that a long tour and many locations stay linear.
 #[derive(Debug, Default)]
-pub struct TourPositions(HashMap<u32, Vec<usize>>);
+pub struct TourPositions(HashMap<u32, Positions>);
+
+/// The positions of one location that are kept, and how many it has.
+#[derive(Debug, Default)]
+struct Positions {
+    first: Vec<usize>,
+    count: usize,
+}
 
 impl TourPositions {
+    /// Every position of every location.
     pub fn new(kb: &KnowledgeBase<'_>) -> TourPositions {
-        let mut positions: HashMap<u32, Vec<usize>> = HashMap::new();
+        TourPositions::first(kb, usize::MAX)
+    }
+
+    /// The first `most` positions of each location, and how many it has: a view that lists
+    /// [`MAX_LISTED`] need not hold every stop of a million-stop tour (8 MB).
+    pub fn first(kb: &KnowledgeBase<'_>, most: usize) -> TourPositions {
+        let mut positions: HashMap<u32, Positions> = HashMap::new();
         for (index, id) in kb.tour_stops().enumerate() {
-            positions.entry(id).or_default().push(index + 1);
+            let location = positions.entry(id).or_default();
+            if location.first.len() < most {
+                location.first.push(index + 1);
+            }
+            location.count += 1;
         }
         TourPositions(positions)
     }
 
-    /// The positions of location `id`, empty when the tour does not visit it.
+    /// The positions of location `id` (those kept), empty when the tour does not visit it.
     pub fn of(&self, id: u32) -> &[usize] {
-        self.0.get(&id).map_or(&[], Vec::as_slice)
+        self.0.get(&id).map_or(&[], |positions| &positions.first)
+    }
+
+    /// How many times the tour visits location `id`.
+    pub fn count(&self, id: u32) -> usize {
+        self.0.get(&id).map_or(0, |positions| positions.count)
     }
 }
 
@@ -345,6 +381,21 @@ mod tests {
             MAX_LISTED - 2,
             MAX_LISTED - 1
         )));
+        assert_eq!(listed_of(0..MAX_LISTED, MAX_LISTED + 7, ", "), many);
+        assert_eq!(listed_of([1, 2].iter(), 5, ", "), "1, 2 … and 3 more");
+    }
+
+    #[test]
+    fn tour_positions_keep_the_first_and_count_them_all() {
+        let text = "robotLocationDescription 1 Hall\ntourSpecification 5 1 2 1 1 1\n";
+        let source = crate::SourceFile::from_bytes("kb.dat", text.as_bytes().to_vec());
+        let checked = crate::check(&source, &Default::default());
+        let all = TourPositions::new(&checked.kb);
+        assert_eq!((all.of(1), all.count(1)), (&[1, 3, 4, 5][..], 4));
+        let first = TourPositions::first(&checked.kb, 2);
+        assert_eq!((first.of(1), first.count(1)), (&[1, 3][..], 4));
+        assert_eq!((first.of(2), first.count(2)), (&[2][..], 1));
+        assert_eq!((first.of(7), first.count(7)), (&[][..], 0));
     }
 
     #[test]
