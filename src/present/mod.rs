@@ -315,6 +315,19 @@ pub fn note_errors(checked: &Checked<'_>, quiet: bool) {
     }
 }
 
+/// `count` pseudo-random 64-bit patterns (xorshift), the same every run: floats to test
+/// with.
+#[cfg(test)]
+pub(crate) fn random_bits(count: usize) -> impl Iterator<Item = u64> {
+    std::iter::successors(Some(0x9E37_79B9_7F4A_7C15_u64), |&bits| {
+        let bits = bits ^ (bits << 13);
+        let bits = bits ^ (bits >> 7);
+        Some(bits ^ (bits << 17))
+    })
+    .skip(1)
+    .take(count)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -336,7 +349,6 @@ mod tests {
 
     #[test]
     fn numbers_read_as_debug_writes_them() {
-        let mut bits: u64 = 0x9E37_79B9_7F4A_7C15;
         let mut samples = vec![
             // -1010.43829345703125: halfway between -1010.4382934570312 and …313.
             f64::from_bits(0xc08f_9381_a000_0000),
@@ -357,11 +369,8 @@ mod tests {
             f64::NAN,
             5e-324,
         ];
-        for _ in 0..200_000 {
-            // xorshift: every exponent and sign, and decimals as a file writes them.
-            bits ^= bits << 13;
-            bits ^= bits >> 7;
-            bits ^= bits << 17;
+        // Every exponent and sign, and decimals as a file writes them.
+        for bits in random_bits(200_000) {
             samples.push(f64::from_bits(bits));
             samples.push((bits % 2_000_000) as f64 / 100.0 - 10_000.0);
             samples.push(f64::from(f32::from_bits(bits as u32)));

@@ -87,7 +87,6 @@ mod tests {
 
     #[test]
     fn shortest_is_the_decimal_that_to_string_writes() {
-        let mut bits: u32 = 0x7F4A_7C15;
         // 440077.625 lies halfway between 440077.62 and 440077.63, which both read back as it.
         let mut samples = vec![
             0.0,
@@ -99,11 +98,8 @@ mod tests {
             1e-45,
             f32::INFINITY,
         ];
-        for _ in 0..300_000 {
-            bits ^= bits << 13;
-            bits ^= bits >> 17;
-            bits ^= bits << 5;
-            samples.push(f32::from_bits(bits));
+        for bits in crate::present::random_bits(300_000) {
+            samples.push(f32::from_bits(bits as u32));
             samples.push((bits % 200_000) as f32 / 100.0 - 1000.0);
         }
         for value in samples {

@@ -36,7 +36,7 @@ pub struct InParts<'a, I, F> {
     make: F,
 }
 
-/// How many items are made before they are written.
+/// At most how many items are made before they are written.
 const BATCH: usize = 8192;
 
 /// Below this many items of a batch, a part is not worth a thread.
@@ -51,7 +51,10 @@ impl<'a, I, F> InParts<'a, I, F> {
 impl<I: Sync, F: Fn(&I) -> T + Sync, T: Serialize> Serialize for InParts<'_, I, F> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let mut seq = serializer.serialize_seq(Some(self.items.len()))?;
-        for batch in self.items.chunks(BATCH) {
+        // Batches of equal size, so that none is too small to share between the cores.
+        let batches = self.items.len().div_ceil(BATCH);
+        let size = self.items.len().div_ceil(batches.max(1)).max(1);
+        for batch in self.items.chunks(size) {
             let ranges = parallel::item_ranges(batch.len(), MIN_ITEMS_PER_PART);
             let parts = parallel::map_ranges(ranges, |range| {
                 let items = batch[range].iter();
