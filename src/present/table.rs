@@ -178,15 +178,19 @@ impl Rows {
         write_border(out, widths, ["╞", "═", "╪", "╡"])?;
         // The rows are drawn a batch at a time, each batch in parts (one per core), and
         // written in order: drawing 100,000 rows on one core took as long as making them.
-        let rows: Vec<(&Cells, usize)> = (self.parts.iter())
-            .flat_map(|part| (0..part.ends.len() / self.header.len()).map(move |row| (part, row)))
-            .collect();
-        for batch in rows.chunks(ROWS_PER_BATCH) {
+        let columns = self.header.len();
+        let batches = self.parts.iter().flat_map(|part| {
+            let rows = part.ends.len() / columns;
+            (0..rows)
+                .step_by(ROWS_PER_BATCH)
+                .map(move |start| (part, start..rows.min(start + ROWS_PER_BATCH)))
+        });
+        for (part, batch) in batches {
             let ranges = parallel::item_ranges(batch.len(), MIN_ROWS_PER_PART);
             let drawn = parallel::map_ranges(ranges, |range| {
-                let mut cells = Vec::with_capacity(self.header.len());
+                let mut cells = Vec::with_capacity(columns);
                 let mut drawn = Vec::new();
-                for &(part, row) in &batch[range] {
+                for row in batch.start + range.start..batch.start + range.end {
                     cells.clear();
                     cells.extend(self.row(part, row));
                     draw_row(&mut drawn, widths, &cells);
@@ -203,10 +207,10 @@ impl Rows {
 }
 
 /// How many rows are drawn before they are written.
-const ROWS_PER_BATCH: usize = 16_384;
+const ROWS_PER_BATCH: usize = 4096;
 
 /// Below this many rows of a batch, a part is not worth a thread.
-const MIN_ROWS_PER_PART: usize = 2048;
+const MIN_ROWS_PER_PART: usize = 1024;
 
 /// The width of the widest line of `cell`, if [`width`] knows every line's.
 fn widest_line(cell: &str) -> Option<usize> {

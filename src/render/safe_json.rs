@@ -37,10 +37,10 @@ pub struct InParts<'a, I, F> {
 }
 
 /// At most how many items are made before they are written.
-const BATCH: usize = 8192;
+const BATCH: usize = 4096;
 
 /// Below this many items of a batch, a part is not worth a thread.
-const MIN_ITEMS_PER_PART: usize = 1024;
+const MIN_ITEMS_PER_PART: usize = 512;
 
 impl<'a, I, F> InParts<'a, I, F> {
     pub fn new(items: &'a [I], make: F) -> InParts<'a, I, F> {
