@@ -100,10 +100,15 @@ fn is_plain(text: &str, keep_newlines: bool) -> bool {
     // Without stopping early, so that the check is vectorised.
     let printable = |ok, &b: &u8| ok & (matches!(b, b' '..=b'~') || (keep_newlines && b == b'\n'));
     bytes.iter().fold(true, printable)
-        && memchr::memmem::find(bytes, b"::").is_none()
-        && memchr::memmem::find(bytes, b"##").is_none()
+        && !has_pair(bytes)
         && !text.trim_start().starts_with(':')
         && !(keep_newlines && text.split('\n').any(|l| l.trim_start().starts_with(':')))
+}
+
+/// Whether `bytes` holds `::` or `##`. (A search for each pair builds a searcher per call,
+/// which costs more than the check of a short line.)
+fn has_pair(bytes: &[u8]) -> bool {
+    memchr::memchr2_iter(b':', b'#', bytes).any(|at| bytes.get(at + 1) == Some(&bytes[at]))
 }
 
 /// Escapes `line` (no newline in it) onto `out`.

@@ -42,6 +42,24 @@ pub struct NewLine<'t> {
 pub trait NewLines {
     /// Visits each line in order until `visit` breaks.
     fn each_line(&self, visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>) -> ControlFlow<()>;
+
+    /// Visits the lines whose index (0-based) `wanted` takes, in order, each with its index,
+    /// until `visit` breaks; `wanted` is asked of each index in order. A new text that can
+    /// pass over a line more cheaply than it writes it does so for the others.
+    fn each_wanted_line(
+        &self,
+        wanted: &mut dyn FnMut(u32) -> bool,
+        visit: &mut dyn FnMut(u32, NewLine<'_>) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
+        let mut index = 0;
+        self.each_line(&mut |line| {
+            index += 1;
+            match wanted(index - 1) {
+                true => visit(index - 1, line),
+                false => ControlFlow::Continue(()),
+            }
+        })
+    }
 }
 
 /// How the diff is printed.

@@ -36,20 +36,36 @@ pub(super) fn print(
         last_of_hunk: 0,
     };
     let mut failed = None;
-    let mut index = 0u32;
-    let _ = new.each_line(&mut |line| {
+    // Only the lines of the changes are read again (the context comes from the old text),
+    // and the line after each change, where it is finished.
+    let mut region_asked = 0;
+    let mut wanted = |index: u32| {
+        while regions.get(region_asked).is_some_and(|r| r.new.end < index) {
+            region_asked += 1;
+        }
+        regions
+            .get(region_asked)
+            .is_some_and(|region| region.new.start <= index)
+    };
+    // The index after the last line visited: every line, unless the last change ends first.
+    let mut after = changes.new_lines;
+    let _ = new.each_wanted_line(&mut wanted, &mut |index, line| {
         let printed = hunks.step(&mut printer, index).and_then(|()| {
             match regions.get(hunks.next.wrapping_sub(1)) {
                 Some(region) if region.new.contains(&index) => printer.line('+', line.text),
                 _ => Ok(()),
             }
         });
-        index += 1;
         match printed {
-            Ok(()) if hunks.next < regions.len() || index < regions[regions.len() - 1].new.end => {
+            Ok(())
+                if hunks.next < regions.len() || index + 1 < regions[regions.len() - 1].new.end =>
+            {
                 ControlFlow::Continue(())
             }
-            Ok(()) => ControlFlow::Break(()),
+            Ok(()) => {
+                after = index + 1;
+                ControlFlow::Break(())
+            }
             Err(error) => {
                 failed = Some(error);
                 ControlFlow::Break(())
@@ -59,7 +75,7 @@ pub(super) fn print(
     if let Some(error) = failed {
         return Err(error);
     }
-    hunks.step(&mut printer, index)?;
+    hunks.step(&mut printer, after)?;
     printer.out.flush()
 }
 
@@ -114,9 +130,9 @@ impl Hunks<'_> {
         self.last_of_hunk = last;
         let before = CONTEXT.min(first.old.start);
         let after = CONTEXT.min(self.changes.old_lines - regions[last].old.end);
-        let old = range(first.old.start - before, regions[last].old.end + after);
-        let new = range(first.new.start - before, regions[last].new.end + after);
-        printer.write(&format!("@@ -{old} +{new} @@"))?;
+        let old = (first.old.start - before, regions[last].old.end + after);
+        let new = (first.new.start - before, regions[last].new.end + after);
+        printer.header(old, new)?;
         printer.skip_to(first.old.start - before);
         Ok(())
     }
@@ -133,13 +149,14 @@ impl Hunks<'_> {
     }
 }
 
-/// A hunk header's range of lines: `start,length` (1-based; an empty range names the line
-/// before it), `start` alone for one line, as `diff -u` writes it.
-fn range(start: u32, end: u32) -> String {
+/// Writes a hunk header's range of lines, `start,end` (0-based, end excluded), as `diff -u`
+/// does: `start,length` (1-based; an empty range names the line before it), `start` alone
+/// for one line.
+fn write_range(out: &mut impl Write, (start, end): (u32, u32)) -> io::Result<()> {
     match end - start {
-        1 => format!("{}", start + 1),
-        0 => format!("{start},0"),
-        length => format!("{},{length}", start + 1),
+        1 => write!(out, "{}", start + 1),
+        0 => write!(out, "{start},0"),
+        length => write!(out, "{},{length}", start + 1),
     }
 }
 
@@ -195,21 +212,45 @@ impl<W: Write> Printer<'_, W> {
         }
     }
 
+    /// The header of a hunk of the old lines `old` and the new lines `new` (digits only:
+    /// nothing to escape).
+    fn header(&mut self, old: (u32, u32), new: (u32, u32)) -> io::Result<()> {
+        let colour = self.colour(b'@');
+        self.out.write_all(colour.as_bytes())?;
+        self.out.write_all(b"@@ -")?;
+        write_range(&mut self.out, old)?;
+        self.out.write_all(b" +")?;
+        write_range(&mut self.out, new)?;
+        self.out.write_all(b" @@")?;
+        self.end_line(colour)
+    }
+
     /// Writes one line of the diff, escaped as every output of ekb is, on a terminal or
     /// not: a diff is file text, and a CI log shows it too. (A line with something escaped
     /// no longer applies with `patch`; every other line does.)
     fn write(&mut self, line: &str) -> io::Result<()> {
-        let colour = match line.as_bytes().first() {
-            _ if !self.color => None,
-            Some(b'+') => Some("\x1b[32m"),
-            Some(b'-') => Some("\x1b[31m"),
-            Some(b'@') => Some("\x1b[36m"),
-            _ => None,
-        };
-        let text = escape(line);
-        match colour {
-            Some(colour) => writeln!(self.out, "{colour}{text}\x1b[0m"),
-            None => writeln!(self.out, "{text}"),
+        let colour = self.colour(line.as_bytes().first().copied().unwrap_or(b' '));
+        self.out.write_all(colour.as_bytes())?;
+        self.out.write_all(escape(line).as_bytes())?;
+        self.end_line(colour)
+    }
+
+    /// The colour of a line that starts with `tag`, if any.
+    fn colour(&self, tag: u8) -> &'static str {
+        match tag {
+            _ if !self.color => "",
+            b'+' => "\x1b[32m",
+            b'-' => "\x1b[31m",
+            b'@' => "\x1b[36m",
+            _ => "",
+        }
+    }
+
+    /// Ends a line written in `colour`.
+    fn end_line(&mut self, colour: &str) -> io::Result<()> {
+        match colour.is_empty() {
+            true => self.out.write_all(b"\n"),
+            false => self.out.write_all(b"\x1b[0m\n"),
         }
     }
 }
