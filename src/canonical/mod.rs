@@ -397,6 +397,16 @@ impl NewLines for Document<'_> {
         self.each_wanted_line(&mut |_| true, &mut |_, line| visit(line))
     }
 
+    /// The entry lines in the order the layout writes them ascend in the text: then so do
+    /// the comments that go with them (the header's before, the footer's after).
+    fn origins_ascend(&self) -> bool {
+        let entries = self.unplaced.iter().chain(&self.order).chain(&self.tour);
+        entries
+            .clone()
+            .zip(entries.skip(1))
+            .all(|(before, after)| before < after)
+    }
+
     fn each_wanted_line(
         &self,
         wanted: &mut dyn FnMut(u32) -> bool,
@@ -514,6 +524,33 @@ mod tests {
         let mut written = Vec::new();
         document.write_checked(&mut written).unwrap();
         assert_eq!(String::from_utf8(written).unwrap(), document.render());
+    }
+
+    #[test]
+    fn origins_ascend_when_they_do() {
+        let ascend = |document: &Document<'_>| {
+            let mut origins = Vec::new();
+            let _ = document.each_line(&mut |line| {
+                origins.extend(line.origin);
+                ControlFlow::Continue(())
+            });
+            origins.windows(2).all(|pair| pair[0] < pair[1])
+        };
+        let texts = [
+            ("# h\n\nrobotLocationDescription 1 A\n# c\nrobotLocation 1 1  2 3\n\n\
+              robotLocationDescription 2 B\ntourSpecification 1 1\n# end\n", true),
+            ("robotLocation 1 1 2 3\nrobotLocationDescription 1 A\n", false),
+            ("robotLocationDescription 1 A\nrobotLocationDescription 2 B\nrobotLocation 1 1 2 3\n", false),
+            ("tourSpecification 1 1\nrobotLocationDescription 1 A\n", false),
+            ("robotLocationDescription 1 A\nhello\n", false),
+            ("hello\n# c\nrobotLocationDescription 1 A\n", true),
+            ("", true),
+        ];
+        for (text, expected) in texts {
+            let document = Document::parse(text).unwrap();
+            assert_eq!(document.origins_ascend(), expected, "{text:?}");
+            assert_eq!(ascend(&document), expected, "{text:?}");
+        }
     }
 
     #[test]
