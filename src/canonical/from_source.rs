@@ -74,7 +74,7 @@ impl<'a> Document<'a> {
 
     /// The document of `text`, whose first reading found `layout`.
     fn laid_out(text: Cow<'a, str>, layout: Layout) -> Document<'a> {
-        let (order, block_ends) = arrange(&text, layout.blocks, layout.located);
+        let (order, block_ends) = arrange(&text, layout.blocks, layout.located, layout.placed);
         Document {
             text,
             header_end: layout.header_end,
@@ -97,11 +97,22 @@ struct Layout {
     /// The located entries' blocks, and how many lines each has.
     blocks: Blocks,
     located: usize,
+    /// Each located line's start and block, in file order, kept while they take at most an
+    /// eighth of the text's size (lines of a usual length): then the lines are not read
+    /// again to be put in order.
+    placed: Option<Vec<(u32, u32)>>,
 }
+
+/// The most bytes [`Layout::placed`] takes, as a share of the text's size.
+const PLACED_SHARE: usize = 8;
 
 impl Layout {
     fn read(text: &str) -> Result<Layout, Unformattable> {
-        let mut layout = Layout::default();
+        let most_placed = text.len() / PLACED_SHARE / std::mem::size_of::<(u32, u32)>();
+        let mut layout = Layout {
+            placed: Some(Vec::with_capacity(most_placed)),
+            ..Layout::default()
+        };
         let mut seen_entry = false;
         // Where the first `# ekb: ignore[…]` comment before any entry starts.
         let mut first_suppression = None;
@@ -145,7 +156,13 @@ impl Layout {
                 Placement::Tour => layout.tour.push(line.span.start),
                 Placement::Unplaced => layout.unplaced.push(line.span.start),
                 Placement::Located { id, slot } => {
-                    layout.blocks.count(id, slot);
+                    let block = layout.blocks.count(id, slot);
+                    match &mut layout.placed {
+                        Some(placed) if placed.len() < most_placed => {
+                            placed.push((line.span.start, block));
+                        }
+                        _ => layout.placed = None,
+                    }
                     layout.located += 1;
                 }
             }
@@ -199,8 +216,9 @@ impl Blocks {
         Some(block)
     }
 
-    /// Counts a line of `id`'s block, made if it is new, whose key goes in `slot`.
-    fn count(&mut self, id: u32, slot: u8) {
+    /// Counts a line of `id`'s block, made if it is new, whose key goes in `slot`; returns
+    /// the block.
+    fn count(&mut self, id: u32, slot: u8) -> u32 {
         let block = self.find(id).unwrap_or_else(|| {
             let block = self.lines.len() as u32;
             self.lines.push(0);
@@ -219,6 +237,7 @@ impl Blocks {
             true => slot | IN_ORDER,
             false => slot,
         };
+        block
     }
 
     /// Whether the lines of `block` are in key order.
@@ -231,10 +250,16 @@ impl Blocks {
 const IN_ORDER: u8 = 0x80;
 const _: () = assert!(UNKNOWN_SLOT < IN_ORDER);
 
-/// The located entries' line starts in canonical order, and where each block ends: read
-/// again and put in place by block (a counting sort, linear), then each block put in key
-/// order, keeping the order of equal keys (a block is usually in order already).
-fn arrange(text: &str, mut blocks: Blocks, located: usize) -> (Vec<u32>, Vec<u32>) {
+/// The located entries' line starts in canonical order, and where each block ends: put in
+/// place by block (a counting sort, linear), as `placed` says or read again, then each
+/// block put in key order, keeping the order of equal keys (a block is usually in order
+/// already).
+fn arrange(
+    text: &str,
+    mut blocks: Blocks,
+    located: usize,
+    placed: Option<Vec<(u32, u32)>>,
+) -> (Vec<u32>, Vec<u32>) {
     // Each block's count becomes where its next line goes; once all are placed, where the
     // block ends.
     let mut next = std::mem::take(&mut blocks.lines);
@@ -243,14 +268,24 @@ fn arrange(text: &str, mut blocks: Blocks, located: usize) -> (Vec<u32>, Vec<u32
         (*count, sum) = (sum, sum + *count);
     }
     let mut order = vec![0u32; located];
-    for line in syntax::lines(text) {
-        let Body::Entry { key, args } = line.body else {
-            continue;
-        };
-        if let Placement::Located { id, .. } = placement(text, key, args) {
-            let block = blocks.find(id).expect("counted in the first reading") as usize;
-            order[next[block] as usize] = line.span.start;
-            next[block] += 1;
+    let mut place = |start: u32, block: u32| {
+        order[next[block as usize] as usize] = start;
+        next[block as usize] += 1;
+    };
+    match placed {
+        Some(placed) => placed
+            .into_iter()
+            .for_each(|(start, block)| place(start, block)),
+        None => {
+            for line in syntax::lines(text) {
+                let Body::Entry { key, args } = line.body else {
+                    continue;
+                };
+                if let Placement::Located { id, .. } = placement(text, key, args) {
+                    let block = blocks.find(id).expect("counted in the first reading");
+                    place(line.span.start, block);
+                }
+            }
         }
     }
     let mut start = 0;
