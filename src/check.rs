@@ -11,7 +11,7 @@
 
 use crate::diagnostic::{Diagnostic, RuleCount, Summary};
 use crate::map::LabMap;
-use crate::model::build::{build, Options};
+use crate::model::build::{build, Options, Unheeded};
 use crate::model::KnowledgeBase;
 use crate::reader::Reader;
 use crate::rules::selection::{RuleSelector, RuleSet};
@@ -165,6 +165,16 @@ impl Checked<'_> {
                 _ => None,
             })
     }
+}
+
+/// The model of `source` alone, as [`check`] builds it, without a rule run or a finding
+/// kept: what `ekb diff` compares. (A file that is no knowledge base has an empty model,
+/// as in the check.)
+pub fn load<'a>(source: &'a SourceFile, options: &Options) -> KnowledgeBase<'a> {
+    if structure::not_a_knowledge_base::check(source.text()).is_some() {
+        return KnowledgeBase::default();
+    }
+    build(source.text(), options, &mut Unheeded)
 }
 
 /// Builds the model of `source` and runs every rule on it.

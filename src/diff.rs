@@ -4,12 +4,12 @@
 //! between words do not count. A change of dialect is one difference, not a change to every
 //! pose: poses are compared by value, whichever key holds them.
 
+use std::cell::OnceCell;
 use std::collections::HashMap;
 
 use serde::Serialize;
 
-use crate::check::Checked;
-use crate::model::{Dialect, Location, Tour};
+use crate::model::{Dialect, KnowledgeBase, Location, Tour};
 use crate::present::field::{Field, FieldValue};
 use crate::present::Lines;
 
@@ -103,12 +103,39 @@ impl Diff<'_> {
     }
 }
 
+/// One side of a diff: a file's text and the model it loads as.
+#[derive(Clone, Copy)]
+pub struct Side<'a> {
+    pub text: &'a str,
+    pub kb: &'a KnowledgeBase<'a>,
+}
+
+/// The line numbers of a text, indexed when a difference first needs one: two files that
+/// load the same need none.
+struct LazyLines<'a> {
+    text: &'a str,
+    lines: OnceCell<Lines<'a>>,
+}
+
+impl<'a> LazyLines<'a> {
+    fn new(text: &'a str) -> LazyLines<'a> {
+        LazyLines {
+            text,
+            lines: OnceCell::new(),
+        }
+    }
+
+    fn get(&self) -> &Lines<'a> {
+        self.lines.get_or_init(|| Lines::new(self.text))
+    }
+}
+
 /// What changed from `old` to `new`.
-pub fn diff<'a>(old: &'a Checked<'a>, new: &'a Checked<'a>) -> Diff<'a> {
-    let old_lines = Lines::new(old.source.text());
-    let new_lines = Lines::new(new.source.text());
-    let location_ref = |location: &Location<'a>, lines: &Lines| {
-        let (first, last) = lines.range(location);
+pub fn diff<'a>(old: Side<'a>, new: Side<'a>) -> Diff<'a> {
+    let old_lines = LazyLines::new(old.text);
+    let new_lines = LazyLines::new(new.text);
+    let location_ref = |location: &Location<'a>, lines: &LazyLines| {
+        let (first, last) = lines.get().range(location);
         LocationRef {
             id: location.id,
             description: location.description().map(|d| d.value),
@@ -143,8 +170,8 @@ pub fn diff<'a>(old: &'a Checked<'a>, new: &'a Checked<'a>) -> Diff<'a> {
                     let same = old.as_ref().map(|(v, _)| v) == new.as_ref().map(|(v, _)| v);
                     (!same).then(|| FieldChange {
                         field,
-                        old_line: old.as_ref().map(|(_, span)| old_lines.of(*span)),
-                        new_line: new.as_ref().map(|(_, span)| new_lines.of(*span)),
+                        old_line: old.as_ref().map(|(_, span)| old_lines.get().of(*span)),
+                        new_line: new.as_ref().map(|(_, span)| new_lines.get().of(*span)),
                         old: old.map(|(v, _)| v),
                         new: new.map(|(v, _)| v),
                     })
@@ -164,23 +191,35 @@ pub fn diff<'a>(old: &'a Checked<'a>, new: &'a Checked<'a>) -> Diff<'a> {
         old: old.kb.dialect,
         new: new.kb.dialect,
     });
+    let mut tour = tour_change(
+        old.kb.tour.as_ref().map(side),
+        new.kb.tour.as_ref().map(side),
+    );
+    if let Some(tour) = &mut tour {
+        for (side, tour, lines) in [
+            (&mut tour.old, &old.kb.tour, &old_lines),
+            (&mut tour.new, &new.kb.tour, &new_lines),
+        ] {
+            if let (Some(side), Some(tour)) = (side, tour) {
+                side.line = lines.get().of(tour.span);
+            }
+        }
+    }
     Diff {
         dialect,
         added,
         removed,
         changed,
-        tour: tour_change(
-            old.kb.tour.as_ref().map(|t| side(t, &old_lines)),
-            new.kb.tour.as_ref().map(|t| side(t, &new_lines)),
-        ),
+        tour,
     }
 }
 
-fn side(tour: &Tour, lines: &Lines) -> TourSide {
+/// A tour's side of a change, its line still to be found (0).
+fn side(tour: &Tour) -> TourSide {
     TourSide {
         stops: tour.stops.iter().map(|stop| stop.value).collect(),
         declared: tour.declared.map(|n| n.value),
-        line: lines.of(tour.span),
+        line: 0,
     }
 }
 

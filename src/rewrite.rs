@@ -150,7 +150,7 @@ pub fn name_lines(lines: &[(u32, String)]) -> String {
 pub fn print_diff(
     name: &str,
     old: &str,
-    new: &impl NewLines,
+    new: &(impl NewLines + Sync),
     style: DiffStyle,
 ) -> io::Result<bool> {
     let style = unified::Style {

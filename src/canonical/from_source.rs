@@ -74,7 +74,7 @@ impl<'a> Document<'a> {
 
     /// The document of `text`, whose first reading found `layout`.
     fn laid_out(text: Cow<'a, str>, layout: Layout) -> Document<'a> {
-        let (order, block_ends) = arrange(&text, layout.blocks, layout.located);
+        let (order, block_ends) = arrange(&text, layout.blocks, layout.located, layout.placed);
         Document {
             text,
             header_end: layout.header_end,
@@ -97,11 +97,22 @@ struct Layout {
     /// The located entries' blocks, and how many lines each has.
     blocks: Blocks,
     located: usize,
+    /// Each located line's start and block, in file order, kept while they take at most an
+    /// eighth of the text's size (lines of a usual length): then the lines are not read
+    /// again to be put in order.
+    placed: Option<Vec<(u32, u32)>>,
 }
+
+/// The most bytes [`Layout::placed`] takes, as a share of the text's size.
+const PLACED_SHARE: usize = 8;
 
 impl Layout {
     fn read(text: &str) -> Result<Layout, Unformattable> {
-        let mut layout = Layout::default();
+        let most_placed = text.len() / PLACED_SHARE / std::mem::size_of::<(u32, u32)>();
+        let mut layout = Layout {
+            placed: Some(Vec::with_capacity(most_placed)),
+            ..Layout::default()
+        };
         let mut seen_entry = false;
         // Where the first `# ekb: ignore[…]` comment before any entry starts.
         let mut first_suppression = None;
@@ -144,8 +155,14 @@ impl Layout {
             match placement(text, key, args) {
                 Placement::Tour => layout.tour.push(line.span.start),
                 Placement::Unplaced => layout.unplaced.push(line.span.start),
-                Placement::Located { id, .. } => {
-                    layout.blocks.count(id);
+                Placement::Located { id, slot } => {
+                    let block = layout.blocks.count(id, slot);
+                    match &mut layout.placed {
+                        Some(placed) if placed.len() < most_placed => {
+                            placed.push((line.span.start, block));
+                        }
+                        _ => layout.placed = None,
+                    }
                     layout.located += 1;
                 }
             }
@@ -176,6 +193,10 @@ struct Blocks {
     others: IdMap<u32>,
     /// The lines of each block.
     lines: Vec<u32>,
+    /// The slot of each block's last line so far, and whether its slots ascend so far
+    /// ([`IN_ORDER`]): a block in key order already (nearly every one) is not read again to
+    /// be sorted.
+    last_slots: Vec<u8>,
     /// The last id and its block: a block's lines usually follow one another.
     last: Option<(u32, u32)>,
 }
@@ -195,11 +216,13 @@ impl Blocks {
         Some(block)
     }
 
-    /// Counts a line of `id`'s block, made if it is new.
-    fn count(&mut self, id: u32) {
+    /// Counts a line of `id`'s block, made if it is new, whose key goes in `slot`; returns
+    /// the block.
+    fn count(&mut self, id: u32, slot: u8) -> u32 {
         let block = self.find(id).unwrap_or_else(|| {
             let block = self.lines.len() as u32;
             self.lines.push(0);
+            self.last_slots.push(IN_ORDER);
             if self.others.is_empty() && self.ascending.last().is_none_or(|&last| last < id) {
                 self.ascending.push(id);
             } else {
@@ -209,13 +232,34 @@ impl Blocks {
             block
         });
         self.lines[block as usize] += 1;
+        let last = &mut self.last_slots[block as usize];
+        *last = match *last & IN_ORDER != 0 && *last & !IN_ORDER <= slot {
+            true => slot | IN_ORDER,
+            false => slot,
+        };
+        block
+    }
+
+    /// Whether the lines of `block` are in key order.
+    fn in_order(&self, block: usize) -> bool {
+        self.last_slots[block] & IN_ORDER != 0
     }
 }
 
-/// The located entries' line starts in canonical order, and where each block ends: read
-/// again and put in place by block (a counting sort, linear), then each block put in key
-/// order, keeping the order of equal keys (a block is usually in order already).
-fn arrange(text: &str, mut blocks: Blocks, located: usize) -> (Vec<u32>, Vec<u32>) {
+/// The bit of [`Blocks::last_slots`] that says a block's slots ascend (no slot is as high).
+const IN_ORDER: u8 = 0x80;
+const _: () = assert!(UNKNOWN_SLOT < IN_ORDER);
+
+/// The located entries' line starts in canonical order, and where each block ends: put in
+/// place by block (a counting sort, linear), as `placed` says or read again, then each
+/// block put in key order, keeping the order of equal keys (a block is usually in order
+/// already).
+fn arrange(
+    text: &str,
+    mut blocks: Blocks,
+    located: usize,
+    placed: Option<Vec<(u32, u32)>>,
+) -> (Vec<u32>, Vec<u32>) {
     // Each block's count becomes where its next line goes; once all are placed, where the
     // block ends.
     let mut next = std::mem::take(&mut blocks.lines);
@@ -224,27 +268,38 @@ fn arrange(text: &str, mut blocks: Blocks, located: usize) -> (Vec<u32>, Vec<u32
         (*count, sum) = (sum, sum + *count);
     }
     let mut order = vec![0u32; located];
-    for line in syntax::lines(text) {
-        let Body::Entry { key, args } = line.body else {
-            continue;
-        };
-        if let Placement::Located { id } = placement(text, key, args) {
-            let block = blocks.find(id).expect("counted in the first reading") as usize;
-            order[next[block] as usize] = line.span.start;
-            next[block] += 1;
+    let mut place = |start: u32, block: u32| {
+        order[next[block as usize] as usize] = start;
+        next[block as usize] += 1;
+    };
+    match placed {
+        Some(placed) => placed
+            .into_iter()
+            .for_each(|(start, block)| place(start, block)),
+        None => {
+            for line in syntax::lines(text) {
+                let Body::Entry { key, args } = line.body else {
+                    continue;
+                };
+                if let Placement::Located { id, .. } = placement(text, key, args) {
+                    let block = blocks.find(id).expect("counted in the first reading");
+                    place(line.span.start, block);
+                }
+            }
         }
     }
-    drop(blocks);
     let mut start = 0;
-    for &end in &next {
-        sort_by_slot(text, &mut order[start as usize..end as usize]);
+    for (block, &end) in next.iter().enumerate() {
+        if !blocks.in_order(block) {
+            sort_by_slot(text, &mut order[start as usize..end as usize]);
+        }
         start = end;
     }
     (order, next)
 }
 
 /// Puts the lines starting at `block` in key order ([`slot`]), keeping the order of lines of
-/// the same slot: a counting sort over the few slots, when they are not in order already.
+/// the same slot: a counting sort over the few slots.
 fn sort_by_slot(text: &str, block: &mut [u32]) {
     let slot_at = |start: u32| {
         let line = syntax::lines_from(text, start as usize).next();
@@ -253,16 +308,6 @@ fn sort_by_slot(text: &str, block: &mut [u32]) {
             _ => unreachable!("an entry line starts there"),
         }
     };
-    let mut previous = 0;
-    let in_order = block.iter().all(|&start| {
-        let slot = slot_at(start);
-        let in_order = slot >= previous;
-        previous = slot;
-        in_order
-    });
-    if in_order {
-        return;
-    }
     let slots: Vec<u8> = block.iter().map(|&start| slot_at(start)).collect();
     let mut next = [0usize; UNKNOWN_SLOT as usize + 2];
     for &slot in &slots {
@@ -284,16 +329,20 @@ fn sort_by_slot(text: &str, block: &mut [u32]) {
 enum Placement {
     Tour,
     Unplaced,
-    Located { id: u32 },
+    Located { id: u32, slot: u8 },
 }
 
 /// Where the entry line `key args` of `text` goes ([`read`] without making its value).
 fn placement(text: &str, key: Span, args: Span) -> Placement {
-    if known_key(key.text(text)) == Some(Key::TourSpecification) {
+    let known = known_key(key.text(text));
+    if known == Some(Key::TourSpecification) {
         return Placement::Tour;
     }
     match split_id(args.text(text)) {
-        Some((id, _, _)) => Placement::Located { id },
+        Some((id, _, _)) => Placement::Located {
+            id,
+            slot: slot(known),
+        },
         None => Placement::Unplaced,
     }
 }

@@ -318,20 +318,28 @@ impl<'a> Document<'a> {
         &self,
         mut visit: impl FnMut(Item<'_>, Option<u32>) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
+        self.walk_unread(|line, origin| visit(line.read(self), origin))
+    }
+
+    /// [`Document::walk`], each entry line given unread: read it only if it is wanted.
+    fn walk_unread(
+        &self,
+        mut visit: impl FnMut(Unread<'_>, Option<u32>) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
         let mut sections = 0;
-        let mut visit = |item: Item<'_>, origin: u32, new_section: bool| {
+        let mut visit = |line: Unread<'_>, origin: u32, new_section: bool| {
             if new_section {
                 // Sections are apart; and a first line starting with U+FEFF would be read as a
                 // byte-order mark.
-                if sections > 0 || item.starts_with_byte_order_mark() {
-                    visit(Item::Blank, None)?;
+                if sections > 0 || line.clone().read(self).starts_with_byte_order_mark() {
+                    visit(Unread::Item(Item::Blank), None)?;
                 }
                 sections += 1;
             }
-            visit(item, Some(origin))
+            visit(line, Some(origin))
         };
         for (n, (start, comment)) in self.comments_between(0, self.header_end).enumerate() {
-            visit(Item::Comment(comment), start, n == 0)?;
+            visit(Unread::Item(Item::Comment(comment)), start, n == 0)?;
         }
         let mut entry = |start: u32, new_section: bool, tour: bool| {
             let mut first = new_section;
@@ -339,10 +347,11 @@ impl<'a> Document<'a> {
             // (Without comments above it, the line is not lexed once more to find none.)
             if comments < start {
                 for (line, comment) in self.comments_between(comments, start) {
-                    visit(Item::Comment(comment), line, std::mem::take(&mut first))?;
+                    let comment = Unread::Item(Item::Comment(comment));
+                    visit(comment, line, std::mem::take(&mut first))?;
                 }
             }
-            visit(Item::Entry(self.entry_at(start, tour)), start, first)
+            visit(Unread::Entry { start, tour }, start, first)
         };
         for (n, &start) in self.unplaced.iter().enumerate() {
             entry(start, n == 0, false)?;
@@ -359,23 +368,66 @@ impl<'a> Document<'a> {
         }
         let footer = self.comments_between(self.footer_start, self.text.len() as u32);
         for (n, (start, comment)) in footer.enumerate() {
-            visit(Item::Comment(comment), start, n == 0)?;
+            visit(Unread::Item(Item::Comment(comment)), start, n == 0)?;
         }
         ControlFlow::Continue(())
+    }
+}
+
+/// A line of the canonical text before it is written: an entry line is read from the text
+/// (its key, id and value) only when it is wanted.
+#[derive(Clone)]
+enum Unread<'d> {
+    Item(Item<'d>),
+    Entry { start: u32, tour: bool },
+}
+
+impl<'d> Unread<'d> {
+    fn read(self, document: &'d Document<'_>) -> Item<'d> {
+        match self {
+            Unread::Item(item) => item,
+            Unread::Entry { start, tour } => Item::Entry(document.entry_at(start, tour)),
+        }
     }
 }
 
 /// The canonical text, each line with the line of the document's text it was made from.
 impl NewLines for Document<'_> {
     fn each_line(&self, visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>) -> ControlFlow<()> {
+        self.each_wanted_line(&mut |_| true, &mut |_, line| visit(line))
+    }
+
+    /// The entry lines in the order the layout writes them ascend in the text: then so do
+    /// the comments that go with them (the header's before, the footer's after).
+    fn origins_ascend(&self) -> bool {
+        let entries = self.unplaced.iter().chain(&self.order).chain(&self.tour);
+        entries
+            .clone()
+            .zip(entries.skip(1))
+            .all(|(before, after)| before < after)
+    }
+
+    fn each_wanted_line(
+        &self,
+        wanted: &mut dyn FnMut(u32) -> bool,
+        visit: &mut dyn FnMut(u32, NewLine<'_>) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
         let mut line = String::new();
-        self.walk(|item, origin| {
+        let mut index = 0;
+        self.walk_unread(|unread, origin| {
+            index += 1;
+            if !wanted(index - 1) {
+                return ControlFlow::Continue(());
+            }
             line.clear();
-            push_item(&mut line, &item);
-            visit(NewLine {
-                text: &line,
-                origin,
-            })
+            push_item(&mut line, &unread.read(self));
+            visit(
+                index - 1,
+                NewLine {
+                    text: &line,
+                    origin,
+                },
+            )
         })
     }
 }
@@ -472,6 +524,33 @@ mod tests {
         let mut written = Vec::new();
         document.write_checked(&mut written).unwrap();
         assert_eq!(String::from_utf8(written).unwrap(), document.render());
+    }
+
+    #[test]
+    fn origins_ascend_when_they_do() {
+        let ascend = |document: &Document<'_>| {
+            let mut origins = Vec::new();
+            let _ = document.each_line(&mut |line| {
+                origins.extend(line.origin);
+                ControlFlow::Continue(())
+            });
+            origins.windows(2).all(|pair| pair[0] < pair[1])
+        };
+        let texts = [
+            ("# h\n\nrobotLocationDescription 1 A\n# c\nrobotLocation 1 1  2 3\n\n\
+              robotLocationDescription 2 B\ntourSpecification 1 1\n# end\n", true),
+            ("robotLocation 1 1 2 3\nrobotLocationDescription 1 A\n", false),
+            ("robotLocationDescription 1 A\nrobotLocationDescription 2 B\nrobotLocation 1 1 2 3\n", false),
+            ("tourSpecification 1 1\nrobotLocationDescription 1 A\n", false),
+            ("robotLocationDescription 1 A\nhello\n", false),
+            ("hello\n# c\nrobotLocationDescription 1 A\n", true),
+            ("", true),
+        ];
+        for (text, expected) in texts {
+            let document = Document::parse(text).unwrap();
+            assert_eq!(document.origins_ascend(), expected, "{text:?}");
+            assert_eq!(ascend(&document), expected, "{text:?}");
+        }
     }
 
     #[test]

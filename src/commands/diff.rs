@@ -7,8 +7,8 @@ use std::path::PathBuf;
 use serde::Serialize;
 
 use super::{CommandResult, Context, Exit};
-use crate::check::check;
-use crate::diff::{diff, Diff, FieldChange, LocationRef, TourSide};
+use crate::check::load;
+use crate::diff::{diff, Diff, FieldChange, LocationRef, Side, TourSide};
 use crate::model::Dialect;
 use crate::present;
 use crate::render::escape::escape;
@@ -46,9 +46,19 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     }
     let old_source = context.read(&args.old)?;
     let new_source = context.read(&args.new)?;
-    let old = check(&old_source, &context.read_options(&args.old)?);
-    let new = check(&new_source, &context.read_options(&args.new)?);
-    let difference = diff(&old, &new);
+    // The models alone: no finding of either file is shown.
+    let old = load(&old_source, &context.read_options(&args.old)?);
+    let new = load(&new_source, &context.read_options(&args.new)?);
+    let difference = diff(
+        Side {
+            text: old_source.text(),
+            kb: &old,
+        },
+        Side {
+            text: new_source.text(),
+            kb: &new,
+        },
+    );
     let mut stdout = std::io::stdout().lock();
     match args.format {
         DiffFormat::Human => {

@@ -90,6 +90,40 @@ pub trait LineFindings {
     fn finish(&mut self);
 }
 
+/// Findings no one reads: for a command that needs the model alone (`ekb diff`), which
+/// then skips the rules' work on every line.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct Unheeded;
+
+impl Findings for Unheeded {
+    type Part = Unheeded;
+
+    fn part(&self, _: &str, _: Range<usize>) -> Unheeded {
+        Unheeded
+    }
+
+    fn add_part(&mut self, _: Unheeded) {}
+}
+
+impl LineFindings for Unheeded {
+    fn line(&mut self, _: &Line, _: &str) {}
+    fn entry(&mut self, _: Span, _: &str) {}
+    fn value(&mut self, _: Key, _: u32, _: Span, _: &str) {}
+    fn key_case(&mut self, _: Span, _: &str, _: Key, _: Option<u32>) {}
+    fn unknown_key(&mut self, _: Span, _: &str, _: Option<u32>) {}
+    fn missing_id(&mut self, _: Span, _: Key) {}
+    fn invalid_id(&mut self, _: Span, _: &str, _: Key) {}
+    fn duplicate_key(&mut self, _: Key, _: u32, _: Span, _: Span) {}
+    fn wrong_arity(&mut self, _: Key, _: u32, _: Span, _: usize, _: usize) {}
+    fn empty_value(&mut self, _: Span, _: Key, _: u32) {}
+    fn invalid_value(&mut self, _: Key, _: u32, _: Span, _: &str) {}
+    fn invalid_number(&mut self, _: Key, _: Option<u32>, _: Span, _: &str) {}
+    fn duplicate_tour(&mut self, _: Span, _: Span) {}
+    fn mixed_dialect(&mut self, _: (Span, usize), _: (Span, usize)) {}
+    fn append(&mut self, _: Unheeded) {}
+    fn finish(&mut self) {}
+}
+
 /// Builds the model of `text`, reporting what is wrong with its lines to `out`.
 ///
 /// A large file is read in parts, one per core, and the parts joined; when a location or

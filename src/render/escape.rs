@@ -93,6 +93,12 @@ fn escape_with(text: &str, keep_newlines: bool) -> Cow<'_, str> {
     Cow::Owned(out)
 }
 
+/// Whether `text` (one line) is printable ASCII with nothing that CI would obey, which
+/// [`escape`] gives back as it is: the text of nearly every value and message.
+pub fn is_plain_line(text: &str) -> bool {
+    is_plain(text, false)
+}
+
 /// Whether `text` is printable ASCII (newlines if `keep_newlines`) with nothing that CI
 /// would obey: the text of nearly every value and message, returned as it is.
 fn is_plain(text: &str, keep_newlines: bool) -> bool {
@@ -100,10 +106,15 @@ fn is_plain(text: &str, keep_newlines: bool) -> bool {
     // Without stopping early, so that the check is vectorised.
     let printable = |ok, &b: &u8| ok & (matches!(b, b' '..=b'~') || (keep_newlines && b == b'\n'));
     bytes.iter().fold(true, printable)
-        && memchr::memmem::find(bytes, b"::").is_none()
-        && memchr::memmem::find(bytes, b"##").is_none()
+        && lacks_pairs(bytes)
         && !text.trim_start().starts_with(':')
         && !(keep_newlines && text.split('\n').any(|l| l.trim_start().starts_with(':')))
+}
+
+/// Whether `bytes` holds neither `::` nor `##`. (A search for each pair builds a searcher
+/// per call, which costs more than the check of a short line.)
+fn lacks_pairs(bytes: &[u8]) -> bool {
+    !memchr::memchr2_iter(b':', b'#', bytes).any(|at| bytes.get(at + 1) == Some(&bytes[at]))
 }
 
 /// Escapes `line` (no newline in it) onto `out`.

@@ -4,6 +4,7 @@
 use std::collections::BTreeMap;
 use std::ops::{ControlFlow, Range};
 
+use super::follow::Finder;
 use super::{old_line, NewLine, NewLines};
 
 /// New lines whose origins follow one another in the old text (blank old lines between
@@ -84,6 +85,30 @@ pub(super) fn first_reading(old: &str, new: &impl NewLines) -> FirstReading {
     ))
 }
 
+/// The changes of a new text whose origins ascend (nothing moved), found in one reading,
+/// as [`first_reading`] finds them, and handed to `finder` every `hand_over_every` lines.
+pub(super) fn find_in_order(
+    old: &str,
+    new: &impl NewLines,
+    mut finder: Finder<'_>,
+    hand_over_every: u32,
+) {
+    let mut pairing = Pairing::new(old);
+    let _ = new.each_line(&mut |line| {
+        pairing.line(line, true);
+        if pairing.index % hand_over_every == 0 {
+            // Every change not found yet starts at the one open, or at the lines to come.
+            let settled = match pairing.open {
+                Some((old_start, new_start)) => (new_start, old_start),
+                None => (pairing.index, pairing.line),
+            };
+            finder.hand_over(&mut pairing.changes.regions, settled);
+        }
+        ControlFlow::Continue(())
+    });
+    finder.finish(pairing.finish());
+}
+
 /// Whether the old line at `origin` follows the one that ends at `next`: nothing but blank
 /// lines between them. (Runs of lines that follow one another, rather than merely ascend,
 /// make a line moved far ahead a run of its own, which the chain can leave out.)
@@ -148,13 +173,12 @@ pub(super) struct Region {
     pub new: Range<u32>,
 }
 
-/// Every change, in order, and how many lines each text has. Between two changes, and
+/// Every change, in order, and how many lines the old text has. Between two changes, and
 /// before the first and after the last, the lines are equal.
 #[derive(Debug, Default)]
 pub(super) struct Changes {
     pub regions: Vec<Region>,
     pub old_lines: u32,
-    pub new_lines: u32,
 }
 
 /// The changes when lines moved: a second reading, which pairs the lines that `kept` says
@@ -261,7 +285,6 @@ impl<'o> Pairing<'o> {
             self.close(old_start..self.line, new_start..self.index);
         }
         self.changes.old_lines = self.line;
-        self.changes.new_lines = self.index;
         self.changes
     }
 }

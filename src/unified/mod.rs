@@ -21,6 +21,7 @@
 //! it is equal); good origins give a small one.
 
 mod align;
+mod follow;
 mod in_order;
 mod print;
 
@@ -28,6 +29,8 @@ pub use in_order::{InOrder, Origins, Through};
 
 use std::io::{self, Write};
 use std::ops::ControlFlow;
+
+use crate::parallel;
 
 /// One line of a new text.
 #[derive(Debug, Clone, Copy)]
@@ -42,6 +45,30 @@ pub struct NewLine<'t> {
 pub trait NewLines {
     /// Visits each line in order until `visit` breaks.
     fn each_line(&self, visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>) -> ControlFlow<()>;
+
+    /// Whether the lines' origins ascend (nothing moved), known without reading the lines:
+    /// then the changes can be printed as they are found.
+    fn origins_ascend(&self) -> bool {
+        false
+    }
+
+    /// Visits the lines whose index (0-based) `wanted` takes, in order, each with its index,
+    /// until `visit` breaks; `wanted` is asked of each index in order. A new text that can
+    /// pass over a line more cheaply than it writes it does so for the others.
+    fn each_wanted_line(
+        &self,
+        wanted: &mut dyn FnMut(u32) -> bool,
+        visit: &mut dyn FnMut(u32, NewLine<'_>) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
+        let mut index = 0;
+        self.each_line(&mut |line| {
+            index += 1;
+            match wanted(index - 1) {
+                true => visit(index - 1, line),
+                false => ControlFlow::Continue(()),
+            }
+        })
+    }
 }
 
 /// How the diff is printed.
@@ -58,18 +85,43 @@ pub struct Style<'n> {
 pub fn write_diff(
     out: &mut impl Write,
     old: &str,
-    new: &impl NewLines,
+    new: &(impl NewLines + Sync),
     style: Style<'_>,
 ) -> io::Result<bool> {
+    if new.origins_ascend() && parallel::parts_for_text(old.len()) > 1 {
+        return write_as_found(out, old, new, style, HAND_OVER_EVERY);
+    }
     let changes = match align::first_reading(old, new) {
         align::FirstReading::InOrder(changes) => changes,
         align::FirstReading::Moved(kept) => align::changes(old, new, &kept),
     };
-    if changes.regions.is_empty() {
-        return Ok(false);
-    }
-    print::print(out, old, new, &changes, style)?;
-    Ok(true)
+    print::print(out, old, new, follow::Known::all(changes), style)
+}
+
+/// How many new lines the finder of [`write_as_found`] reads between two hand-overs.
+const HAND_OVER_EVERY: u32 = 4096;
+
+/// [`write_diff`] of new lines whose origins ascend (nothing moved): the changes are found
+/// on another thread, handed over every `hand_over_every` lines, as the diff is printed.
+fn write_as_found(
+    out: &mut impl Write,
+    old: &str,
+    new: &(impl NewLines + Sync),
+    style: Style<'_>,
+    hand_over_every: u32,
+) -> io::Result<bool> {
+    let shared = follow::Shared::default();
+    std::thread::scope(|scope| {
+        let find = || align::find_in_order(old, new, shared.finder(), hand_over_every);
+        if std::thread::Builder::new()
+            .spawn_scoped(scope, find)
+            .is_err()
+        {
+            // Without a thread, they are all found first.
+            align::find_in_order(old, new, shared.finder(), hand_over_every);
+        }
+        print::print(out, old, new, follow::Known::following(&shared), style)
+    })
 }
 
 /// The lines of `text` with their line endings, each with where it starts.
@@ -120,13 +172,21 @@ mod tests {
         }
     }
 
-    fn diff(old: &str, new: &impl NewLines) -> String {
+    const STYLE: Style = Style {
+        name: "kb.dat",
+        color: false,
+    };
+
+    fn diff(old: &str, new: &(impl NewLines + Sync)) -> String {
         let mut out = Vec::new();
-        let style = Style {
-            name: "kb.dat",
-            color: false,
-        };
-        write_diff(&mut out, old, new, style).unwrap();
+        write_diff(&mut out, old, new, STYLE).unwrap();
+        String::from_utf8(out).unwrap()
+    }
+
+    /// The diff printed as the changes are found, handed over every `every` lines.
+    fn diff_as_found(old: &str, new: &(impl NewLines + Sync), every: u32) -> String {
+        let mut out = Vec::new();
+        write_as_found(&mut out, old, new, STYLE, every).unwrap();
         String::from_utf8(out).unwrap()
     }
 
@@ -293,6 +353,16 @@ mod tests {
             let diff = in_order(&old, &new);
             prop_assert_eq!(diff.is_empty(), old == new);
             prop_assert_eq!(apply(&old, &diff), new);
+        }
+
+        #[test]
+        fn the_diff_printed_as_the_changes_are_found_is_the_same(
+            old in text(),
+            new in text(),
+            every in 1..5u32,
+        ) {
+            let new = InOrder { old: &old, new: &new };
+            prop_assert_eq!(diff_as_found(&old, &new, every), diff(&old, &new));
         }
 
         #[test]
