@@ -70,6 +70,9 @@ pub struct Checked<'a> {
     counts: RuleCounts,
     /// The rules that ran, and their severities.
     rules: RuleSet,
+    /// Whether it kept more findings of a fixable rule than [`check_with`] keeps
+    /// ([`check_for_fix`]).
+    kept_every_fix: bool,
 }
 
 impl Checked<'_> {
@@ -98,6 +101,28 @@ impl Checked<'_> {
             }
         }
         summary
+    }
+
+    /// Whether this check (a [`check_for_fix`]) kept findings that [`check_with`] does
+    /// not: without them, it is the same as a `check_with` of the file with the same rules.
+    pub fn kept_more_than_a_check(&self) -> bool {
+        self.kept_every_fix
+    }
+
+    /// This check as it would be without the rules that `ignored` selects, or `None` if
+    /// that cannot be told without checking again: a suppression comment in the file may
+    /// name them (one that silences nothing is only an `unused-suppression` finding while
+    /// the rules it names run).
+    pub fn ignoring(mut self, ignored: &[RuleSelector]) -> Option<Self> {
+        if suppression::may_have_suppressions(self.source.text()) {
+            return None;
+        }
+        let kept = |rule: &Rule| !ignored.iter().any(|selector| selector.matches(rule));
+        self.diagnostics.retain(|d| kept(d.rule));
+        self.omitted.retain(|d| kept(d.rule));
+        self.counts.0.retain(|(rule, _)| kept(rule));
+        self.rules.ignore(ignored);
+        Some(self)
     }
 
     pub fn has_errors(&self) -> bool {
@@ -303,6 +328,11 @@ pub fn finish<'a>(
         counts.0.retain(|(rule, _)| rules.is_enabled(rule));
     }
     sort_by_position(&mut diagnostics);
+    let kept_every_fix = keep_every_fix
+        && counts
+            .0
+            .iter()
+            .any(|&(rule, count)| rule.fixable && count > kept_at_most(rule));
     let not_kept = |rule| counts.get(rule).saturating_sub(cap(rule, keep_every_fix));
     let suppressed = suppression::apply(source.text(), &mut diagnostics, rules, not_kept);
     for (rule, n) in suppressed.silenced {
@@ -330,6 +360,7 @@ pub fn finish<'a>(
         omitted,
         counts,
         rules: rules.clone(),
+        kept_every_fix,
     }
 }
 

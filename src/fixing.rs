@@ -15,7 +15,7 @@ use std::borrow::Cow;
 use std::collections::{BTreeMap, BTreeSet};
 
 use crate::canonical::Document;
-use crate::check::check_for_fix;
+use crate::check::{check_for_fix, Checked};
 use crate::diagnostic::{Diagnostic, Edit, Fix};
 use crate::model::build::Options;
 use crate::rules::compat::compat_reader_crash::COMPAT_READER_CRASH;
@@ -44,98 +44,147 @@ pub struct Choice {
 
 /// Applies every safe fix the checks of `source` offer, pass after pass.
 pub fn fix(source: &SourceFile, options: &Options) -> Fixed {
-    let (outcome, counts) = fixes(source, options, &Choice::default());
-    Fixed {
-        text: outcome
-            .into_text()
-            .unwrap_or_else(|| source.text().to_string()),
-        counts,
-    }
+    fixes(source, options, &Choice::default(), |fixes| Fixed {
+        text: match fixes.outcome {
+            Outcome::Unchanged => source.text().to_string(),
+            Outcome::Edited(file) => file.text().to_string(),
+            Outcome::Balanced { document, .. } => document.render(),
+        },
+        counts: fixes.counts,
+    })
 }
 
 /// What the fixes of a file make of it.
 #[derive(Debug)]
-pub enum Outcome<'a> {
+pub enum Outcome<'f> {
     /// Nothing to fix: the file is checked as it is, never copied (two copies of 60 MB were
     /// most of `ekb fix --diff`'s memory).
     Unchanged,
     /// The text after the fixes' edits.
-    Edited(String),
-    /// The file, or its text after the edits ([`Document::text`]), with the location blocks
+    Edited(&'f SourceFile),
+    /// The file, or its text after the edits, with the location blocks
     /// in the order that builds a balanced tree in the robot's reader: the fix of
     /// `compat-reader-crash`, the one fix that is no edit. Laid out as `ekb fmt` writes,
     /// and not written out yet (`ekb fix --diff` shows it from the layout).
-    Balanced(Document<'a>),
+    Balanced {
+        /// The text laid out: the file, or its text after the edits.
+        file: &'f SourceFile,
+        document: Document<'f>,
+    },
 }
 
-impl Outcome<'_> {
-    /// The new text, `None` when nothing is fixed.
-    pub fn into_text(self) -> Option<String> {
-        match self {
-            Outcome::Unchanged => None,
-            Outcome::Edited(text) => Some(text),
-            Outcome::Balanced(document) => Some(document.render()),
-        }
-    }
+/// What the passes of [`fixes`] made of a file.
+#[derive(Debug)]
+pub struct Fixes<'f> {
+    pub outcome: Outcome<'f>,
+    /// How many findings of each rule the fixes fix, by rule name.
+    pub counts: BTreeMap<&'static str, usize>,
+    /// The check of the text the edits ended with (before any balance: the file itself if
+    /// nothing was edited), as [`check_with`](crate::check::check_with) makes it with the
+    /// chosen rules; `None` if the passes stopped at [`MAX_PASSES`] before checking it, or it
+    /// kept more findings than `check_with` keeps. What is left to fix by hand is told from
+    /// it, without checking the text once more.
+    pub last_check: Option<Checked<'f>>,
 }
 
-/// The fixes of `source` that `choice` allows, pass after pass, and how many findings of
-/// each rule they fix.
-pub fn fixes<'a>(
-    source: &'a SourceFile,
+/// The fixes of `source` that `choice` allows, pass after pass, given to `then` (which
+/// borrows the text they made, held only while it runs).
+pub fn fixes<R>(
+    source: &SourceFile,
     options: &Options,
     choice: &Choice,
-) -> (Outcome<'a>, BTreeMap<&'static str, usize>) {
-    let mut fixed: Option<String> = None;
-    let mut counts = BTreeMap::new();
-    let mut options = *options;
-    // Whether the order of ids crashes the reader: no edit changes that order.
-    let mut crashes_reader = false;
+    then: impl FnOnce(Fixes<'_>) -> R,
+) -> R {
+    let start = Passes {
+        counts: BTreeMap::new(),
+        done: 0,
+        crashes_reader: false,
+    };
+    pass(source, None, options, choice, start, then)
+}
+
+/// Where the passes are.
+struct Passes {
+    counts: BTreeMap<&'static str, usize>,
+    /// How many passes fixed something.
+    done: usize,
+    /// Whether the order of ids crashes the reader, as the last check found: no edit
+    /// changes that order.
+    crashes_reader: bool,
+}
+
+/// The next pass over `file` (`source` itself, or the text its edits made, `edited`), and
+/// the next one after it if it fixed anything. Each pass owns the text it makes, which the
+/// next one checks: no text is copied.
+fn pass<R>(
+    file: &SourceFile,
+    edited: Option<&SourceFile>,
+    options: &Options,
+    choice: &Choice,
+    mut passes: Passes,
+    then: impl FnOnce(Fixes<'_>) -> R,
+) -> R {
+    let text = edited.unwrap_or(file);
     // The bound only guards against fixes that would make each other again, which no
     // rule's do.
-    for _ in 0..MAX_PASSES {
-        let file = fixed
-            .as_ref()
-            .map(|text| SourceFile::from_bytes(source.name(), text.clone().into_bytes()));
-        let file = file.as_ref().unwrap_or(source);
-        let mut checked = check_for_fix(file, &options, &choice.rules);
-        if !choice.unsafe_fixes {
-            for diagnostic in &mut checked.diagnostics {
-                diagnostic.fix = diagnostic.fix.take().filter(Fix::is_safe);
-            }
-        }
-        crashes_reader = checked
-            .diagnostics
-            .iter()
-            .any(|d| std::ptr::eq(d.rule, &COMPAT_READER_CRASH));
-        // `--verbose` shows the file as read, once; later passes read it again.
-        options.verbose = false;
-        let Some((new, applied)) = apply(file.text(), &checked.diagnostics) else {
-            break;
-        };
-        for rule in applied {
-            *counts.entry(rule).or_insert(0) += 1;
-        }
-        fixed = Some(new);
+    if passes.done == MAX_PASSES {
+        return then(finish(file, edited, None, passes, choice));
     }
-    let balance = crashes_reader && choice.rules.is_enabled(&COMPAT_READER_CRASH);
-    let document = match (balance, fixed) {
-        (false, None) => return (Outcome::Unchanged, counts),
-        (false, Some(text)) => return (Outcome::Edited(text), counts),
-        (true, None) => Document::parse(source.text()).map_err(|_| None),
-        (true, Some(text)) => Document::parse_owned(text).map_err(Some),
+    let checked = check_for_fix(text, options, &choice.rules);
+    passes.crashes_reader = checked
+        .diagnostics
+        .iter()
+        .any(|d| std::ptr::eq(d.rule, &COMPAT_READER_CRASH));
+    let allowed = |fix: &Fix| choice.unsafe_fixes || fix.is_safe();
+    let Some((new, applied)) = apply_where(text.text(), &checked.diagnostics, allowed) else {
+        return then(finish(file, edited, Some(checked), passes, choice));
     };
-    let outcome = match document {
-        Ok(mut document) => {
+    drop(checked);
+    for rule in applied {
+        *passes.counts.entry(rule).or_insert(0) += 1;
+    }
+    passes.done += 1;
+    let next = SourceFile::from_bytes(file.name(), new.into_bytes());
+    // `--verbose` shows the file as read, once; later passes read it again.
+    let options = Options {
+        verbose: false,
+        ..*options
+    };
+    pass(file, Some(&next), &options, choice, passes, then)
+}
+
+/// What the passes made of `source`, its text now `edited` (if any edit was made), whose
+/// check is `last` (if it was checked): balanced too if the order of its ids crashes the
+/// reader.
+fn finish<'f>(
+    source: &'f SourceFile,
+    edited: Option<&'f SourceFile>,
+    last: Option<Checked<'f>>,
+    passes: Passes,
+    choice: &Choice,
+) -> Fixes<'f> {
+    let mut counts = passes.counts;
+    let text = edited.unwrap_or(source);
+    let balance = passes.crashes_reader && choice.rules.is_enabled(&COMPAT_READER_CRASH);
+    // A file the layout cannot write keeps its order.
+    let balanced = balance.then(|| Document::parse(text.text()).ok()).flatten();
+    let outcome = match (balanced, edited) {
+        (Some(mut document), _) => {
             document.balance();
             *counts.entry(COMPAT_READER_CRASH.name).or_insert(0) += 1;
-            Outcome::Balanced(document)
+            Outcome::Balanced {
+                file: text,
+                document,
+            }
         }
-        // A file the layout cannot write keeps its order.
-        Err(Some(text)) => Outcome::Edited(text),
-        Err(None) => Outcome::Unchanged,
+        (None, Some(edited)) => Outcome::Edited(edited),
+        (None, None) => Outcome::Unchanged,
     };
-    (outcome, counts)
+    Fixes {
+        outcome,
+        counts,
+        last_check: last.filter(|checked| !checked.kept_more_than_a_check()),
+    }
 }
 
 /// `bytes` with every byte that is not part of a UTF-8 sequence read as Windows-1252 (the
@@ -196,12 +245,21 @@ pub fn from_latin1(bytes: &[u8]) -> Option<String> {
 /// Applies the fixes of `diagnostics` to `text`, each whole or not at all, skipping a fix
 /// whose edits clash with those of one taken before it. Returns the new text and the rule
 /// of each fix applied, or `None` if there was none to apply.
-pub fn apply<'d>(text: &str, diagnostics: &'d [Diagnostic]) -> Option<(String, Vec<&'static str>)> {
+pub fn apply(text: &str, diagnostics: &[Diagnostic]) -> Option<(String, Vec<&'static str>)> {
+    apply_where(text, diagnostics, |_| true)
+}
+
+/// [`apply`], with only the fixes that are `allowed`.
+fn apply_where<'d>(
+    text: &str,
+    diagnostics: &'d [Diagnostic],
+    allowed: impl Fn(&Fix) -> bool,
+) -> Option<(String, Vec<&'static str>)> {
     let mut accepted = Edits::default();
     let mut applied = Vec::new();
     // One fix's edits at a time: a million fixes are never copied all at once.
     for diagnostic in diagnostics {
-        let Some(fix) = &diagnostic.fix else {
+        let Some(fix) = diagnostic.fix.as_ref().filter(|fix| allowed(fix)) else {
             continue;
         };
         let edits: Vec<Cow<'d, Edit>> = fix

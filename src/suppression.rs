@@ -171,6 +171,13 @@ fn parse(text: &str, comment: Span) -> Parsed {
     Parsed::Suppression(scope, Span::new(list_start, list_start + list.len()), names)
 }
 
+/// Whether `text` may hold a suppression comment: it has the mark of one.
+pub fn may_have_suppressions(text: &str) -> bool {
+    // No `#`, no comment: that one byte is found faster than the mark.
+    let bytes = text.as_bytes();
+    memchr::memchr(b'#', bytes).is_some() && memchr::memmem::find(bytes, MARK.as_bytes()).is_some()
+}
+
 /// Drops the findings of `diagnostics` (sorted by position) that `text`'s suppressions
 /// silence, and adds an `unused-suppression` finding for each suppression that silences
 /// nothing (if `rules` runs that rule). `dropped` tells how many findings of a rule were
@@ -183,11 +190,7 @@ pub fn apply(
     dropped: impl Fn(&'static Rule) -> usize,
 ) -> Suppressed {
     let mut suppressed = Suppressed::default();
-    // No `#`, no comment: that one byte is found faster than the mark.
-    let bytes = text.as_bytes();
-    if memchr::memchr(b'#', bytes).is_none()
-        || memchr::memmem::find(bytes, MARK.as_bytes()).is_none()
-    {
+    if !may_have_suppressions(text) {
         return suppressed;
     }
     let (suppressions, malformed) = find(text);
