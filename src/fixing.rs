@@ -16,7 +16,8 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use crate::canonical::Document;
 use crate::check::{check_for_fix, Checked};
-use crate::diagnostic::{Diagnostic, Edit, Fix};
+use crate::diagnostic::{Diagnostic, Edit};
+use crate::fix_list::{FixList, ListedFix};
 use crate::model::build::Options;
 use crate::rules::compat::compat_reader_crash::COMPAT_READER_CRASH;
 use crate::rules::selection::RuleSet;
@@ -81,9 +82,8 @@ pub struct Fixes<'f> {
     pub counts: BTreeMap<&'static str, usize>,
     /// The check of the text the edits ended with (before any balance: the file itself if
     /// nothing was edited), as [`check_with`](crate::check::check_with) makes it with the
-    /// chosen rules; `None` if the passes stopped at [`MAX_PASSES`] before checking it, or it
-    /// kept more findings than `check_with` keeps. What is left to fix by hand is told from
-    /// it, without checking the text once more.
+    /// chosen rules; `None` if the passes stopped at [`MAX_PASSES`] before checking it. What
+    /// is left to fix by hand is told from it, without checking the text once more.
     pub last_check: Option<Checked<'f>>,
 }
 
@@ -105,7 +105,7 @@ pub fn fixes<R>(
 
 /// Where the passes are.
 struct Passes {
-    counts: BTreeMap<&'static str, usize>,
+    counts: Counts,
     /// How many passes fixed something.
     done: usize,
     /// Whether the order of ids crashes the reader, as the last check found: no edit
@@ -135,13 +135,13 @@ fn pass<R>(
         .diagnostics
         .iter()
         .any(|d| std::ptr::eq(d.rule, &COMPAT_READER_CRASH));
-    let allowed = |fix: &Fix| choice.unsafe_fixes || fix.is_safe();
-    let Some((new, applied)) = apply_where(text.text(), &checked.diagnostics, allowed) else {
+    let allowed = |fix: &ListedFix<'_>| choice.unsafe_fixes || fix.safe;
+    let Some((new, applied)) = apply_where(text.text(), &checked.fixes, allowed) else {
         return then(finish(file, edited, Some(checked), passes, choice));
     };
     drop(checked);
-    for rule in applied {
-        *passes.counts.entry(rule).or_insert(0) += 1;
+    for (rule, count) in applied {
+        *passes.counts.entry(rule).or_insert(0) += count;
     }
     passes.done += 1;
     let next = SourceFile::from_bytes(file.name(), new.into_bytes());
@@ -183,7 +183,7 @@ fn finish<'f>(
     Fixes {
         outcome,
         counts,
-        last_check: last.filter(|checked| !checked.kept_more_than_a_check()),
+        last_check: last,
     }
 }
 
@@ -243,58 +243,107 @@ pub fn from_latin1(bytes: &[u8]) -> Option<String> {
 }
 
 /// Applies the fixes of `diagnostics` to `text`, each whole or not at all, skipping a fix
-/// whose edits clash with those of one taken before it. Returns the new text and the rule
-/// of each fix applied, or `None` if there was none to apply.
-pub fn apply(text: &str, diagnostics: &[Diagnostic]) -> Option<(String, Vec<&'static str>)> {
-    apply_where(text, diagnostics, |_| true)
-}
-
-/// [`apply`], with only the fixes that are `allowed`.
-fn apply_where<'d>(
-    text: &str,
-    diagnostics: &'d [Diagnostic],
-    allowed: impl Fn(&Fix) -> bool,
-) -> Option<(String, Vec<&'static str>)> {
-    let mut accepted = Edits::default();
-    let mut applied = Vec::new();
-    // One fix's edits at a time: a million fixes are never copied all at once.
+/// whose edits clash with those of one taken before it. Returns the new text and how many
+/// fixes of each rule it applied, or `None` if there was none to apply.
+pub fn apply(text: &str, diagnostics: &[Diagnostic]) -> Option<(String, Counts)> {
+    let mut fixes = FixList::default();
     for diagnostic in diagnostics {
-        let Some(fix) = diagnostic.fix.as_ref().filter(|fix| allowed(fix)) else {
-            continue;
-        };
-        let edits: Vec<Cow<'d, Edit>> = fix
-            .edits
-            .iter()
-            .map(|edit| keeping_id_column(text, edit))
-            .collect();
-        let fits = edits.iter().all(|edit| !accepted.clashes(edit.span)) && !clash_among(&edits);
-        if fits {
-            edits.into_iter().for_each(|edit| accepted.add(edit));
-            applied.push(diagnostic.rule.name);
+        if let Some(fix) = &diagnostic.fix {
+            fixes.push(
+                diagnostic.rule,
+                diagnostic.span,
+                fix.is_safe(),
+                fix.edits.clone(),
+            );
         }
     }
-    (!applied.is_empty()).then(|| (accepted.apply(text), applied))
+    apply_where(text, &fixes, |_| true)
+}
+
+/// How many fixes of each rule were applied, by rule name.
+pub type Counts = BTreeMap<&'static str, usize>;
+
+/// [`apply`], to the fixes of `fixes` that are `allowed`, in their order; the new text is
+/// written in one pass, the edits taken in order of position (if a fix's edits came
+/// before one taken already, they are sorted first).
+fn apply_where(
+    text: &str,
+    fixes: &FixList,
+    allowed: impl Fn(&ListedFix<'_>) -> bool,
+) -> Option<(String, Counts)> {
+    let mut accepted = Accepted::default();
+    let mut taken = vec![false; fixes.len()];
+    let mut counts = Counts::new();
+    let mut spans = Vec::new();
+    for (fix, taken) in fixes.iter().zip(&mut taken) {
+        if !allowed(&fix) {
+            continue;
+        }
+        spans.clear();
+        spans.extend(
+            fix.edits()
+                .map(|(span, new)| keeping_id_column(text, span, new).0),
+        );
+        if spans.iter().all(|&span| !accepted.clashes(span)) && !clash_among(&spans) {
+            spans.iter().for_each(|&span| accepted.add(span));
+            *taken = true;
+            *counts.entry(fix.rule.name).or_insert(0) += 1;
+        }
+    }
+    if counts.is_empty() {
+        return None;
+    }
+    let edits = fixes
+        .iter()
+        .zip(taken)
+        .filter(|&(_, taken)| taken)
+        .flat_map(|(fix, _)| fix.edits())
+        .map(|(span, new)| keeping_id_column(text, span, new));
+    let new_text = match accepted.others.is_empty() {
+        true => write_edits(text, edits),
+        false => {
+            let mut edits: Vec<(Span, Cow<'_, str>)> = edits.collect();
+            edits.sort_by_key(|(span, _)| (span.start, span.end));
+            write_edits(text, edits.into_iter())
+        }
+    };
+    Some((new_text, counts))
 }
 
 /// Applies `edits` to `text`; they must not overlap, and no two may insert at one offset
 /// (for `ekb set` and `ekb import --po`, whose edits are one per line).
 pub fn splice(text: &str, edits: &[Edit]) -> String {
-    let mut all = Edits::default();
-    for edit in edits {
-        debug_assert!(!all.clashes(edit.span), "{edit:?}");
-        all.add(Cow::Borrowed(edit));
-    }
-    all.apply(text)
+    let mut sorted: Vec<&Edit> = edits.iter().collect();
+    sorted.sort_by_key(|edit| (edit.span.start, edit.span.end));
+    debug_assert!(!clash_among(
+        &sorted.iter().map(|e| e.span).collect::<Vec<_>>()
+    ));
+    write_edits(
+        text,
+        sorted.iter().map(|e| (e.span, e.replacement.as_str())),
+    )
 }
 
-/// `edit`, made to keep the column of the id when it renames the key of a line whose key is
-/// padded with spaces up to the id (as `ekb fmt` writes): `robotLocation` becoming
-/// `robotLocationPose` takes four of its spaces, and the reverse gives them back. Any other
-/// edit is left as it is.
-fn keeping_id_column<'d>(text: &str, edit: &'d Edit) -> Cow<'d, Edit> {
-    let (start, end) = (edit.span.start as usize, edit.span.end as usize);
+/// `text` with `edits` made, given in order of position, none overlapping another.
+fn write_edits(text: &str, edits: impl Iterator<Item = (Span, impl AsRef<str>)>) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut at = 0;
+    for (span, replacement) in edits {
+        out.push_str(&text[at..span.start as usize]);
+        out.push_str(replacement.as_ref());
+        at = span.end as usize;
+    }
+    out.push_str(&text[at..]);
+    out
+}
+
+/// The edit of `span` to `new_key`, made to keep the column of the id when it renames the
+/// key of a line whose key is padded with spaces up to the id (as `ekb fmt` writes):
+/// `robotLocation` becoming `robotLocationPose` takes four of its spaces, and the reverse
+/// gives them back. Any other edit is left as it is.
+fn keeping_id_column<'e>(text: &str, span: Span, new_key: &'e str) -> (Span, Cow<'e, str>) {
+    let (start, end) = (span.start as usize, span.end as usize);
     let old_key = &text[start..end];
-    let new_key = edit.replacement.as_str();
     let at_line_start = start == 0 || text.as_bytes()[start - 1] == b'\n';
     let is_word = |word: &str| !word.is_empty() && !word.contains(char::is_whitespace);
     let padding = text[end..].bytes().take_while(|&b| b == b' ').count();
@@ -311,61 +360,65 @@ fn keeping_id_column<'d>(text: &str, edit: &'d Edit) -> Cow<'d, Edit> {
         || padding < 2
         || !id_follows
     {
-        return Cow::Borrowed(edit);
+        return (span, Cow::Borrowed(new_key));
     }
     let column = old_key.chars().count() + padding;
     let new_padding = column.saturating_sub(new_key.chars().count()).max(1);
-    Cow::Owned(Edit::replace(
+    (
         Span::new(start, end + padding),
-        format!("{new_key}{}", " ".repeat(new_padding)),
-    ))
+        Cow::Owned(format!("{new_key}{}", " ".repeat(new_padding))),
+    )
 }
 
-/// Non-clashing edits, by `(start, end)`. Since none overlap, their ends grow with their
-/// starts, so the one just before a span is the only one that could reach into it.
+/// The spans of the edits taken, which do not overlap: their ends grow with their starts,
+/// so the one just before a span is the only one that could reach into it. Most edits are
+/// taken in order of position, each after the last: those are a sorted list, 8 bytes an
+/// edit; any other goes in a tree.
 #[derive(Debug, Default)]
-struct Edits<'a> {
-    by_span: BTreeMap<(u32, u32), Cow<'a, str>>,
+struct Accepted {
+    in_order: Vec<(u32, u32)>,
+    others: BTreeSet<(u32, u32)>,
 }
 
-impl<'a> Edits<'a> {
+impl Accepted {
     fn clashes(&self, span: Span) -> bool {
-        let before = self.by_span.range(..(span.end, span.end)).next_back();
-        let reaches_in = before.is_some_and(|(&(_, end), _)| end > span.start);
+        let key = (span.start, span.end);
+        let below = (span.end, span.end);
+        let before_in_order = self
+            .in_order
+            .partition_point(|&taken| taken < below)
+            .checked_sub(1)
+            .map(|at| self.in_order[at]);
+        let before_other = self.others.range(..below).next_back().copied();
+        let before = before_in_order.max(before_other);
+        let reaches_in = before.is_some_and(|(_, end)| end > span.start);
         // Two insertions at one offset: which goes first is not defined.
-        reaches_in || (span.is_empty() && self.by_span.contains_key(&(span.start, span.end)))
+        let taken = || self.in_order.binary_search(&key).is_ok() || self.others.contains(&key);
+        reaches_in || (span.is_empty() && taken())
     }
 
-    fn add(&mut self, edit: Cow<'a, Edit>) {
-        let span = (edit.span.start, edit.span.end);
-        let replacement = match edit {
-            Cow::Borrowed(edit) => Cow::Borrowed(edit.replacement.as_str()),
-            Cow::Owned(edit) => Cow::Owned(edit.replacement),
-        };
-        self.by_span.insert(span, replacement);
-    }
-
-    fn apply(&self, text: &str) -> String {
-        let mut out = String::with_capacity(text.len());
-        let mut at = 0;
-        for (&(start, end), replacement) in &self.by_span {
-            out.push_str(&text[at..start as usize]);
-            out.push_str(replacement);
-            at = end as usize;
+    fn add(&mut self, span: Span) {
+        let key = (span.start, span.end);
+        match self.in_order.last() {
+            Some(&last) if key <= last => {
+                self.others.insert(key);
+            }
+            _ => self.in_order.push(key),
         }
-        out.push_str(&text[at..]);
-        out
     }
 }
 
 /// Whether the edits of one fix clash among themselves (a rule's bug; the fix is skipped).
-fn clash_among(edits: &[Cow<'_, Edit>]) -> bool {
-    let mut seen = Edits::default();
-    let spans: BTreeSet<(u32, u32)> = edits.iter().map(|e| (e.span.start, e.span.end)).collect();
-    spans.len() != edits.len()
-        || edits.iter().any(|edit| {
-            let clash = seen.clashes(edit.span);
-            seen.add(Cow::Borrowed(edit));
+fn clash_among(spans: &[Span]) -> bool {
+    if spans.len() < 2 {
+        return false;
+    }
+    let mut seen = Accepted::default();
+    let distinct: BTreeSet<(u32, u32)> = spans.iter().map(|s| (s.start, s.end)).collect();
+    distinct.len() != spans.len()
+        || spans.iter().any(|&span| {
+            let clash = seen.clashes(span);
+            seen.add(span);
             clash
         })
 }
@@ -456,21 +509,35 @@ mod tests {
 
     #[test]
     fn clashing_edits_wait_for_the_next_pass() {
-        let mut edits = Edits::default();
-        let insert = Edit::insert(3, "x");
-        edits.add(Cow::Borrowed(&insert));
+        let mut edits = Accepted::default();
+        edits.add(Span::new(3, 3));
         assert!(edits.clashes(Span::new(3, 3)));
         assert!(!edits.clashes(Span::new(3, 5)), "delete after an insertion");
         assert!(
             !edits.clashes(Span::new(1, 3)),
             "delete before an insertion"
         );
-        let delete = Edit::delete(Span::new(5, 9));
-        edits.add(Cow::Borrowed(&delete));
+        edits.add(Span::new(5, 9));
         assert!(edits.clashes(Span::new(8, 10)));
         assert!(edits.clashes(Span::new(6, 6)));
         assert!(edits.clashes(Span::new(4, 6)));
         assert!(!edits.clashes(Span::new(9, 9)));
-        assert_eq!(edits.apply("0123456789"), "012x349");
+        // Taken before the last one: kept apart, and clashed with all the same.
+        edits.add(Span::new(0, 1));
+        assert!(edits.clashes(Span::new(0, 2)));
+        assert!(!edits.clashes(Span::new(1, 2)));
+        assert_eq!(edits.others.len(), 1);
+    }
+
+    #[test]
+    fn fixes_whose_edits_come_before_those_taken_are_written_in_place() {
+        let text = "aaa bbb ccc\n";
+        let at = |start: usize, new: &str| {
+            Diagnostic::new(&COMPAT_READER_CRASH, Span::new(start, start + 3), "")
+                .with_fix("", vec![Edit::replace(Span::new(start, start + 3), new)])
+        };
+        let (fixed, counts) = apply(text, &[at(8, "C"), at(0, "A"), at(4, "B")]).unwrap();
+        assert_eq!(fixed, "A B C\n");
+        assert_eq!(counts.get(COMPAT_READER_CRASH.name), Some(&3));
     }
 }

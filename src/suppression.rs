@@ -199,30 +199,11 @@ pub fn apply(
         .iter()
         .map(|s| vec![false; s.names.len()])
         .collect();
-    let file_wide: Vec<(usize, usize, RuleSelector)> = selectors_of(&suppressions, Scope::File);
-    let by_line: BTreeMap<u32, Vec<(usize, usize, RuleSelector)>> = {
-        let mut by_line: BTreeMap<u32, Vec<_>> = BTreeMap::new();
-        for (index, suppression) in suppressions.iter().enumerate() {
-            if let Scope::Line(Some(target)) = suppression.scope {
-                for (n, name) in suppression.names.iter().enumerate() {
-                    if let Ok(selector) = name.selector {
-                        by_line
-                            .entry(target.start)
-                            .or_default()
-                            .push((index, n, selector));
-                    }
-                }
-            }
-        }
-        by_line
-    };
+    let scopes = Scopes::new(&suppressions);
+    let file_wide = &scopes.file_wide;
     let silences = |diagnostic: &Diagnostic, used: &mut Vec<Vec<bool>>| {
-        let line_start = text[..diagnostic.span.start as usize]
-            .rfind('\n')
-            .map_or(0, |newline| newline + 1) as u32;
-        let on_line = by_line.get(&line_start).into_iter().flatten();
         let mut hit = false;
-        for &(index, n, selector) in on_line.chain(&file_wide) {
+        for (index, n, selector) in scopes.at(text, diagnostic.span.start) {
             if selector.matches(diagnostic.rule) {
                 used[index][n] = true;
                 hit = true;
@@ -238,7 +219,7 @@ pub fn apply(
         !hit
     });
     // A file-wide suppression silences the findings not kept as well.
-    for &(index, n, selector) in &file_wide {
+    for &(index, n, selector) in file_wide {
         for rule in crate::rules::ALL
             .iter()
             .filter(|rule| selector.matches(rule))
@@ -291,6 +272,60 @@ pub fn apply(
         }
     }
     suppressed
+}
+
+/// The names of the suppressions of a file, by what they cover, each as (suppression,
+/// name, selector).
+struct Scopes {
+    file_wide: Vec<(usize, usize, RuleSelector)>,
+    /// By the start of the line they cover.
+    by_line: BTreeMap<u32, Vec<(usize, usize, RuleSelector)>>,
+}
+
+impl Scopes {
+    fn new(suppressions: &[Suppression]) -> Scopes {
+        let mut by_line: BTreeMap<u32, Vec<_>> = BTreeMap::new();
+        for (index, suppression) in suppressions.iter().enumerate() {
+            if let Scope::Line(Some(target)) = suppression.scope {
+                for (n, name) in suppression.names.iter().enumerate() {
+                    if let Ok(selector) = name.selector {
+                        by_line
+                            .entry(target.start)
+                            .or_default()
+                            .push((index, n, selector));
+                    }
+                }
+            }
+        }
+        Scopes {
+            file_wide: selectors_of(suppressions, Scope::File),
+            by_line,
+        }
+    }
+
+    /// The names that cover offset `at` of `text`: those of its line, and the file's.
+    fn at(&self, text: &str, at: u32) -> impl Iterator<Item = (usize, usize, RuleSelector)> + '_ {
+        let line_start = text[..at as usize]
+            .rfind('\n')
+            .map_or(0, |newline| newline + 1) as u32;
+        let on_line = self.by_line.get(&line_start).into_iter().flatten();
+        on_line.chain(&self.file_wide).copied()
+    }
+}
+
+/// Whether a suppression of `text` silences a finding of a rule at an offset, asked of
+/// findings not kept as findings (the fixes `ekb fix` keeps of them); `None` if `text`
+/// has no suppression.
+pub fn silencer(text: &str) -> Option<impl Fn(&Rule, u32) -> bool + '_> {
+    if !may_have_suppressions(text) {
+        return None;
+    }
+    let scopes = Scopes::new(&find(text).0);
+    Some(move |rule: &Rule, at: u32| {
+        scopes
+            .at(text, at)
+            .any(|(_, _, selector)| selector.matches(rule))
+    })
 }
 
 /// The names of the suppressions of `scope`, as (suppression, name, selector).
