@@ -2,14 +2,14 @@
 //!
 //! A file can have a million findings to fix (a key miscased on every line). Kept as
 //! findings, each with its message, help and fix, they took 450 MB for a 34 MB file; kept
-//! here, a fix takes 36 bytes: the finding's span and rule, whether it is safe, and its
-//! edits, each a span and the index of its replacement, a string kept once however many
-//! edits write it (a key's name, a line ending).
+//! here, a fix takes 16 bytes: the finding's span, its rule, whether it is safe, and its
+//! one edit of that span, or where its edits are (12 bytes each: a span and the index of a
+//! replacement). A replacement is kept once however many edits write it (a key's name).
 
 use std::collections::HashMap;
 
 use crate::diagnostic::Edit;
-use crate::rules::Rule;
+use crate::rules::{self, Rule};
 use crate::syntax::Span;
 
 /// Replacements no longer than this are kept once, however many edits write them.
@@ -19,24 +19,33 @@ const SHARED_LENGTH: usize = 64;
 /// rules are a few dozen).
 const MOST_SHARED: usize = 1024;
 
+/// The `edit_count` of a fix whose one edit replaces its finding's span.
+const ONE_EDIT_OF_ITS_SPAN: u16 = u16::MAX;
+
 /// Fixes in the order their findings were made, or sorted by their findings' positions.
 #[derive(Debug, Default)]
 pub struct FixList {
     fixes: Vec<Entry>,
+    /// The edits of the fixes that have more than one, or one of another span.
     edits: Vec<CompactEdit>,
     replacements: Replacements,
+    /// The rule of the last fix kept, and its index.
+    last_rule: Option<(&'static Rule, u8)>,
 }
 
 /// One fix.
 #[derive(Debug, Clone, Copy)]
 struct Entry {
-    rule: &'static Rule,
     /// Its finding's span: the order fixes are taken in, and the line a suppression names.
     start: u32,
     end: u32,
-    /// Its edits in [`FixList::edits`].
-    first_edit: u32,
+    /// The index of the replacement of its one edit, of the finding's span, if
+    /// `edit_count` is [`ONE_EDIT_OF_ITS_SPAN`] (most fixes); else where its edits start in
+    /// [`FixList::edits`].
+    edits: u32,
     edit_count: u16,
+    /// Its rule's index in the catalogue ([`rules::ALL`]).
+    rule: u8,
     safe: bool,
 }
 
@@ -71,7 +80,7 @@ impl Replacements {
 }
 
 /// A fix of a [`FixList`], as it is read.
-#[derive(Debug, Clone, Copy)]
+#[derive(Clone, Copy)]
 pub struct ListedFix<'l> {
     pub rule: &'static Rule,
     /// Its finding's span.
@@ -83,18 +92,28 @@ pub struct ListedFix<'l> {
 
 impl<'l> ListedFix<'l> {
     /// Its edits, in the order the rule made them: each span and replacement.
-    pub fn edits(&self) -> impl ExactSizeIterator<Item = (Span, &'l str)> + 'l {
+    pub fn edits(&self) -> impl Iterator<Item = (Span, &'l str)> + 'l {
         let list = self.list;
-        let first = self.entry.first_edit as usize;
-        list.edits[first..first + usize::from(self.entry.edit_count)]
-            .iter()
-            .map(|edit| {
-                let replacement = &list.replacements.strings[edit.replacement as usize];
-                (
-                    Span::new(edit.start as usize, edit.end as usize),
-                    &**replacement,
-                )
-            })
+        let entry = self.entry;
+        let (one, others) = match entry.edit_count {
+            ONE_EDIT_OF_ITS_SPAN => {
+                let one = CompactEdit {
+                    start: entry.start,
+                    end: entry.end,
+                    replacement: entry.edits,
+                };
+                (Some(one), &list.edits[..0])
+            }
+            count => {
+                let first = entry.edits as usize;
+                (None, &list.edits[first..first + usize::from(count)])
+            }
+        };
+        one.into_iter().chain(others.iter().copied()).map(|edit| {
+            let replacement = &list.replacements.strings[edit.replacement as usize];
+            let span = Span::new(edit.start as usize, edit.end as usize);
+            (span, &**replacement)
+        })
     }
 
     /// Its edits, made again.
@@ -107,48 +126,75 @@ impl<'l> ListedFix<'l> {
 
 impl FixList {
     /// Keeps the fix of a finding of `rule` at `span`: its `edits`, and whether it is safe.
-    pub fn push(&mut self, rule: &'static Rule, span: Span, safe: bool, edits: Vec<Edit>) {
-        let first_edit = self.edits.len() as u32;
-        // A fix with more edits than this is no fix a rule makes; its edits past the
-        // first 65,535 are not kept (and clash with nothing).
-        let edit_count = edits.len().min(usize::from(u16::MAX)) as u16;
-        for edit in edits.into_iter().take(usize::from(edit_count)) {
-            let replacement = self.replacements.add(edit.replacement);
-            self.edits.push(CompactEdit {
-                start: edit.span.start,
-                end: edit.span.end,
-                replacement,
-            });
-        }
+    pub fn push(&mut self, rule: &'static Rule, span: Span, safe: bool, mut edits: Vec<Edit>) {
+        let rule = self.rule_index(rule);
+        let (edits, edit_count) = match edits.as_mut_slice() {
+            [one] if one.span == span => {
+                let replacement = std::mem::take(&mut one.replacement);
+                (self.replacements.add(replacement), ONE_EDIT_OF_ITS_SPAN)
+            }
+            _ => {
+                let first = self.edits.len() as u32;
+                // A fix with more edits than this is no fix a rule makes; its edits past
+                // those are not kept (and clash with nothing).
+                let count = edits.len().min(usize::from(ONE_EDIT_OF_ITS_SPAN - 1));
+                for edit in edits.into_iter().take(count) {
+                    let replacement = self.replacements.add(edit.replacement);
+                    self.edits.push(CompactEdit {
+                        start: edit.span.start,
+                        end: edit.span.end,
+                        replacement,
+                    });
+                }
+                (first, count as u16)
+            }
+        };
         self.fixes.push(Entry {
-            rule,
             start: span.start,
             end: span.end,
-            first_edit,
+            edits,
             edit_count,
+            rule,
             safe,
         });
+    }
+
+    /// The index of `rule` in the catalogue, found at once if it is the last one asked for.
+    fn rule_index(&mut self, rule: &'static Rule) -> u8 {
+        match self.last_rule {
+            Some((last, index)) if std::ptr::eq(last, rule) => index,
+            _ => {
+                let index = rules::index_of(rule) as u8;
+                self.last_rule = Some((rule, index));
+                index
+            }
+        }
     }
 
     /// Adds the fixes of `later`, after these.
     pub fn append(&mut self, later: FixList) {
         let edits_before = self.edits.len() as u32;
-        let mut replaced = Vec::with_capacity(later.replacements.strings.len());
-        for replacement in later.replacements.strings {
-            replaced.push(self.replacements.add(replacement.into_string()));
-        }
+        let replaced: Vec<u32> = later
+            .replacements
+            .strings
+            .into_iter()
+            .map(|replacement| self.replacements.add(replacement.into_string()))
+            .collect();
         self.edits.reserve_exact(later.edits.len());
-        self.edits
-            .extend(later.edits.into_iter().map(|edit| CompactEdit {
-                replacement: replaced[edit.replacement as usize],
-                ..edit
-            }));
+        let edits = later.edits.into_iter().map(|edit| CompactEdit {
+            replacement: replaced[edit.replacement as usize],
+            ..edit
+        });
+        self.edits.extend(edits);
         self.fixes.reserve_exact(later.fixes.len());
-        self.fixes
-            .extend(later.fixes.into_iter().map(|entry| Entry {
-                first_edit: entry.first_edit + edits_before,
-                ..entry
-            }));
+        let fixes = later.fixes.into_iter().map(|entry| Entry {
+            edits: match entry.edit_count {
+                ONE_EDIT_OF_ITS_SPAN => replaced[entry.edits as usize],
+                _ => entry.edits + edits_before,
+            },
+            ..entry
+        });
+        self.fixes.extend(fixes);
     }
 
     pub fn len(&self) -> usize {
@@ -183,7 +229,7 @@ impl FixList {
 
     fn listed(&self, entry: Entry) -> ListedFix<'_> {
         ListedFix {
-            rule: entry.rule,
+            rule: rules::ALL[usize::from(entry.rule)],
             span: Span::new(entry.start as usize, entry.end as usize),
             safe: entry.safe,
             list: self,
@@ -217,6 +263,11 @@ mod tests {
         let two = vec![Edit::delete(Span::new(5, 6)), Edit::insert(7, "Key")];
         list.push(&TRAILING_WHITESPACE, Span::new(5, 6), false, two);
         assert_eq!(list.replacements.strings.len(), 2, "`Key` and ``");
+        assert_eq!(
+            list.edits.len(),
+            2,
+            "the one edit of a finding's span is the fix's own"
+        );
         list.sort_by_position();
         let key = |start| (Span::new(start, start + 3), "Key".to_string());
         assert_eq!(

@@ -130,17 +130,21 @@ fn pass<R>(
     if passes.done == MAX_PASSES {
         return then(finish(file, edited, None, passes, choice));
     }
-    let checked = check_for_fix(text, options, &choice.rules);
+    let mut checked = check_for_fix(text, options, &choice.rules);
     passes.crashes_reader = checked
         .diagnostics
         .iter()
         .any(|d| std::ptr::eq(d.rule, &COMPAT_READER_CRASH));
     let allowed = |fix: &ListedFix<'_>| choice.unsafe_fixes || fix.safe;
-    let Some((new, applied)) = apply_where(text.text(), &checked.fixes, allowed) else {
+    let Some(chosen) = choose(text.text(), &checked.fixes, allowed) else {
         return then(finish(file, edited, Some(checked), passes, choice));
     };
+    // The check is done with: only the fixes are kept while the new text is written.
+    let fixes = std::mem::take(&mut checked.fixes);
     drop(checked);
-    for (rule, count) in applied {
+    let new = chosen.write(text.text(), &fixes);
+    drop(fixes);
+    for (rule, count) in chosen.counts {
         *passes.counts.entry(rule).or_insert(0) += count;
     }
     passes.done += 1;
@@ -263,19 +267,35 @@ pub fn apply(text: &str, diagnostics: &[Diagnostic]) -> Option<(String, Counts)>
 /// How many fixes of each rule were applied, by rule name.
 pub type Counts = BTreeMap<&'static str, usize>;
 
-/// [`apply`], to the fixes of `fixes` that are `allowed`, in their order; the new text is
-/// written in one pass, the edits taken in order of position (if a fix's edits came
-/// before one taken already, they are sorted first).
+/// [`apply`], to the fixes of `fixes` that are `allowed`, in their order.
 fn apply_where(
     text: &str,
     fixes: &FixList,
     allowed: impl Fn(&ListedFix<'_>) -> bool,
 ) -> Option<(String, Counts)> {
-    let mut accepted = Accepted::default();
+    let chosen = choose(text, fixes, allowed)?;
+    Some((chosen.write(text, fixes), chosen.counts))
+}
+
+/// The fixes of a [`FixList`] chosen to be applied.
+struct Chosen {
+    /// Whether each fix is applied.
+    taken: Vec<bool>,
+    /// Whether the edits of the fixes applied come in order of position.
+    in_order: bool,
+    counts: Counts,
+}
+
+/// The fixes of `fixes` that are `allowed` and whose edits clash with none of those taken
+/// before, in their order; `None` if there is none. While each edit taken comes after the
+/// last one (nearly always), the edits are only counted; after one that does not, every
+/// edit taken is kept in a tree.
+fn choose(text: &str, fixes: &FixList, allowed: impl Fn(&ListedFix<'_>) -> bool) -> Option<Chosen> {
+    let mut accepted = Accepted::InOrder(None);
     let mut taken = vec![false; fixes.len()];
     let mut counts = Counts::new();
     let mut spans = Vec::new();
-    for (fix, taken) in fixes.iter().zip(&mut taken) {
+    for (index, fix) in fixes.iter().enumerate() {
         if !allowed(&fix) {
             continue;
         }
@@ -284,30 +304,55 @@ fn apply_where(
             fix.edits()
                 .map(|(span, new)| keeping_id_column(text, span, new).0),
         );
-        if spans.iter().all(|&span| !accepted.clashes(span)) && !clash_among(&spans) {
-            spans.iter().for_each(|&span| accepted.add(span));
-            *taken = true;
+        let fits = match &mut accepted {
+            Accepted::InOrder(last) if follows(*last, &spans) => true,
+            _ => {
+                let taken_before =
+                    || edits_taken(text, fixes, &taken[..index]).map(|(span, _)| span);
+                let all = accepted.all(taken_before);
+                spans.iter().all(|&span| !clashes(all, span)) && !clash_among(&spans)
+            }
+        };
+        if fits {
+            accepted.add(&spans);
+            taken[index] = true;
             *counts.entry(fix.rule.name).or_insert(0) += 1;
         }
     }
-    if counts.is_empty() {
-        return None;
+    (!counts.is_empty()).then_some(Chosen {
+        taken,
+        in_order: matches!(accepted, Accepted::InOrder(_)),
+        counts,
+    })
+}
+
+impl Chosen {
+    /// `text` with the edits of the fixes chosen of `fixes` made, written in one pass
+    /// (the edits sorted first if they do not come in order).
+    fn write(&self, text: &str, fixes: &FixList) -> String {
+        let edits = edits_taken(text, fixes, &self.taken);
+        if self.in_order {
+            return write_edits(text, edits);
+        }
+        let mut edits: Vec<(Span, Cow<'_, str>)> = edits.collect();
+        edits.sort_by_key(|(span, _)| (span.start, span.end));
+        write_edits(text, edits.into_iter())
     }
-    let edits = fixes
+}
+
+/// The edits of the fixes of `fixes` that were `taken` (one flag a fix, in order), in
+/// order, each as it is made ([`keeping_id_column`]).
+fn edits_taken<'a>(
+    text: &'a str,
+    fixes: &'a FixList,
+    taken: &'a [bool],
+) -> impl Iterator<Item = (Span, Cow<'a, str>)> + 'a {
+    fixes
         .iter()
         .zip(taken)
-        .filter(|&(_, taken)| taken)
+        .filter(|&(_, &taken)| taken)
         .flat_map(|(fix, _)| fix.edits())
-        .map(|(span, new)| keeping_id_column(text, span, new));
-    let new_text = match accepted.others.is_empty() {
-        true => write_edits(text, edits),
-        false => {
-            let mut edits: Vec<(Span, Cow<'_, str>)> = edits.collect();
-            edits.sort_by_key(|(span, _)| (span.start, span.end));
-            write_edits(text, edits.into_iter())
-        }
-    };
-    Some((new_text, counts))
+        .map(|(span, new)| keeping_id_column(text, span, new))
 }
 
 /// Applies `edits` to `text`; they must not overlap, and no two may insert at one offset
@@ -370,57 +415,67 @@ fn keeping_id_column<'e>(text: &str, span: Span, new_key: &'e str) -> (Span, Cow
     )
 }
 
-/// The spans of the edits taken, which do not overlap: their ends grow with their starts,
-/// so the one just before a span is the only one that could reach into it. Most edits are
-/// taken in order of position, each after the last: those are a sorted list, 8 bytes an
-/// edit; any other goes in a tree.
-#[derive(Debug, Default)]
-struct Accepted {
-    in_order: Vec<(u32, u32)>,
-    others: BTreeSet<(u32, u32)>,
+/// The spans of the edits taken, which do not overlap.
+#[derive(Debug)]
+enum Accepted {
+    /// Each taken after the one before (or none taken): the last one.
+    InOrder(Option<(u32, u32)>),
+    /// Every one, by `(start, end)`.
+    Any(BTreeSet<(u32, u32)>),
 }
 
 impl Accepted {
-    fn clashes(&self, span: Span) -> bool {
-        let key = (span.start, span.end);
-        let below = (span.end, span.end);
-        let before_in_order = self
-            .in_order
-            .partition_point(|&taken| taken < below)
-            .checked_sub(1)
-            .map(|at| self.in_order[at]);
-        let before_other = self.others.range(..below).next_back().copied();
-        let before = before_in_order.max(before_other);
-        let reaches_in = before.is_some_and(|(_, end)| end > span.start);
-        // Two insertions at one offset: which goes first is not defined.
-        let taken = || self.in_order.binary_search(&key).is_ok() || self.others.contains(&key);
-        reaches_in || (span.is_empty() && taken())
+    /// Every edit taken, made from `taken` (the spans of the edits taken) the first time.
+    fn all<I: Iterator<Item = Span>>(
+        &mut self,
+        taken: impl FnOnce() -> I,
+    ) -> &BTreeSet<(u32, u32)> {
+        if let Accepted::InOrder(_) = self {
+            *self = Accepted::Any(taken().map(|span| (span.start, span.end)).collect());
+        }
+        match self {
+            Accepted::Any(all) => all,
+            Accepted::InOrder(_) => unreachable!("made above"),
+        }
     }
 
-    fn add(&mut self, span: Span) {
-        let key = (span.start, span.end);
-        match self.in_order.last() {
-            Some(&last) if key <= last => {
-                self.others.insert(key);
-            }
-            _ => self.in_order.push(key),
+    fn add(&mut self, spans: &[Span]) {
+        match self {
+            Accepted::InOrder(last) => *last = spans.last().map(|s| (s.start, s.end)).or(*last),
+            Accepted::Any(all) => all.extend(spans.iter().map(|s| (s.start, s.end))),
         }
     }
 }
 
+/// Whether `spans` come each after the one before, the first after `last`: then they
+/// clash with no edit taken (which all end before `last` does), nor among themselves.
+fn follows(last: Option<(u32, u32)>, spans: &[Span]) -> bool {
+    let mut last = last;
+    spans.iter().all(|span| {
+        let key = (span.start, span.end);
+        let after = last.is_none_or(|last| key > last && span.start >= last.1);
+        last = Some(key);
+        after
+    })
+}
+
+/// Whether `span` clashes with an edit of `taken`. Since none of those overlap, their ends
+/// grow with their starts, so the one just before `span` is the only one that could reach
+/// into it.
+fn clashes(taken: &BTreeSet<(u32, u32)>, span: Span) -> bool {
+    let before = taken.range(..(span.end, span.end)).next_back();
+    let reaches_in = before.is_some_and(|&(_, end)| end > span.start);
+    // Two insertions at one offset: which goes first is not defined.
+    reaches_in || (span.is_empty() && taken.contains(&(span.start, span.end)))
+}
+
 /// Whether the edits of one fix clash among themselves (a rule's bug; the fix is skipped).
 fn clash_among(spans: &[Span]) -> bool {
-    if spans.len() < 2 {
-        return false;
-    }
-    let mut seen = Accepted::default();
-    let distinct: BTreeSet<(u32, u32)> = spans.iter().map(|s| (s.start, s.end)).collect();
-    distinct.len() != spans.len()
-        || spans.iter().any(|&span| {
-            let clash = seen.clashes(span);
-            seen.add(span);
-            clash
-        })
+    let mut seen = BTreeSet::new();
+    spans.iter().any(|&span| {
+        let clash = clashes(&seen, span);
+        !seen.insert((span.start, span.end)) || clash
+    })
 }
 
 #[cfg(test)]
@@ -509,24 +564,27 @@ mod tests {
 
     #[test]
     fn clashing_edits_wait_for_the_next_pass() {
-        let mut edits = Accepted::default();
-        edits.add(Span::new(3, 3));
-        assert!(edits.clashes(Span::new(3, 3)));
-        assert!(!edits.clashes(Span::new(3, 5)), "delete after an insertion");
+        let mut taken = BTreeSet::new();
+        taken.insert((3, 3));
+        assert!(clashes(&taken, Span::new(3, 3)));
         assert!(
-            !edits.clashes(Span::new(1, 3)),
+            !clashes(&taken, Span::new(3, 5)),
+            "delete after an insertion"
+        );
+        assert!(
+            !clashes(&taken, Span::new(1, 3)),
             "delete before an insertion"
         );
-        edits.add(Span::new(5, 9));
-        assert!(edits.clashes(Span::new(8, 10)));
-        assert!(edits.clashes(Span::new(6, 6)));
-        assert!(edits.clashes(Span::new(4, 6)));
-        assert!(!edits.clashes(Span::new(9, 9)));
-        // Taken before the last one: kept apart, and clashed with all the same.
-        edits.add(Span::new(0, 1));
-        assert!(edits.clashes(Span::new(0, 2)));
-        assert!(!edits.clashes(Span::new(1, 2)));
-        assert_eq!(edits.others.len(), 1);
+        taken.insert((5, 9));
+        assert!(clashes(&taken, Span::new(8, 10)));
+        assert!(clashes(&taken, Span::new(6, 6)));
+        assert!(clashes(&taken, Span::new(4, 6)));
+        assert!(!clashes(&taken, Span::new(9, 9)));
+        // Edits in order need no tree.
+        assert!(follows(Some((3, 3)), &[Span::new(3, 5), Span::new(5, 5)]));
+        assert!(!follows(Some((3, 3)), &[Span::new(3, 3)]));
+        assert!(!follows(Some((3, 5)), &[Span::new(4, 6)]));
+        assert!(!follows(None, &[Span::new(4, 6), Span::new(0, 1)]));
     }
 
     #[test]
