@@ -323,11 +323,18 @@ pub fn finish<'a>(
     sort_by_position(&mut diagnostics);
     fixes.sort_by_position();
     let not_kept = |rule| counts.get(rule).saturating_sub(kept_at_most(rule));
-    let suppressed = suppression::apply(source.text(), &mut diagnostics, rules, not_kept);
+    let suppression_lines = kb.lines.suppression_lines;
+    let suppressed = suppression::apply(
+        source.text(),
+        suppression_lines,
+        &mut diagnostics,
+        rules,
+        not_kept,
+    );
     for (rule, n) in suppressed.silenced {
         counts.subtract(rule, n);
     }
-    if let Some(silenced) = suppression::silencer(source.text()) {
+    if let Some(silenced) = suppression::silencer(source.text(), suppression_lines) {
         fixes.retain(|fix| !silenced(fix.rule, fix.span.start));
     }
     if suppressed.unused > 0 {

@@ -59,6 +59,11 @@ pub struct Malformed {
     pub comment: Span,
 }
 
+/// Whether `comment`, the text of a comment line, may be a suppression (well formed or not).
+pub fn may_be_one(comment: &str) -> bool {
+    memchr::memmem::find(comment.as_bytes(), MARK.as_bytes()).is_some()
+}
+
 /// The suppression comments of `text`, and those that cannot be read.
 pub fn find(text: &str) -> (Vec<Suppression>, Vec<Malformed>) {
     let (mut found, mut malformed) = (Vec::new(), Vec::new());
@@ -183,14 +188,18 @@ pub fn may_have_suppressions(text: &str) -> bool {
 /// nothing (if `rules` runs that rule). `dropped` tells how many findings of a rule were
 /// counted but not kept: a suppression of such a rule may silence one of them, so it is
 /// never called unused.
+///
+/// `lines`, if known, is how many lines [`may_be_one`] holds for: with none, the text is
+/// not read again.
 pub fn apply(
     text: &str,
+    lines: Option<u32>,
     diagnostics: &mut Vec<Diagnostic>,
     rules: &RuleSet,
     dropped: impl Fn(&'static Rule) -> usize,
 ) -> Suppressed {
     let mut suppressed = Suppressed::default();
-    if !may_have_suppressions(text) {
+    if lines == Some(0) || !may_have_suppressions(text) {
         return suppressed;
     }
     let (suppressions, malformed) = find(text);
@@ -315,9 +324,9 @@ impl Scopes {
 
 /// Whether a suppression of `text` silences a finding of a rule at an offset, asked of
 /// findings not kept as findings (the fixes `ekb fix` keeps of them); `None` if `text`
-/// has no suppression.
-pub fn silencer(text: &str) -> Option<impl Fn(&Rule, u32) -> bool + '_> {
-    if !may_have_suppressions(text) {
+/// has no suppression (`lines`: as [`apply`] takes it).
+pub fn silencer(text: &str, lines: Option<u32>) -> Option<impl Fn(&Rule, u32) -> bool + '_> {
+    if lines == Some(0) || !may_have_suppressions(text) {
         return None;
     }
     let scopes = Scopes::new(&find(text).0);

@@ -78,7 +78,7 @@ fn write_table(checked: &Checked<'_>, loaded: &Loaded<'_>, out: &mut impl Write)
         header.push("arm");
     }
     header.extend(["messages", "tour stop"]);
-    let positions = TourPositions::new(kb);
+    let positions = TourPositions::first(kb, present::MAX_LISTED);
     let row = |location: &Location<'_>| {
         let mut row = vec![
             location.id.to_string(),
@@ -97,7 +97,7 @@ fn write_table(checked: &Checked<'_>, loaded: &Loaded<'_>, out: &mut impl Write)
             );
         }
         row.push(message_marks(location));
-        row.push(tour_cell(positions.of(location.id)));
+        row.push(tour_cell(&positions, location.id));
         row
     };
     // The rows of a large file are made in parts, one per core, and drawn in order.
@@ -121,8 +121,9 @@ fn write_table(checked: &Checked<'_>, loaded: &Loaded<'_>, out: &mut impl Write)
     )
 }
 
-/// Below this many locations, the rows of the table are not worth a thread of their own.
-const MIN_ROWS_PER_PART: usize = 10_000;
+/// Below this many locations, the rows of the table are not worth a thread of their own
+/// (a row takes about 13,000 instructions; a thread, about as many as 50 rows).
+const MIN_ROWS_PER_PART: usize = 1024;
 
 /// `before EN ✓ ZU ~ RW ~` and `after` on a second line.
 fn message_marks(location: &Location<'_>) -> String {
@@ -146,15 +147,15 @@ fn message_marks(location: &Location<'_>) -> String {
 
 /// `1 (start)`, `2, 5` or `—` (not on the tour); the first positions of a location that a
 /// long tour visits over and over, then how many more.
-fn tour_cell(positions: &[usize]) -> String {
-    if positions.is_empty() {
+fn tour_cell(positions: &TourPositions, id: u32) -> String {
+    if positions.count(id) == 0 {
         return "—".to_string();
     }
-    let positions = positions.iter().map(|&position| match position {
+    let first = positions.of(id).iter().map(|&position| match position {
         1 => "1 (start)".to_string(),
         n => n.to_string(),
     });
-    present::listed(positions, ", ")
+    present::listed_of(first, positions.count(id), ", ")
 }
 
 /// `ekb locations --format json`.

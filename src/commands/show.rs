@@ -111,15 +111,16 @@ fn render(checked: &Checked<'_>, location: &Location<'_>) -> String {
 /// `stop 2 of 5 on the tour`, `stops 1 and 3 of 3 on the tour (the start and home pose)` or
 /// `not on the tour`.
 fn tour_sentence(checked: &Checked<'_>, id: u32) -> String {
-    let positions = present::TourPositions::new(&checked.kb);
+    let positions = present::TourPositions::first(&checked.kb, present::MAX_LISTED);
     let total = checked.kb.tour_stops().count();
+    let count = positions.count(id);
     let positions = positions.of(id);
     let mut sentence = match positions {
         [] => return "not on the tour".to_string(),
         [one] => format!("stop {one} of {total} on the tour"),
-        many if many.len() > present::MAX_LISTED => format!(
+        many if count > present::MAX_LISTED => format!(
             "stops {} of {total} on the tour",
-            present::listed(many.iter(), ", ")
+            present::listed_of(many.iter(), count, ", ")
         ),
         [init @ .., last] => {
             let init: Vec<String> = init.iter().map(usize::to_string).collect();

@@ -221,7 +221,10 @@ impl<'a> Builder<'a> {
             last: None,
             tour: None,
             first_pose_key: [None, None],
-            facts: LineFacts::default(),
+            facts: LineFacts {
+                suppression_lines: Some(0),
+                ..LineFacts::default()
+            },
             rejected: HashMap::new(),
             miscased: IdMap::default(),
         };
@@ -355,6 +358,11 @@ impl<'a> Builder<'a> {
     fn line(&mut self, line: &Line, out: &mut impl LineFindings) {
         self.facts.note_length(line, self.text);
         out.line(line, self.text);
+        if let Body::Comment(comment) = line.body {
+            if crate::suppression::may_be_one(self.lexed(comment)) {
+                *self.facts.suppression_lines.get_or_insert(0) += 1;
+            }
+        }
         if let Body::Entry { key, args } = line.body {
             if syntax::is_c_space_only(&self.text.as_bytes()[key.start as usize..args.end as usize])
             {
@@ -975,6 +983,24 @@ mod tests {
     }
 
     #[test]
+    fn comment_lines_that_may_be_suppressions_are_counted_in_every_part() {
+        let lines = "# ekb: ignore[unknown-key]\n# a comment\n\trobotLocation 1 1 2 3\n";
+        let text = lines.repeat(3 * parallel::MIN_BYTES_PER_PART / lines.len());
+        let expected = Some((text.len() / lines.len()) as u32);
+        for parts in 1..=3 {
+            let kb = build_in_parts(&text, &Options::default(), parts, &mut Trace::default());
+            assert_eq!(kb.lines.suppression_lines, expected, "{parts} parts");
+        }
+        let kb = build(
+            "# nothing\nrobotLocation 1 1 2 3\n",
+            &Options::default(),
+            &mut Trace::default(),
+        );
+        assert_eq!(kb.lines.suppression_lines, Some(0));
+        assert_eq!(KnowledgeBase::default().lines.suppression_lines, None);
+    }
+
+    #[test]
     fn a_shared_part_is_cut_after_the_line_in_its_middle() {
         let line = "robotLocation 1 2.0 3.0 4\n";
         let text = line.repeat(3 * parallel::MIN_BYTES_PER_PART / line.len());
@@ -1013,6 +1039,7 @@ mod tests {
         "tourSpecification 2 # 1",
         "tourSpecification x",
         "# a comment",
+        "  # ekb: ignore[unknown-key]",
         "",
         "robotLocationDescription 0 no id",
         "robotLocationDescription # be\u{7}ll",

@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize, Serializer};
 use crate::model::{
     Arm, Dialect, KnowledgeBase, Language, Location, Locations, Phase, Point, Pose,
 };
+use crate::render::safe_json::InParts;
 
 /// A whole knowledge base as JSON.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
@@ -110,8 +111,12 @@ impl<'k, 'a> ExportView<'k, 'a> {
     }
 }
 
-fn locations_view<S: Serializer>(locations: &Locations<'_>, out: S) -> Result<S::Ok, S::Error> {
-    out.collect_seq(locations.iter().map(LocationView::new))
+fn locations_view<'a, S: Serializer>(locations: &Locations<'a>, out: S) -> Result<S::Ok, S::Error> {
+    let locations: Vec<&Location<'a>> = locations.iter().collect();
+    InParts::new(&locations, |location: &&Location<'a>| {
+        LocationView::new(location)
+    })
+    .serialize(out)
 }
 
 /// [`ExportedLocation`], borrowed from the model: the same fields, in the same order.

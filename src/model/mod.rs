@@ -277,6 +277,9 @@ pub struct LineFacts {
     /// Lines shorter than every reader's line buffer whose first word is as long as the
     /// reader's key buffer or longer, in file order (the longer lines are in `long_lines`).
     pub long_first_words: Vec<Span>,
+    /// How many comment lines mention `ekb:`, the lines a suppression can be on; `None` if
+    /// the knowledge base was not read from its lines (then any line may hold one).
+    pub suppression_lines: Option<u32>,
 }
 
 impl LineFacts {
@@ -306,6 +309,10 @@ impl LineFacts {
         self.long_lines.extend(later.long_lines);
         self.indented_lines.extend(later.indented_lines);
         self.long_first_words.extend(later.long_first_words);
+        self.suppression_lines = match (self.suppression_lines, later.suppression_lines) {
+            (Some(these), Some(those)) => Some(these + those),
+            _ => None,
+        };
     }
 }
 

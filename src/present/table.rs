@@ -4,6 +4,8 @@ use std::io::{self, Write};
 
 use comfy_table::{presets, ContentArrangement, Table};
 
+use crate::parallel;
+
 /// A table that fits the terminal: comfy-table measures it when standard output is one;
 /// `COLUMNS` sets the width otherwise (and wins, as for other tools).
 pub fn new(header: &[&str]) -> Table {
@@ -33,11 +35,23 @@ pub struct Rows {
 }
 
 /// Cells, row after row, one after the other in one string.
-#[derive(Default)]
 struct Cells {
     text: String,
     /// Where each cell ends in `text` (4 bytes, not 8: a table may have a million cells).
     ends: Vec<u32>,
+    /// The width of each column's widest line so far (measured as the rows are added, on
+    /// the core that makes them), or `None` once a line's width is not known.
+    widths: Option<Vec<usize>>,
+}
+
+impl Cells {
+    fn new(columns: usize, rows: usize) -> Cells {
+        Cells {
+            text: String::new(),
+            ends: Vec::with_capacity(rows * columns),
+            widths: Some(vec![1; columns]),
+        }
+    }
 }
 
 /// The most text one [`Cells`] holds before the next row starts another, so that the ends of
@@ -51,10 +65,7 @@ impl Rows {
 
     /// A table with room for `rows` rows' cells.
     pub fn with_capacity(header: &[&str], rows: usize) -> Rows {
-        let cells = Cells {
-            text: String::new(),
-            ends: Vec::with_capacity(rows * header.len()),
-        };
+        let cells = Cells::new(header.len(), rows);
         Rows {
             header: header.iter().map(|cell| cell.to_string()).collect(),
             parts: vec![cells],
@@ -78,14 +89,21 @@ impl Rows {
             .last()
             .is_none_or(|part| part.text.len() >= MOST_TEXT_IN_CELLS)
         {
-            self.parts.push(Cells::default());
+            self.parts.push(Cells::new(self.header.len(), 0));
         }
         let part = self.parts.last_mut().expect("a part was just made");
         let before = part.ends.len();
-        for cell in cells {
-            part.text.push_str(cell.as_ref());
+        for (column, cell) in cells.into_iter().enumerate() {
+            let cell = cell.as_ref();
+            part.text.push_str(cell);
             let end = u32::try_from(part.text.len()).expect("a row is less than 2 GiB");
             part.ends.push(end);
+            if let Some(widths) = &mut part.widths {
+                match widest_line(cell) {
+                    Some(width) => widths[column] = widths[column].max(width),
+                    None => part.widths = None,
+                }
+            }
         }
         assert_eq!(
             part.ends.len() - before,
@@ -110,45 +128,39 @@ impl Rows {
 
     /// The cells of each row.
     fn rows(&self) -> impl Iterator<Item = impl Iterator<Item = &str> + '_> + '_ {
-        let columns = self.header.len();
         self.parts.iter().flat_map(move |part| {
-            part.ends
-                .chunks(columns)
-                .enumerate()
-                .map(move |(row, ends)| {
-                    let first = row * columns;
-                    let mut start = if first == 0 {
-                        0
-                    } else {
-                        part.ends[first - 1] as usize
-                    };
-                    ends.iter().map(move |&end| {
-                        let end = end as usize;
-                        let cell = &part.text[start..end];
-                        start = end;
-                        cell
-                    })
-                })
+            let rows = part.ends.len() / self.header.len();
+            (0..rows).map(move |row| self.row(part, row))
+        })
+    }
+
+    /// The cells of row `row` of `part`.
+    fn row<'r>(&'r self, part: &'r Cells, row: usize) -> impl Iterator<Item = &'r str> + 'r {
+        let columns = self.header.len();
+        let first = row * columns;
+        let mut start = match first {
+            0 => 0,
+            _ => part.ends[first - 1] as usize,
+        };
+        part.ends[first..first + columns].iter().map(move |&end| {
+            let end = end as usize;
+            let cell = &part.text[start..end];
+            start = end;
+            cell
         })
     }
 
     /// The width of each column's widest line (at least 1, as comfy-table makes it), or
     /// `None` if a line's width is not known.
     fn widths(&self) -> Option<Vec<usize>> {
-        let mut widths = vec![1; self.header.len()];
-        let header = self.header.iter().map(String::as_str);
-        let widen = |widths: &mut Vec<usize>, column: usize, cell: &str| {
-            for line in cell.split('\n') {
-                widths[column] = widths[column].max(width(line)?);
-            }
-            Some(())
-        };
-        for (column, cell) in header.enumerate() {
-            widen(&mut widths, column, cell)?;
-        }
-        for row in self.rows() {
-            for (column, cell) in row.enumerate() {
-                widen(&mut widths, column, cell)?;
+        let header = self
+            .header
+            .iter()
+            .map(|cell| widest_line(cell).map(|w| w.max(1)));
+        let mut widths = header.collect::<Option<Vec<_>>>()?;
+        for part in &self.parts {
+            for (widest, &width) in widths.iter_mut().zip(part.widths.as_ref()?) {
+                *widest = (*widest).max(width);
             }
         }
         Some(widths)
@@ -164,18 +176,46 @@ impl Rows {
         out.write_all(&drawn)?;
         out.write_all(b"\n")?;
         write_border(out, widths, ["╞", "═", "╪", "╡"])?;
-        let mut cells = Vec::with_capacity(self.header.len());
-        let mut drawn = Vec::new();
-        for row in self.rows() {
-            cells.clear();
-            cells.extend(row);
-            drawn.clear();
-            draw_row(&mut drawn, widths, &cells);
-            out.write_all(&drawn)?;
+        // The rows are drawn a batch at a time, each batch in parts (one per core), and
+        // written in order: drawing 100,000 rows on one core took as long as making them.
+        let columns = self.header.len();
+        let batches = self.parts.iter().flat_map(|part| {
+            let rows = part.ends.len() / columns;
+            (0..rows)
+                .step_by(ROWS_PER_BATCH)
+                .map(move |start| (part, start..rows.min(start + ROWS_PER_BATCH)))
+        });
+        for (part, batch) in batches {
+            let ranges = parallel::item_ranges(batch.len(), MIN_ROWS_PER_PART);
+            let drawn = parallel::map_ranges(ranges, |range| {
+                let mut cells = Vec::with_capacity(columns);
+                let mut drawn = Vec::new();
+                for row in batch.start + range.start..batch.start + range.end {
+                    cells.clear();
+                    cells.extend(self.row(part, row));
+                    draw_row(&mut drawn, widths, &cells);
+                }
+                drawn
+            });
+            for part in drawn {
+                out.write_all(&part)?;
+            }
         }
         out.write_all(b"\n")?;
         write_border(out, widths, ["└", "─", "┴", "┘"])
     }
+}
+
+/// How many rows are drawn before they are written.
+const ROWS_PER_BATCH: usize = 4096;
+
+/// Below this many rows of a batch, a part is not worth a thread.
+const MIN_ROWS_PER_PART: usize = 1024;
+
+/// The width of the widest line of `cell`, if [`width`] knows every line's.
+fn widest_line(cell: &str) -> Option<usize> {
+    cell.split('\n')
+        .try_fold(0, |widest, line| Some(widest.max(width(line)?)))
 }
 
 /// A border line: `left`, `line` across each column, `middle` between columns, `right`.
@@ -313,6 +353,27 @@ mod tests {
         let joined = Rows::join(parts.collect()).unwrap();
         assert_eq!(plain(&joined), plain(&whole));
         assert!(Rows::join(Vec::new()).is_none());
+    }
+
+    #[test]
+    fn a_large_table_is_drawn_in_parts_as_row_after_row() {
+        let header = ["id", "text"];
+        let count = ROWS_PER_BATCH + 3 * MIN_ROWS_PER_PART + 5;
+        let rows: Vec<[String; 2]> = (0..count)
+            .map(|i| [i.to_string(), "é\n".repeat(i % 3)])
+            .collect();
+        let mut table = Rows::new(&header);
+        for row in &rows {
+            table.add_row(row);
+        }
+        let widths = table.widths().unwrap();
+        assert_eq!(widths, [count.to_string().len(), "text".len()]);
+        let mut drawn = Vec::new();
+        for row in &rows {
+            draw_row(&mut drawn, &widths, &[&row[0], &row[1]]);
+        }
+        let drawn = String::from_utf8(drawn).unwrap();
+        assert!(plain(&table).contains(&format!("╡{drawn}\n└")));
     }
 
     #[test]

@@ -12,7 +12,7 @@ use super::line::LoadedValue;
 use super::load::{Loaded, LoadedLocation};
 use super::view::shortest;
 use crate::model::{Dialect, Key, Language, Phase};
-use crate::parallel;
+use crate::render::safe_json::InParts;
 
 /// The whole of what the robot holds.
 #[derive(Debug, Serialize)]
@@ -27,35 +27,22 @@ pub struct LoadedExport<'a> {
     pub tour: Option<Vec<Option<i32>>>,
 }
 
-/// Every location, made as it is written, a batch at a time (each batch in parts, one per
-/// core): a file of 100,000 locations would otherwise hold all of them at once, as large as
-/// the file, and read every field's line again on one core.
+/// Every location, made as it is written ([`InParts`]): a file of 100,000 locations would
+/// otherwise hold all of them at once, as large as the file, and read every field's line
+/// again on one core.
 #[derive(Debug)]
 pub struct LoadedLocations<'a> {
     loaded: &'a Loaded<'a>,
 }
 
-/// How many locations are made before they are written.
-const BATCH: usize = 8192;
-
-/// Below this many locations of a batch, a part is not worth a thread.
-const MIN_PER_PART: usize = 1024;
-
 impl Serialize for LoadedLocations<'_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let loaded = self.loaded;
         let locations = loaded.locations.values().as_slice();
-        let batches = locations.chunks(BATCH).flat_map(|batch| {
-            let ranges = parallel::item_ranges(batch.len(), MIN_PER_PART);
-            parallel::map_ranges(ranges, |range| {
-                let made = batch[range].iter();
-                made.map(|location| LoadedLocationExport::new(location, loaded, loaded.text()))
-                    .collect::<Vec<_>>()
-            })
-            .into_iter()
-            .flatten()
-        });
-        serializer.collect_seq(batches)
+        let make = |location: &LoadedLocation<'_>| {
+            LoadedLocationExport::new(location, loaded, loaded.text())
+        };
+        InParts::new(locations, make).serialize(serializer)
     }
 }
 

@@ -1,15 +1,15 @@
 //! Masks of sixteen bytes at once: bit `i` says something of byte `i` of a chunk.
 //!
 //! The lexer's short searches (a line's newline, where its key ends and its arguments
-//! start) and `repeated-word`'s tokens read a mask or a few, where a loop over bytes or
+//! start), `repeated-word`'s tokens and the translation rules' words read a mask or a few, where a loop over bytes or
 //! eight-byte words, or a call to `memchr`, costs more (measured). With SSE2, which every
 //! x86_64 processor has, a mask is a handful of instructions; elsewhere it is made from the
 //! eight-byte words of [`super::swar`].
 
 #[cfg(not(target_arch = "x86_64"))]
-pub use portable::{blanks, equal, non_ascii};
+pub use portable::{blanks, equal, letters, non_ascii};
 #[cfg(target_arch = "x86_64")]
-pub use sse2::{blanks, equal, non_ascii};
+pub use sse2::{blanks, equal, letters, non_ascii};
 
 use super::swar;
 
@@ -46,7 +46,8 @@ pub fn blanks_and_ascii(bytes: &[u8]) -> (u64, bool) {
 #[cfg(target_arch = "x86_64")]
 mod sse2 {
     use std::arch::x86_64::{
-        __m128i, _mm_cmpeq_epi8, _mm_loadu_si128, _mm_movemask_epi8, _mm_or_si128, _mm_set1_epi8,
+        __m128i, _mm_cmpeq_epi8, _mm_loadu_si128, _mm_min_epu8, _mm_movemask_epi8, _mm_or_si128,
+        _mm_set1_epi8, _mm_sub_epi8,
     };
 
     // SAFETY (each `unsafe` below): SSE2 is enabled on every x86_64 target, and a load
@@ -81,6 +82,19 @@ mod sse2 {
     pub fn non_ascii(chunk: &[u8; 16]) -> u32 {
         unsafe { _mm_movemask_epi8(load(chunk)) as u32 }
     }
+
+    /// Bit `i` is set if byte `i` is an ASCII letter.
+    #[inline(always)]
+    pub fn letters(chunk: &[u8; 16]) -> u32 {
+        // Lowercase (a byte that is no letter stays no letter), then `'a'..='z'` is
+        // `0..=25` after subtracting `'a'`, with no signed compare in SSE2: `min(x, 25) == x`.
+        unsafe {
+            let lower = _mm_or_si128(load(chunk), _mm_set1_epi8(0x20));
+            let from_a = _mm_sub_epi8(lower, _mm_set1_epi8(b'a' as i8));
+            let letters = _mm_cmpeq_epi8(_mm_min_epu8(from_a, _mm_set1_epi8(25)), from_a);
+            _mm_movemask_epi8(letters) as u32
+        }
+    }
 }
 
 // Also compiled for the tests on x86_64, which compare it with the other.
@@ -113,6 +127,13 @@ mod portable {
     pub fn non_ascii(chunk: &[u8; 16]) -> u32 {
         mask(chunk, non_ascii_bytes)
     }
+
+    /// Bit `i` is set if byte `i` is an ASCII letter.
+    pub fn letters(chunk: &[u8; 16]) -> u32 {
+        (0..16).fold(0, |mask, i| {
+            mask | u32::from(chunk[i].is_ascii_alphabetic()) << i
+        })
+    }
 }
 
 #[cfg(test)]
@@ -144,11 +165,13 @@ mod tests {
                 assert_eq!(portable::equal(&chunk, byte), equal(&chunk, byte));
                 assert_eq!(portable::blanks(&chunk), blanks(&chunk));
                 assert_eq!(portable::non_ascii(&chunk), non_ascii(&chunk));
+                assert_eq!(portable::letters(&chunk), letters(&chunk));
                 for i in 0..16 {
                     assert_eq!(bit(equal(&chunk, b'\n'), i), chunk[i] == b'\n');
                     assert_eq!(bit(equal(&chunk, byte), i), chunk[i] == byte);
                     assert_eq!(bit(blanks(&chunk), i), is_blank(chunk[i]));
                     assert_eq!(bit(non_ascii(&chunk), i), !chunk[i].is_ascii());
+                    assert_eq!(bit(letters(&chunk), i), chunk[i].is_ascii_alphabetic());
                 }
                 assert!(blanks(&chunk) < 1 << 16 && non_ascii(&chunk) < 1 << 16);
             }

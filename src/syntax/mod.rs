@@ -11,7 +11,7 @@ mod line;
 pub(crate) mod masks;
 mod newline;
 mod span;
-mod swar;
+pub(crate) mod swar;
 
 pub use line::{lines, lines_from, Body, Line, LineEnding, Lines, BOM};
 pub use span::{floor_char_boundary, Span};

@@ -119,12 +119,12 @@ impl<'a> Catalog<'a> {
         let mut units = Vec::with_capacity(kb.locations().len() * 2);
         for location in kb.locations().iter() {
             let mut checks: HashMap<(Phase, Language), Vec<&'static Rule>> = HashMap::new();
-            for message in translation::Message::all_of(location) {
+            translation::Message::each_of(location, |message| {
                 let mut found = Diagnostics::default();
                 translation::check_message(&message, &mut found);
                 let rules = found.iter().map(|finding| finding.rule).collect();
                 checks.insert((message.phase, message.language), rules);
-            }
+            });
             for phase in Phase::ALL {
                 let source = match location.message(phase, Language::English) {
                     Some(english) => Some(Source {

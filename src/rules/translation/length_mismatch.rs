@@ -1,3 +1,4 @@
+use super::scan::Scan;
 use super::Message;
 use crate::check::Diagnostics;
 use crate::rules::declare_rule;
@@ -31,8 +32,8 @@ declare_rule! {
 }
 
 /// How many characters `text` has (its length, for the ASCII text most messages are).
-fn characters(text: &str) -> usize {
-    match text.is_ascii() {
+fn characters(text: &str, ascii: bool) -> usize {
+    match ascii {
         true => text.len(),
         false => text.chars().count(),
     }
@@ -41,11 +42,12 @@ fn characters(text: &str) -> usize {
 /// How many times shorter or longer than its English a translation may be.
 const RATIO: usize = 3;
 
-pub fn check(message: &Message<'_>, out: &mut Diagnostics) {
+pub fn check(message: &Message<'_>, scan: &Scan, out: &mut Diagnostics) {
     let Some(english) = message.english else {
         return;
     };
-    let (english_length, length) = (characters(english.value), characters(message.text.value));
+    let english_length = characters(english.value, english.value.is_ascii());
+    let length = characters(message.text.value, scan.ascii);
     let too_short = length * RATIO < english_length;
     let too_long = length > english_length * RATIO;
     if !(too_short || too_long) {

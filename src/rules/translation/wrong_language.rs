@@ -1,3 +1,4 @@
+use super::scan::Scan;
 use super::Message;
 use crate::check::Diagnostics;
 use crate::model::Language;
@@ -32,92 +33,98 @@ declare_rule! {
     };
 }
 
-/// Whether `word` is a common English word that is no word of isiZulu or Kinyarwanda.
-/// Left out on purpose: `a`, `i`, `me`, `no`, `we` (words, or parts written apart, of those
-/// languages). Run on every word of every translation: a `match`, not a search of a list.
-fn is_common_english(bytes: &[u8]) -> bool {
-    // The longest is 7 letters: most words of a translation are longer.
-    if !(2..=7).contains(&bytes.len()) {
-        return false;
+/// The lengths of the common English words: most words of a translation are longer.
+const ENGLISH_LENGTHS: std::ops::RangeInclusive<usize> = 2..=7;
+
+/// Scans `message` for every translation rule, counting its common English words if it is
+/// a translation.
+pub(super) fn scan(message: &Message<'_>) -> Scan {
+    let lengths = match message.language {
+        // No word is 0 bytes long: none is looked up.
+        Language::English => 0..=0,
+        _ => ENGLISH_LENGTHS,
+    };
+    Scan::of(message.text.value, lengths, is_common_english)
+}
+
+/// Whether `word` (of [`ENGLISH_LENGTHS`], as [`Scan::of`] packs it) is a common English
+/// word that is no word of isiZulu or Kinyarwanda. Left out on purpose: `a`, `i`, `me`, `no`,
+/// `we` (words, or parts written apart, of those languages). Asked of most words of every
+/// translation: one look in a table, nearly always.
+fn is_common_english(word: u64) -> bool {
+    // Lowercase: `| 0x20` lowercases a letter, and leaves a non-ASCII byte non-ASCII, so that
+    // it matches no word of the list.
+    let lower = word | lowercase_bits(word);
+    let mut slot = slot_of(lower);
+    loop {
+        match COMMON_ENGLISH[slot] {
+            0 => return false,
+            found if found == lower => return true,
+            _ => slot = (slot + 1) % COMMON_ENGLISH.len(),
+        }
     }
-    let mut lower = [0u8; 8];
-    for (to, from) in lower.iter_mut().zip(bytes) {
-        *to = from.to_ascii_lowercase();
+}
+
+/// `0x20` in each byte of `word` that is not zero.
+fn lowercase_bits(word: u64) -> u64 {
+    let bytes = 8 - word.leading_zeros() as usize / 8;
+    u64::from_le_bytes([0x20; 8]) >> (8 * (8 - bytes))
+}
+
+/// Where the search for `word` starts in [`COMMON_ENGLISH`].
+const fn slot_of(word: u64) -> usize {
+    (word.wrapping_mul(0x9e37_79b9_7f4a_7c15) >> (64 - COMMON_ENGLISH_SLOTS.trailing_zeros()))
+        as usize
+}
+
+const COMMON_ENGLISH_SLOTS: usize = 256;
+
+/// The common English words, each as one number ([`packed`]), in a table of open addressing
+/// (linear probing; an empty slot is 0), four times as large as the list so that a search
+/// for a word not in it ends at once, nearly always.
+const COMMON_ENGLISH: [u64; COMMON_ENGLISH_SLOTS] = {
+    let mut table = [0; COMMON_ENGLISH_SLOTS];
+    let mut i = 0;
+    while i < COMMON_ENGLISH_WORDS.len() {
+        let word = packed(COMMON_ENGLISH_WORDS[i]);
+        let mut slot = slot_of(word);
+        while table[slot] != 0 {
+            slot = (slot + 1) % COMMON_ENGLISH_SLOTS;
+        }
+        table[slot] = word;
+        i += 1;
     }
-    matches!(
-        &lower[..bytes.len()],
-        b"about"
-            | b"again"
-            | b"all"
-            | b"an"
-            | b"and"
-            | b"are"
-            | b"as"
-            | b"at"
-            | b"be"
-            | b"by"
-            | b"can"
-            | b"do"
-            | b"enjoy"
-            | b"enjoyed"
-            | b"for"
-            | b"from"
-            | b"goodbye"
-            | b"has"
-            | b"have"
-            | b"hello"
-            | b"here"
-            | b"hope"
-            | b"how"
-            | b"in"
-            | b"is"
-            | b"it"
-            | b"its"
-            | b"like"
-            | b"my"
-            | b"of"
-            | b"on"
-            | b"or"
-            | b"our"
-            | b"please"
-            | b"see"
-            | b"soon"
-            | b"thank"
-            | b"thanks"
-            | b"that"
-            | b"the"
-            | b"their"
-            | b"there"
-            | b"these"
-            | b"they"
-            | b"this"
-            | b"those"
-            | b"to"
-            | b"tour"
-            | b"us"
-            | b"use"
-            | b"was"
-            | b"welcome"
-            | b"were"
-            | b"what"
-            | b"which"
-            | b"who"
-            | b"will"
-            | b"with"
-            | b"would"
-            | b"you"
-            | b"your"
-    )
+    table
+};
+
+const COMMON_ENGLISH_WORDS: [&[u8]; 61] = [
+    b"about", b"again", b"all", b"an", b"and", b"are", b"as", b"at", b"be", b"by", b"can", b"do",
+    b"enjoy", b"enjoyed", b"for", b"from", b"goodbye", b"has", b"have", b"hello", b"here", b"hope",
+    b"how", b"in", b"is", b"it", b"its", b"like", b"my", b"of", b"on", b"or", b"our", b"please",
+    b"see", b"soon", b"thank", b"thanks", b"that", b"the", b"their", b"there", b"these", b"they",
+    b"this", b"those", b"to", b"tour", b"us", b"use", b"was", b"welcome", b"were", b"what",
+    b"which", b"who", b"will", b"with", b"would", b"you", b"your",
+];
+
+/// A word of at most 8 bytes as one number.
+const fn packed(word: &[u8]) -> u64 {
+    let mut bytes = [0; 8];
+    let mut i = 0;
+    while i < word.len() {
+        bytes[i] = word[i];
+        i += 1;
+    }
+    u64::from_le_bytes(bytes)
 }
 
 /// At least this many English words, and at least two in five of all words.
 const MIN_ENGLISH_WORDS: usize = 2;
 
-pub fn check(message: &Message<'_>, out: &mut Diagnostics) {
+pub fn check(message: &Message<'_>, scan: &Scan, out: &mut Diagnostics) {
     if message.language == Language::English {
         return;
     }
-    let (english, words) = english_words(message.text.value);
+    let (english, words) = (scan.words_found, scan.words);
     if english < MIN_ENGLISH_WORDS || english * 5 < words * 2 {
         return;
     }
@@ -141,42 +148,14 @@ pub fn check(message: &Message<'_>, out: &mut Diagnostics) {
     });
 }
 
-/// How many of the words of `text` are common English words, and how many words it has.
-/// A word is a run of letters and of non-ASCII characters (split at ASCII bytes only, as
-/// every common English word is ASCII: run on every translation, it reads bytes, not
-/// characters).
-fn english_words(text: &str) -> (usize, usize) {
-    /// Letters, and the bytes of non-ASCII characters.
-    const IN_WORD: [bool; 256] = {
-        let mut in_word = [false; 256];
-        let mut byte = 0;
-        while byte < 256 {
-            in_word[byte] = (byte as u8).is_ascii_alphabetic() || byte >= 0x80;
-            byte += 1;
-        }
-        in_word
-    };
-    let bytes = text.as_bytes();
-    let (mut english, mut words, mut at) = (0, 0, 0);
-    while at < bytes.len() {
-        while at < bytes.len() && !IN_WORD[bytes[at] as usize] {
-            at += 1;
-        }
-        let start = at;
-        while at < bytes.len() && IN_WORD[bytes[at] as usize] {
-            at += 1;
-        }
-        if at > start {
-            words += 1;
-            english += usize::from(is_common_english(&bytes[start..at]));
-        }
-    }
-    (english, words)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn english_words(text: &str) -> (usize, usize) {
+        let scan = Scan::of(text, ENGLISH_LENGTHS, is_common_english);
+        (scan.words_found, scan.words)
+    }
 
     #[test]
     fn counts_english_words() {
