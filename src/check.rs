@@ -9,7 +9,8 @@
 //! output stays bounded whatever the input. Of a rule that `ekb fix` can fix, up to
 //! [`MAX_KEPT_PER_RULE`] are kept, so that one run of `fix` applies that many fixes.
 
-use crate::diagnostic::{Diagnostic, RuleCount, Summary};
+use crate::diagnostic::{Diagnostic, Edit, RuleCount, Summary};
+use crate::fix_list::FixList;
 use crate::map::LabMap;
 use crate::model::build::{build, Options, Unheeded};
 use crate::model::KnowledgeBase;
@@ -18,6 +19,7 @@ use crate::rules::selection::{RuleSelector, RuleSet};
 use crate::rules::{self, compat, structure, Rule};
 use crate::source::SourceFile;
 use crate::suppression;
+use crate::syntax::Span;
 
 /// The most findings of one rule shown for one file; the rest are summed up in a note.
 pub const MAX_SHOWN_PER_RULE: usize = 1000;
@@ -70,6 +72,9 @@ pub struct Checked<'a> {
     counts: RuleCounts,
     /// The rules that ran, and their severities.
     rules: RuleSet,
+    /// Of a [`check_for_fix`], the fix of every finding, kept or not, in the order of the
+    /// findings; empty otherwise.
+    pub fixes: FixList,
 }
 
 impl Checked<'_> {
@@ -98,6 +103,23 @@ impl Checked<'_> {
             }
         }
         summary
+    }
+
+    /// This check as it would be without the rules that `ignored` selects, or `None` if
+    /// that cannot be told without checking again: a suppression comment in the file may
+    /// name them (one that silences nothing is only an `unused-suppression` finding while
+    /// the rules it names run).
+    pub fn ignoring(mut self, ignored: &[RuleSelector]) -> Option<Self> {
+        if suppression::may_have_suppressions(self.source.text()) {
+            return None;
+        }
+        let kept = |rule: &Rule| !ignored.iter().any(|selector| selector.matches(rule));
+        self.diagnostics.retain(|d| kept(d.rule));
+        self.omitted.retain(|d| kept(d.rule));
+        self.counts.0.retain(|(rule, _)| kept(rule));
+        self.fixes.retain(|fix| kept(fix.rule));
+        self.rules.ignore(ignored);
+        Some(self)
     }
 
     pub fn has_errors(&self) -> bool {
@@ -201,20 +223,18 @@ pub fn check_on_map<'a>(
     check_verified(source, options, rules, Diagnostics::default(), map)
 }
 
-/// [`check_with`], keeping every finding of a fixable rule, not the first
-/// [`MAX_KEPT_PER_RULE`]: for `ekb fix`, which then applies every fix in one pass over the
-/// file, however many there are (a pass for each ten thousand made a million fixes
-/// quadratic). Past the first [`MAX_KEPT_PER_RULE`], a finding keeps its fix and no words
-/// (its message, help and labels are empty): the memory it takes grows with the number of
-/// fixes, as the edits do. The map rules do not run (none has a fix), so a suppression of
-/// theirs is never unused here, and never removed.
+/// [`check_with`], and the fix of every finding in [`Checked::fixes`], not only of those
+/// kept: for `ekb fix`, which then applies every fix in one pass over the file, however
+/// many there are (a pass for each ten thousand made a million fixes quadratic). A fix
+/// takes a few dozen bytes there, a finding hundreds. The map rules do not run (none has a
+/// fix), so a suppression of theirs is never unused here, and never removed.
 pub fn check_for_fix<'a>(
     source: &'a SourceFile,
     options: &Options,
     rules: &RuleSet,
 ) -> Checked<'a> {
     let out = Diagnostics {
-        keep_every_fix: true,
+        fixes: Some(FixList::default()),
         ..Diagnostics::default()
     };
     check_verified(source, options, rules, out, None)
@@ -229,12 +249,7 @@ fn check_verified<'a>(
     map: Option<&LabMap>,
 ) -> Checked<'a> {
     let mut checked = check_unverified(source, options, rules, out, map);
-    verify_fixes(
-        &mut checked.diagnostics,
-        source.text(),
-        options,
-        checked.reader,
-    );
+    verify_fixes(&mut checked, options);
     checked
 }
 
@@ -306,14 +321,18 @@ pub fn finish<'a>(
     let Diagnostics {
         kept: mut diagnostics,
         mut counts,
-        keep_every_fix,
+        fixes,
     } = found;
+    let finds_fixes = fixes.is_some();
+    let mut fixes = fixes.unwrap_or_default();
     if !rules.is_default() {
         diagnostics.retain(|d| rules.is_enabled(d.rule));
         counts.0.retain(|(rule, _)| rules.is_enabled(rule));
+        fixes.retain(|fix| rules.is_enabled(fix.rule));
     }
     sort_by_position(&mut diagnostics);
-    let not_kept = |rule| counts.get(rule).saturating_sub(cap(rule, keep_every_fix));
+    fixes.sort_by_position();
+    let not_kept = |rule| counts.get(rule).saturating_sub(kept_at_most(rule));
     let suppression_lines = kb.lines.suppression_lines;
     let suppressed = suppression::apply(
         source.text(),
@@ -325,10 +344,22 @@ pub fn finish<'a>(
     for (rule, n) in suppressed.silenced {
         counts.subtract(rule, n);
     }
+    if let Some(silenced) = suppression::silencer(source.text(), suppression_lines) {
+        fixes.retain(|fix| !silenced(fix.rule, fix.span.start));
+    }
     if suppressed.unused > 0 {
         let unused = &structure::unused_suppression::UNUSED_SUPPRESSION;
         counts.add(unused, suppressed.unused);
         sort_by_position(&mut diagnostics);
+        if finds_fixes {
+            // Their fixes, which remove what silences nothing, are fixes too.
+            for d in diagnostics.iter().filter(|d| std::ptr::eq(d.rule, unused)) {
+                if let Some(fix) = &d.fix {
+                    fixes.push(d.rule, d.span, fix.is_safe(), fix.edits.clone());
+                }
+            }
+            fixes.sort_by_position();
+        }
     }
     if !rules.is_default() {
         for diagnostic in &mut diagnostics {
@@ -347,6 +378,7 @@ pub fn finish<'a>(
         omitted,
         counts,
         rules: rules.clone(),
+        fixes,
     }
 }
 
@@ -354,24 +386,28 @@ pub fn finish<'a>(
 /// plain one) whose line, once fixed, the robot's `reader` would still misread where the
 /// fix changed it: the fixed line, checked alone, has an error there about how the robot
 /// reads it (`-2.5` as a pose's first number loses its minus on the robot).
-fn verify_fixes(diagnostics: &mut [Diagnostic], text: &str, options: &Options, reader: Reader) {
-    let guesses = |d: &Diagnostic| {
-        let unicode_space = &structure::unicode_space::UNICODE_SPACE;
-        d.fix
-            .as_ref()
-            .is_some_and(|fix| !fix.is_safe() || std::ptr::eq(d.rule, unicode_space))
+fn verify_fixes(checked: &mut Checked<'_>, options: &Options) {
+    let guesses = |rule: &Rule, safe: bool| {
+        !safe || std::ptr::eq(rule, &structure::unicode_space::UNICODE_SPACE)
     };
+    let text = checked.source.text();
     let options = Options {
-        reader: Some(reader),
+        reader: Some(checked.reader),
         verbose: false,
         ..*options
     };
-    for diagnostic in diagnostics.iter_mut().filter(|d| guesses(d)) {
-        let fix = diagnostic.fix.as_ref().expect("a fix");
-        if misread_once_fixed(text, &fix.edits, &options) {
+    for diagnostic in &mut checked.diagnostics {
+        let misread = diagnostic.fix.as_ref().is_some_and(|fix| {
+            guesses(diagnostic.rule, fix.is_safe())
+                && misread_once_fixed(text, &fix.edits, &options)
+        });
+        if misread {
             diagnostic.fix = None;
         }
     }
+    checked.fixes.retain(|fix| {
+        !(guesses(fix.rule, fix.safe) && misread_once_fixed(text, &fix.to_edits(), &options))
+    });
 }
 
 /// Whether the line of `edits`, once they are applied, has an error about how the robot
@@ -430,22 +466,14 @@ fn misread_once_fixed(text: &str, edits: &[crate::diagnostic::Edit], options: &O
 /// any input. A rule that can find something on every line or location makes its findings
 /// through [`Diagnostics::push_with`], so that those past the cap are never even built
 /// (formatting 100,000 `unused-location` messages to drop 90,000 of them was a tenth of the
-/// time of a check; `unknown-key` computes an edit distance to every key).
+/// time of a check; `unknown-key` computes an edit distance to every key). For `ekb fix`,
+/// it keeps the fix of every finding as well ([`check_for_fix`]).
 #[derive(Debug, Default)]
 pub struct Diagnostics {
     kept: Vec<Diagnostic>,
     counts: RuleCounts,
-    /// Keep every finding of a fixable rule ([`check_for_fix`]).
-    keep_every_fix: bool,
-}
-
-/// How many findings of `rule` are kept: [`kept_at_most`], or all of a fixable rule's when
-/// `every_fix`.
-fn cap(rule: &Rule, every_fix: bool) -> usize {
-    match every_fix && rule.fixable {
-        true => usize::MAX,
-        false => kept_at_most(rule),
-    }
+    /// The fix of every finding, kept or not ([`check_for_fix`]).
+    fixes: Option<FixList>,
 }
 
 impl Diagnostics {
@@ -453,7 +481,7 @@ impl Diagnostics {
     /// [appended](Diagnostics::append) here: kept as these are.
     pub fn part(&self) -> Diagnostics {
         Diagnostics {
-            keep_every_fix: self.keep_every_fix,
+            fixes: self.fixes.as_ref().map(|_| FixList::default()),
             ..Diagnostics::default()
         }
     }
@@ -461,34 +489,55 @@ impl Diagnostics {
     /// Reports a finding.
     pub fn push(&mut self, diagnostic: Diagnostic) {
         let count = self.counts.bump(diagnostic.rule);
-        if count <= cap(diagnostic.rule, self.keep_every_fix) {
-            self.keep(diagnostic, count);
-        }
+        self.keep(diagnostic, count);
     }
 
-    /// Reports a finding of `rule`, made by `make` only if it is kept.
+    /// Reports a finding of `rule`, made by `make` only if it is kept (or its fix is).
     pub fn push_with(&mut self, rule: &'static Rule, make: impl FnOnce() -> Diagnostic) {
         let count = self.counts.bump(rule);
-        if count <= cap(rule, self.keep_every_fix) {
+        if count <= kept_at_most(rule) || (rule.fixable && self.fixes.is_some()) {
             let diagnostic = make();
             debug_assert!(std::ptr::eq(diagnostic.rule, rule), "{}", rule.name);
             self.keep(diagnostic, count);
         }
     }
 
-    /// Keeps `diagnostic`, the `count`th of its rule. Past what [`check`] keeps, only its
-    /// fix is kept ([`check_for_fix`]): the words of a million findings that nobody reads
-    /// would take a gigabyte.
+    /// Reports a finding of `rule` at `span` with a safe fix, made by `make` only if it is
+    /// kept; if only its fix is, that fix's edits are made by `edits` alone (the words of a
+    /// million findings that nobody reads took most of the time of `ekb fix`).
+    pub fn push_fixable_with(
+        &mut self,
+        rule: &'static Rule,
+        span: Span,
+        make: impl FnOnce() -> Diagnostic,
+        edits: impl FnOnce() -> Vec<Edit>,
+    ) {
+        let count = self.counts.bump(rule);
+        if count <= kept_at_most(rule) {
+            let diagnostic = make();
+            debug_assert!(std::ptr::eq(diagnostic.rule, rule), "{}", rule.name);
+            self.keep(diagnostic, count);
+        } else if let Some(fixes) = &mut self.fixes {
+            fixes.push(rule, span, true, edits());
+        }
+    }
+
+    /// Keeps `diagnostic`, the `count`th of its rule, if it is one of the first
+    /// [`kept_at_most`]; and its fix, if every fix is kept.
     fn keep(&mut self, mut diagnostic: Diagnostic, count: usize) {
-        if count > kept_at_most(diagnostic.rule) {
-            diagnostic.message = String::new();
-            diagnostic.help = None;
-            diagnostic.labels = Vec::new();
-            if let Some(fix) = &mut diagnostic.fix {
-                fix.message = String::new();
+        let kept = count <= kept_at_most(diagnostic.rule);
+        if let Some(fixes) = &mut self.fixes {
+            let fix = match kept {
+                true => diagnostic.fix.clone(),
+                false => diagnostic.fix.take(),
+            };
+            if let Some(fix) = fix {
+                fixes.push(diagnostic.rule, diagnostic.span, fix.is_safe(), fix.edits);
             }
         }
-        self.kept.push(diagnostic);
+        if kept {
+            self.kept.push(diagnostic);
+        }
     }
 
     /// Adds the findings of `later`, made over a later part of the file (or of its
@@ -498,12 +547,15 @@ impl Diagnostics {
         let mut taken = RuleCounts::default();
         for diagnostic in later.kept {
             let rule = diagnostic.rule;
-            if self.counts.get(rule) + taken.bump(rule) <= cap(rule, self.keep_every_fix) {
+            if self.counts.get(rule) + taken.bump(rule) <= kept_at_most(rule) {
                 self.kept.push(diagnostic);
             }
         }
         for (rule, count) in later.counts.0 {
             self.counts.add(rule, count);
+        }
+        if let (Some(fixes), Some(later)) = (&mut self.fixes, later.fixes) {
+            fixes.append(later);
         }
     }
 
@@ -628,36 +680,37 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_check_for_fix_keeps_every_finding_of_a_fixable_rule() {
+    fn a_check_for_fix_keeps_the_fix_of_every_finding() {
         let lines = 2 * MAX_KEPT_PER_RULE + 1;
         let text = "robotLocationDescription 1 x \n".repeat(lines);
         let source = SourceFile::from_bytes("t", text.into_bytes());
-        let kept = |checked: &Checked<'_>, rule: &str| {
-            let of_rule = checked.diagnostics.iter().filter(|d| d.rule.name == rule);
-            of_rule.count()
-        };
         let checked = check(&source, &Options::default());
         let for_fix = check_for_fix(&source, &Options::default(), &RuleSet::default());
-        assert_eq!(kept(&checked, "trailing-whitespace"), MAX_KEPT_PER_RULE);
-        assert_eq!(kept(&for_fix, "trailing-whitespace"), lines);
-        // Past what `check` keeps, a finding keeps its fix and no words.
-        let trailing = || {
-            let all = for_fix.diagnostics.iter();
-            all.filter(|d| d.rule.name == "trailing-whitespace")
-        };
-        assert!(trailing()
-            .take(MAX_KEPT_PER_RULE)
-            .all(|d| !d.message.is_empty()));
-        assert!(trailing()
-            .skip(MAX_KEPT_PER_RULE)
-            .all(|d| d.message.is_empty() && d.fix.is_some()));
-        // Rules without a fix are kept as they always are, and the counts are the same.
-        assert_eq!(
-            kept(&for_fix, "duplicate-key"),
-            kept(&checked, "duplicate-key")
-        );
-        assert_eq!(kept(&checked, "duplicate-key"), MAX_SHOWN_PER_RULE + 1);
+        // The findings are those of a check, and every fix is kept, in order.
+        assert_eq!(for_fix.diagnostics, checked.diagnostics);
         assert_eq!(for_fix.summary(), checked.summary());
+        assert!(checked.fixes.is_empty());
+        assert_eq!(for_fix.fixes.len(), lines);
+        let starts: Vec<u32> = for_fix.fixes.iter().map(|fix| fix.span.start).collect();
+        assert!(starts.is_sorted());
+        assert!(for_fix
+            .fixes
+            .iter()
+            .all(|fix| fix.rule.name == "trailing-whitespace"));
+    }
+
+    #[test]
+    fn a_suppression_silences_the_fixes_of_findings_not_kept() {
+        let lines = MAX_KEPT_PER_RULE + 3;
+        let mut text = "robotLocationDescription 1 x \n".repeat(lines);
+        text.push_str("# ekb: ignore[trailing-whitespace]\nrobotLocationDescription 1 y \n");
+        let source = SourceFile::from_bytes("t", text.into_bytes());
+        let for_fix = check_for_fix(&source, &Options::default(), &RuleSet::default());
+        assert_eq!(for_fix.fixes.len(), lines);
+        let text = format!("# ekb: ignore-file[trailing-whitespace]\n{}", source.text());
+        let source = SourceFile::from_bytes("t", text.into_bytes());
+        let for_fix = check_for_fix(&source, &Options::default(), &RuleSet::default());
+        assert!(for_fix.fixes.is_empty());
     }
 
     #[test]

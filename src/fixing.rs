@@ -15,8 +15,9 @@ use std::borrow::Cow;
 use std::collections::{BTreeMap, BTreeSet};
 
 use crate::canonical::Document;
-use crate::check::check_for_fix;
-use crate::diagnostic::{Diagnostic, Edit, Fix};
+use crate::check::{check_for_fix, Checked};
+use crate::diagnostic::{Diagnostic, Edit};
+use crate::fix_list::{FixList, ListedFix};
 use crate::model::build::Options;
 use crate::rules::compat::compat_reader_crash::COMPAT_READER_CRASH;
 use crate::rules::selection::RuleSet;
@@ -44,98 +45,150 @@ pub struct Choice {
 
 /// Applies every safe fix the checks of `source` offer, pass after pass.
 pub fn fix(source: &SourceFile, options: &Options) -> Fixed {
-    let (outcome, counts) = fixes(source, options, &Choice::default());
-    Fixed {
-        text: outcome
-            .into_text()
-            .unwrap_or_else(|| source.text().to_string()),
-        counts,
-    }
+    fixes(source, options, &Choice::default(), |fixes| Fixed {
+        text: match fixes.outcome {
+            Outcome::Unchanged => source.text().to_string(),
+            Outcome::Edited(file) => file.text().to_string(),
+            Outcome::Balanced { document, .. } => document.render(),
+        },
+        counts: fixes.counts,
+    })
 }
 
 /// What the fixes of a file make of it.
 #[derive(Debug)]
-pub enum Outcome<'a> {
+pub enum Outcome<'f> {
     /// Nothing to fix: the file is checked as it is, never copied (two copies of 60 MB were
     /// most of `ekb fix --diff`'s memory).
     Unchanged,
     /// The text after the fixes' edits.
-    Edited(String),
-    /// The file, or its text after the edits ([`Document::text`]), with the location blocks
+    Edited(&'f SourceFile),
+    /// The file, or its text after the edits, with the location blocks
     /// in the order that builds a balanced tree in the robot's reader: the fix of
     /// `compat-reader-crash`, the one fix that is no edit. Laid out as `ekb fmt` writes,
     /// and not written out yet (`ekb fix --diff` shows it from the layout).
-    Balanced(Document<'a>),
+    Balanced {
+        /// The text laid out: the file, or its text after the edits.
+        file: &'f SourceFile,
+        document: Document<'f>,
+    },
 }
 
-impl Outcome<'_> {
-    /// The new text, `None` when nothing is fixed.
-    pub fn into_text(self) -> Option<String> {
-        match self {
-            Outcome::Unchanged => None,
-            Outcome::Edited(text) => Some(text),
-            Outcome::Balanced(document) => Some(document.render()),
-        }
-    }
+/// What the passes of [`fixes`] made of a file.
+#[derive(Debug)]
+pub struct Fixes<'f> {
+    pub outcome: Outcome<'f>,
+    /// How many findings of each rule the fixes fix, by rule name.
+    pub counts: BTreeMap<&'static str, usize>,
+    /// The check of the text the edits ended with (before any balance: the file itself if
+    /// nothing was edited), as [`check_with`](crate::check::check_with) makes it with the
+    /// chosen rules; `None` if the passes stopped at [`MAX_PASSES`] before checking it. What
+    /// is left to fix by hand is told from it, without checking the text once more.
+    pub last_check: Option<Checked<'f>>,
 }
 
-/// The fixes of `source` that `choice` allows, pass after pass, and how many findings of
-/// each rule they fix.
-pub fn fixes<'a>(
-    source: &'a SourceFile,
+/// The fixes of `source` that `choice` allows, pass after pass, given to `then` (which
+/// borrows the text they made, held only while it runs).
+pub fn fixes<R>(
+    source: &SourceFile,
     options: &Options,
     choice: &Choice,
-) -> (Outcome<'a>, BTreeMap<&'static str, usize>) {
-    let mut fixed: Option<String> = None;
-    let mut counts = BTreeMap::new();
-    let mut options = *options;
-    // Whether the order of ids crashes the reader: no edit changes that order.
-    let mut crashes_reader = false;
+    then: impl FnOnce(Fixes<'_>) -> R,
+) -> R {
+    let start = Passes {
+        counts: BTreeMap::new(),
+        done: 0,
+        crashes_reader: false,
+    };
+    pass(source, None, options, choice, start, then)
+}
+
+/// Where the passes are.
+struct Passes {
+    counts: Counts,
+    /// How many passes fixed something.
+    done: usize,
+    /// Whether the order of ids crashes the reader, as the last check found: no edit
+    /// changes that order.
+    crashes_reader: bool,
+}
+
+/// The next pass over `file` (`source` itself, or the text its edits made, `edited`), and
+/// the next one after it if it fixed anything. Each pass owns the text it makes, which the
+/// next one checks: no text is copied.
+fn pass<R>(
+    file: &SourceFile,
+    edited: Option<&SourceFile>,
+    options: &Options,
+    choice: &Choice,
+    mut passes: Passes,
+    then: impl FnOnce(Fixes<'_>) -> R,
+) -> R {
+    let text = edited.unwrap_or(file);
     // The bound only guards against fixes that would make each other again, which no
     // rule's do.
-    for _ in 0..MAX_PASSES {
-        let file = fixed
-            .as_ref()
-            .map(|text| SourceFile::from_bytes(source.name(), text.clone().into_bytes()));
-        let file = file.as_ref().unwrap_or(source);
-        let mut checked = check_for_fix(file, &options, &choice.rules);
-        if !choice.unsafe_fixes {
-            for diagnostic in &mut checked.diagnostics {
-                diagnostic.fix = diagnostic.fix.take().filter(Fix::is_safe);
-            }
-        }
-        crashes_reader = checked
-            .diagnostics
-            .iter()
-            .any(|d| std::ptr::eq(d.rule, &COMPAT_READER_CRASH));
-        // `--verbose` shows the file as read, once; later passes read it again.
-        options.verbose = false;
-        let Some((new, applied)) = apply(file.text(), &checked.diagnostics) else {
-            break;
-        };
-        for rule in applied {
-            *counts.entry(rule).or_insert(0) += 1;
-        }
-        fixed = Some(new);
+    if passes.done == MAX_PASSES {
+        return then(finish(file, edited, None, passes, choice));
     }
-    let balance = crashes_reader && choice.rules.is_enabled(&COMPAT_READER_CRASH);
-    let document = match (balance, fixed) {
-        (false, None) => return (Outcome::Unchanged, counts),
-        (false, Some(text)) => return (Outcome::Edited(text), counts),
-        (true, None) => Document::parse(source.text()).map_err(|_| None),
-        (true, Some(text)) => Document::parse_owned(text).map_err(Some),
+    let mut checked = check_for_fix(text, options, &choice.rules);
+    passes.crashes_reader = checked
+        .diagnostics
+        .iter()
+        .any(|d| std::ptr::eq(d.rule, &COMPAT_READER_CRASH));
+    let allowed = |fix: &ListedFix<'_>| choice.unsafe_fixes || fix.safe;
+    let Some(chosen) = choose(text.text(), &checked.fixes, allowed) else {
+        return then(finish(file, edited, Some(checked), passes, choice));
     };
-    let outcome = match document {
-        Ok(mut document) => {
+    // The check is done with: only the fixes are kept while the new text is written.
+    let fixes = std::mem::take(&mut checked.fixes);
+    drop(checked);
+    let new = chosen.write(text.text(), &fixes);
+    drop(fixes);
+    for (rule, count) in chosen.counts {
+        *passes.counts.entry(rule).or_insert(0) += count;
+    }
+    passes.done += 1;
+    let next = SourceFile::from_bytes(file.name(), new.into_bytes());
+    // `--verbose` shows the file as read, once; later passes read it again.
+    let options = Options {
+        verbose: false,
+        ..*options
+    };
+    pass(file, Some(&next), &options, choice, passes, then)
+}
+
+/// What the passes made of `source`, its text now `edited` (if any edit was made), whose
+/// check is `last` (if it was checked): balanced too if the order of its ids crashes the
+/// reader.
+fn finish<'f>(
+    source: &'f SourceFile,
+    edited: Option<&'f SourceFile>,
+    last: Option<Checked<'f>>,
+    passes: Passes,
+    choice: &Choice,
+) -> Fixes<'f> {
+    let mut counts = passes.counts;
+    let text = edited.unwrap_or(source);
+    let balance = passes.crashes_reader && choice.rules.is_enabled(&COMPAT_READER_CRASH);
+    // A file the layout cannot write keeps its order.
+    let balanced = balance.then(|| Document::parse(text.text()).ok()).flatten();
+    let outcome = match (balanced, edited) {
+        (Some(mut document), _) => {
             document.balance();
             *counts.entry(COMPAT_READER_CRASH.name).or_insert(0) += 1;
-            Outcome::Balanced(document)
+            Outcome::Balanced {
+                file: text,
+                document,
+            }
         }
-        // A file the layout cannot write keeps its order.
-        Err(Some(text)) => Outcome::Edited(text),
-        Err(None) => Outcome::Unchanged,
+        (None, Some(edited)) => Outcome::Edited(edited),
+        (None, None) => Outcome::Unchanged,
     };
-    (outcome, counts)
+    Fixes {
+        outcome,
+        counts,
+        last_check: last,
+    }
 }
 
 /// `bytes` with every byte that is not part of a UTF-8 sequence read as Windows-1252 (the
@@ -194,49 +247,148 @@ pub fn from_latin1(bytes: &[u8]) -> Option<String> {
 }
 
 /// Applies the fixes of `diagnostics` to `text`, each whole or not at all, skipping a fix
-/// whose edits clash with those of one taken before it. Returns the new text and the rule
-/// of each fix applied, or `None` if there was none to apply.
-pub fn apply<'d>(text: &str, diagnostics: &'d [Diagnostic]) -> Option<(String, Vec<&'static str>)> {
-    let mut accepted = Edits::default();
-    let mut applied = Vec::new();
-    // One fix's edits at a time: a million fixes are never copied all at once.
+/// whose edits clash with those of one taken before it. Returns the new text and how many
+/// fixes of each rule it applied, or `None` if there was none to apply.
+pub fn apply(text: &str, diagnostics: &[Diagnostic]) -> Option<(String, Counts)> {
+    let mut fixes = FixList::default();
     for diagnostic in diagnostics {
-        let Some(fix) = &diagnostic.fix else {
-            continue;
-        };
-        let edits: Vec<Cow<'d, Edit>> = fix
-            .edits
-            .iter()
-            .map(|edit| keeping_id_column(text, edit))
-            .collect();
-        let fits = edits.iter().all(|edit| !accepted.clashes(edit.span)) && !clash_among(&edits);
-        if fits {
-            edits.into_iter().for_each(|edit| accepted.add(edit));
-            applied.push(diagnostic.rule.name);
+        if let Some(fix) = &diagnostic.fix {
+            fixes.push(
+                diagnostic.rule,
+                diagnostic.span,
+                fix.is_safe(),
+                fix.edits.clone(),
+            );
         }
     }
-    (!applied.is_empty()).then(|| (accepted.apply(text), applied))
+    apply_where(text, &fixes, |_| true)
+}
+
+/// How many fixes of each rule were applied, by rule name.
+pub type Counts = BTreeMap<&'static str, usize>;
+
+/// [`apply`], to the fixes of `fixes` that are `allowed`, in their order.
+fn apply_where(
+    text: &str,
+    fixes: &FixList,
+    allowed: impl Fn(&ListedFix<'_>) -> bool,
+) -> Option<(String, Counts)> {
+    let chosen = choose(text, fixes, allowed)?;
+    Some((chosen.write(text, fixes), chosen.counts))
+}
+
+/// The fixes of a [`FixList`] chosen to be applied.
+struct Chosen {
+    /// Whether each fix is applied.
+    taken: Vec<bool>,
+    /// Whether the edits of the fixes applied come in order of position.
+    in_order: bool,
+    counts: Counts,
+}
+
+/// The fixes of `fixes` that are `allowed` and whose edits clash with none of those taken
+/// before, in their order; `None` if there is none. While each edit taken comes after the
+/// last one (nearly always), the edits are only counted; after one that does not, every
+/// edit taken is kept in a tree.
+fn choose(text: &str, fixes: &FixList, allowed: impl Fn(&ListedFix<'_>) -> bool) -> Option<Chosen> {
+    let mut accepted = Accepted::InOrder(None);
+    let mut taken = vec![false; fixes.len()];
+    let mut counts = Counts::new();
+    let mut spans = Vec::new();
+    for (index, fix) in fixes.iter().enumerate() {
+        if !allowed(&fix) {
+            continue;
+        }
+        spans.clear();
+        spans.extend(
+            fix.edits()
+                .map(|(span, new)| keeping_id_column(text, span, new).0),
+        );
+        let fits = match &mut accepted {
+            Accepted::InOrder(last) if follows(*last, &spans) => true,
+            _ => {
+                let taken_before =
+                    || edits_taken(text, fixes, &taken[..index]).map(|(span, _)| span);
+                let all = accepted.all(taken_before);
+                spans.iter().all(|&span| !clashes(all, span)) && !clash_among(&spans)
+            }
+        };
+        if fits {
+            accepted.add(&spans);
+            taken[index] = true;
+            *counts.entry(fix.rule.name).or_insert(0) += 1;
+        }
+    }
+    (!counts.is_empty()).then_some(Chosen {
+        taken,
+        in_order: matches!(accepted, Accepted::InOrder(_)),
+        counts,
+    })
+}
+
+impl Chosen {
+    /// `text` with the edits of the fixes chosen of `fixes` made, written in one pass
+    /// (the edits sorted first if they do not come in order).
+    fn write(&self, text: &str, fixes: &FixList) -> String {
+        let edits = edits_taken(text, fixes, &self.taken);
+        if self.in_order {
+            return write_edits(text, edits);
+        }
+        let mut edits: Vec<(Span, Cow<'_, str>)> = edits.collect();
+        edits.sort_by_key(|(span, _)| (span.start, span.end));
+        write_edits(text, edits.into_iter())
+    }
+}
+
+/// The edits of the fixes of `fixes` that were `taken` (one flag a fix, in order), in
+/// order, each as it is made ([`keeping_id_column`]).
+fn edits_taken<'a>(
+    text: &'a str,
+    fixes: &'a FixList,
+    taken: &'a [bool],
+) -> impl Iterator<Item = (Span, Cow<'a, str>)> + 'a {
+    fixes
+        .iter()
+        .zip(taken)
+        .filter(|&(_, &taken)| taken)
+        .flat_map(|(fix, _)| fix.edits())
+        .map(|(span, new)| keeping_id_column(text, span, new))
 }
 
 /// Applies `edits` to `text`; they must not overlap, and no two may insert at one offset
 /// (for `ekb set` and `ekb import --po`, whose edits are one per line).
 pub fn splice(text: &str, edits: &[Edit]) -> String {
-    let mut all = Edits::default();
-    for edit in edits {
-        debug_assert!(!all.clashes(edit.span), "{edit:?}");
-        all.add(Cow::Borrowed(edit));
-    }
-    all.apply(text)
+    let mut sorted: Vec<&Edit> = edits.iter().collect();
+    sorted.sort_by_key(|edit| (edit.span.start, edit.span.end));
+    debug_assert!(!clash_among(
+        &sorted.iter().map(|e| e.span).collect::<Vec<_>>()
+    ));
+    write_edits(
+        text,
+        sorted.iter().map(|e| (e.span, e.replacement.as_str())),
+    )
 }
 
-/// `edit`, made to keep the column of the id when it renames the key of a line whose key is
-/// padded with spaces up to the id (as `ekb fmt` writes): `robotLocation` becoming
-/// `robotLocationPose` takes four of its spaces, and the reverse gives them back. Any other
-/// edit is left as it is.
-fn keeping_id_column<'d>(text: &str, edit: &'d Edit) -> Cow<'d, Edit> {
-    let (start, end) = (edit.span.start as usize, edit.span.end as usize);
+/// `text` with `edits` made, given in order of position, none overlapping another.
+fn write_edits(text: &str, edits: impl Iterator<Item = (Span, impl AsRef<str>)>) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut at = 0;
+    for (span, replacement) in edits {
+        out.push_str(&text[at..span.start as usize]);
+        out.push_str(replacement.as_ref());
+        at = span.end as usize;
+    }
+    out.push_str(&text[at..]);
+    out
+}
+
+/// The edit of `span` to `new_key`, made to keep the column of the id when it renames the
+/// key of a line whose key is padded with spaces up to the id (as `ekb fmt` writes):
+/// `robotLocation` becoming `robotLocationPose` takes four of its spaces, and the reverse
+/// gives them back. Any other edit is left as it is.
+fn keeping_id_column<'e>(text: &str, span: Span, new_key: &'e str) -> (Span, Cow<'e, str>) {
+    let (start, end) = (span.start as usize, span.end as usize);
     let old_key = &text[start..end];
-    let new_key = edit.replacement.as_str();
     let at_line_start = start == 0 || text.as_bytes()[start - 1] == b'\n';
     let is_word = |word: &str| !word.is_empty() && !word.contains(char::is_whitespace);
     let padding = text[end..].bytes().take_while(|&b| b == b' ').count();
@@ -253,63 +405,77 @@ fn keeping_id_column<'d>(text: &str, edit: &'d Edit) -> Cow<'d, Edit> {
         || padding < 2
         || !id_follows
     {
-        return Cow::Borrowed(edit);
+        return (span, Cow::Borrowed(new_key));
     }
     let column = old_key.chars().count() + padding;
     let new_padding = column.saturating_sub(new_key.chars().count()).max(1);
-    Cow::Owned(Edit::replace(
+    (
         Span::new(start, end + padding),
-        format!("{new_key}{}", " ".repeat(new_padding)),
-    ))
+        Cow::Owned(format!("{new_key}{}", " ".repeat(new_padding))),
+    )
 }
 
-/// Non-clashing edits, by `(start, end)`. Since none overlap, their ends grow with their
-/// starts, so the one just before a span is the only one that could reach into it.
-#[derive(Debug, Default)]
-struct Edits<'a> {
-    by_span: BTreeMap<(u32, u32), Cow<'a, str>>,
+/// The spans of the edits taken, which do not overlap.
+#[derive(Debug)]
+enum Accepted {
+    /// Each taken after the one before (or none taken): the last one.
+    InOrder(Option<(u32, u32)>),
+    /// Every one, by `(start, end)`.
+    Any(BTreeSet<(u32, u32)>),
 }
 
-impl<'a> Edits<'a> {
-    fn clashes(&self, span: Span) -> bool {
-        let before = self.by_span.range(..(span.end, span.end)).next_back();
-        let reaches_in = before.is_some_and(|(&(_, end), _)| end > span.start);
-        // Two insertions at one offset: which goes first is not defined.
-        reaches_in || (span.is_empty() && self.by_span.contains_key(&(span.start, span.end)))
-    }
-
-    fn add(&mut self, edit: Cow<'a, Edit>) {
-        let span = (edit.span.start, edit.span.end);
-        let replacement = match edit {
-            Cow::Borrowed(edit) => Cow::Borrowed(edit.replacement.as_str()),
-            Cow::Owned(edit) => Cow::Owned(edit.replacement),
-        };
-        self.by_span.insert(span, replacement);
-    }
-
-    fn apply(&self, text: &str) -> String {
-        let mut out = String::with_capacity(text.len());
-        let mut at = 0;
-        for (&(start, end), replacement) in &self.by_span {
-            out.push_str(&text[at..start as usize]);
-            out.push_str(replacement);
-            at = end as usize;
+impl Accepted {
+    /// Every edit taken, made from `taken` (the spans of the edits taken) the first time.
+    fn all<I: Iterator<Item = Span>>(
+        &mut self,
+        taken: impl FnOnce() -> I,
+    ) -> &BTreeSet<(u32, u32)> {
+        if let Accepted::InOrder(_) = self {
+            *self = Accepted::Any(taken().map(|span| (span.start, span.end)).collect());
         }
-        out.push_str(&text[at..]);
-        out
+        match self {
+            Accepted::Any(all) => all,
+            Accepted::InOrder(_) => unreachable!("made above"),
+        }
     }
+
+    fn add(&mut self, spans: &[Span]) {
+        match self {
+            Accepted::InOrder(last) => *last = spans.last().map(|s| (s.start, s.end)).or(*last),
+            Accepted::Any(all) => all.extend(spans.iter().map(|s| (s.start, s.end))),
+        }
+    }
+}
+
+/// Whether `spans` come each after the one before, the first after `last`: then they
+/// clash with no edit taken (which all end before `last` does), nor among themselves.
+fn follows(last: Option<(u32, u32)>, spans: &[Span]) -> bool {
+    let mut last = last;
+    spans.iter().all(|span| {
+        let key = (span.start, span.end);
+        let after = last.is_none_or(|last| key > last && span.start >= last.1);
+        last = Some(key);
+        after
+    })
+}
+
+/// Whether `span` clashes with an edit of `taken`. Since none of those overlap, their ends
+/// grow with their starts, so the one just before `span` is the only one that could reach
+/// into it.
+fn clashes(taken: &BTreeSet<(u32, u32)>, span: Span) -> bool {
+    let before = taken.range(..(span.end, span.end)).next_back();
+    let reaches_in = before.is_some_and(|&(_, end)| end > span.start);
+    // Two insertions at one offset: which goes first is not defined.
+    reaches_in || (span.is_empty() && taken.contains(&(span.start, span.end)))
 }
 
 /// Whether the edits of one fix clash among themselves (a rule's bug; the fix is skipped).
-fn clash_among(edits: &[Cow<'_, Edit>]) -> bool {
-    let mut seen = Edits::default();
-    let spans: BTreeSet<(u32, u32)> = edits.iter().map(|e| (e.span.start, e.span.end)).collect();
-    spans.len() != edits.len()
-        || edits.iter().any(|edit| {
-            let clash = seen.clashes(edit.span);
-            seen.add(Cow::Borrowed(edit));
-            clash
-        })
+fn clash_among(spans: &[Span]) -> bool {
+    let mut seen = BTreeSet::new();
+    spans.iter().any(|&span| {
+        let clash = clashes(&seen, span);
+        !seen.insert((span.start, span.end)) || clash
+    })
 }
 
 #[cfg(test)]
@@ -398,21 +564,38 @@ mod tests {
 
     #[test]
     fn clashing_edits_wait_for_the_next_pass() {
-        let mut edits = Edits::default();
-        let insert = Edit::insert(3, "x");
-        edits.add(Cow::Borrowed(&insert));
-        assert!(edits.clashes(Span::new(3, 3)));
-        assert!(!edits.clashes(Span::new(3, 5)), "delete after an insertion");
+        let mut taken = BTreeSet::new();
+        taken.insert((3, 3));
+        assert!(clashes(&taken, Span::new(3, 3)));
         assert!(
-            !edits.clashes(Span::new(1, 3)),
+            !clashes(&taken, Span::new(3, 5)),
+            "delete after an insertion"
+        );
+        assert!(
+            !clashes(&taken, Span::new(1, 3)),
             "delete before an insertion"
         );
-        let delete = Edit::delete(Span::new(5, 9));
-        edits.add(Cow::Borrowed(&delete));
-        assert!(edits.clashes(Span::new(8, 10)));
-        assert!(edits.clashes(Span::new(6, 6)));
-        assert!(edits.clashes(Span::new(4, 6)));
-        assert!(!edits.clashes(Span::new(9, 9)));
-        assert_eq!(edits.apply("0123456789"), "012x349");
+        taken.insert((5, 9));
+        assert!(clashes(&taken, Span::new(8, 10)));
+        assert!(clashes(&taken, Span::new(6, 6)));
+        assert!(clashes(&taken, Span::new(4, 6)));
+        assert!(!clashes(&taken, Span::new(9, 9)));
+        // Edits in order need no tree.
+        assert!(follows(Some((3, 3)), &[Span::new(3, 5), Span::new(5, 5)]));
+        assert!(!follows(Some((3, 3)), &[Span::new(3, 3)]));
+        assert!(!follows(Some((3, 5)), &[Span::new(4, 6)]));
+        assert!(!follows(None, &[Span::new(4, 6), Span::new(0, 1)]));
+    }
+
+    #[test]
+    fn fixes_whose_edits_come_before_those_taken_are_written_in_place() {
+        let text = "aaa bbb ccc\n";
+        let at = |start: usize, new: &str| {
+            Diagnostic::new(&COMPAT_READER_CRASH, Span::new(start, start + 3), "")
+                .with_fix("", vec![Edit::replace(Span::new(start, start + 3), new)])
+        };
+        let (fixed, counts) = apply(text, &[at(8, "C"), at(0, "A"), at(4, "B")]).unwrap();
+        assert_eq!(fixed, "A B C\n");
+        assert_eq!(counts.get(COMPAT_READER_CRASH.name), Some(&3));
     }
 }

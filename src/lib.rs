@@ -35,6 +35,7 @@ pub mod diff;
 pub mod draw;
 pub mod edit;
 pub mod encoding;
+pub mod fix_list;
 pub mod fixing;
 pub mod generate;
 pub mod lsp;

@@ -176,6 +176,13 @@ fn parse(text: &str, comment: Span) -> Parsed {
     Parsed::Suppression(scope, Span::new(list_start, list_start + list.len()), names)
 }
 
+/// Whether `text` may hold a suppression comment: it has the mark of one.
+pub fn may_have_suppressions(text: &str) -> bool {
+    // No `#`, no comment: that one byte is found faster than the mark.
+    let bytes = text.as_bytes();
+    memchr::memchr(b'#', bytes).is_some() && memchr::memmem::find(bytes, MARK.as_bytes()).is_some()
+}
+
 /// Drops the findings of `diagnostics` (sorted by position) that `text`'s suppressions
 /// silence, and adds an `unused-suppression` finding for each suppression that silences
 /// nothing (if `rules` runs that rule). `dropped` tells how many findings of a rule were
@@ -192,12 +199,7 @@ pub fn apply(
     dropped: impl Fn(&'static Rule) -> usize,
 ) -> Suppressed {
     let mut suppressed = Suppressed::default();
-    // No `#`, no comment: that one byte is found faster than the mark.
-    let bytes = text.as_bytes();
-    if lines == Some(0)
-        || memchr::memchr(b'#', bytes).is_none()
-        || memchr::memmem::find(bytes, MARK.as_bytes()).is_none()
-    {
+    if lines == Some(0) || !may_have_suppressions(text) {
         return suppressed;
     }
     let (suppressions, malformed) = find(text);
@@ -206,30 +208,11 @@ pub fn apply(
         .iter()
         .map(|s| vec![false; s.names.len()])
         .collect();
-    let file_wide: Vec<(usize, usize, RuleSelector)> = selectors_of(&suppressions, Scope::File);
-    let by_line: BTreeMap<u32, Vec<(usize, usize, RuleSelector)>> = {
-        let mut by_line: BTreeMap<u32, Vec<_>> = BTreeMap::new();
-        for (index, suppression) in suppressions.iter().enumerate() {
-            if let Scope::Line(Some(target)) = suppression.scope {
-                for (n, name) in suppression.names.iter().enumerate() {
-                    if let Ok(selector) = name.selector {
-                        by_line
-                            .entry(target.start)
-                            .or_default()
-                            .push((index, n, selector));
-                    }
-                }
-            }
-        }
-        by_line
-    };
+    let scopes = Scopes::new(&suppressions);
+    let file_wide = &scopes.file_wide;
     let silences = |diagnostic: &Diagnostic, used: &mut Vec<Vec<bool>>| {
-        let line_start = text[..diagnostic.span.start as usize]
-            .rfind('\n')
-            .map_or(0, |newline| newline + 1) as u32;
-        let on_line = by_line.get(&line_start).into_iter().flatten();
         let mut hit = false;
-        for &(index, n, selector) in on_line.chain(&file_wide) {
+        for (index, n, selector) in scopes.at(text, diagnostic.span.start) {
             if selector.matches(diagnostic.rule) {
                 used[index][n] = true;
                 hit = true;
@@ -245,7 +228,7 @@ pub fn apply(
         !hit
     });
     // A file-wide suppression silences the findings not kept as well.
-    for &(index, n, selector) in &file_wide {
+    for &(index, n, selector) in file_wide {
         for rule in crate::rules::ALL
             .iter()
             .filter(|rule| selector.matches(rule))
@@ -298,6 +281,60 @@ pub fn apply(
         }
     }
     suppressed
+}
+
+/// The names of the suppressions of a file, by what they cover, each as (suppression,
+/// name, selector).
+struct Scopes {
+    file_wide: Vec<(usize, usize, RuleSelector)>,
+    /// By the start of the line they cover.
+    by_line: BTreeMap<u32, Vec<(usize, usize, RuleSelector)>>,
+}
+
+impl Scopes {
+    fn new(suppressions: &[Suppression]) -> Scopes {
+        let mut by_line: BTreeMap<u32, Vec<_>> = BTreeMap::new();
+        for (index, suppression) in suppressions.iter().enumerate() {
+            if let Scope::Line(Some(target)) = suppression.scope {
+                for (n, name) in suppression.names.iter().enumerate() {
+                    if let Ok(selector) = name.selector {
+                        by_line
+                            .entry(target.start)
+                            .or_default()
+                            .push((index, n, selector));
+                    }
+                }
+            }
+        }
+        Scopes {
+            file_wide: selectors_of(suppressions, Scope::File),
+            by_line,
+        }
+    }
+
+    /// The names that cover offset `at` of `text`: those of its line, and the file's.
+    fn at(&self, text: &str, at: u32) -> impl Iterator<Item = (usize, usize, RuleSelector)> + '_ {
+        let line_start = text[..at as usize]
+            .rfind('\n')
+            .map_or(0, |newline| newline + 1) as u32;
+        let on_line = self.by_line.get(&line_start).into_iter().flatten();
+        on_line.chain(&self.file_wide).copied()
+    }
+}
+
+/// Whether a suppression of `text` silences a finding of a rule at an offset, asked of
+/// findings not kept as findings (the fixes `ekb fix` keeps of them); `None` if `text`
+/// has no suppression (`lines`: as [`apply`] takes it).
+pub fn silencer(text: &str, lines: Option<u32>) -> Option<impl Fn(&Rule, u32) -> bool + '_> {
+    if lines == Some(0) || !may_have_suppressions(text) {
+        return None;
+    }
+    let scopes = Scopes::new(&find(text).0);
+    Some(move |rule: &Rule, at: u32| {
+        scopes
+            .at(text, at)
+            .any(|(_, _, selector)| selector.matches(rule))
+    })
 }
 
 /// The names of the suppressions of `scope`, as (suppression, name, selector).

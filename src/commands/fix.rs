@@ -1,15 +1,14 @@
 //! `ekb fix [FILE...] [--diff] [--dialect D]`: apply the machine-applicable fixes of the rule
 //! catalogue ([`crate::fixing`]), and migrate a file from one dialect to the other.
 
-use std::borrow::Cow;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use super::check::RuleArgs;
 use super::{errors_to_stderr, CommandError, CommandResult, Context, Exit};
 use crate::canonical::Document;
-use crate::check::check_with;
-use crate::fixing::{self, Outcome};
+use crate::check::{check_with, Checked};
+use crate::fixing::{self, Fixes, Outcome};
 use crate::model::build::Options;
 use crate::model::{Dialect, Key};
 use crate::reader::Reader;
@@ -22,7 +21,7 @@ use crate::rules::structure::invalid_utf8::INVALID_UTF8;
 use crate::source::SourceFile;
 use crate::stderr_line;
 use crate::syntax::{self, Body};
-use crate::unified::{InOrder, Through};
+use crate::unified::{InOrder, Recorded, Through};
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -83,50 +82,57 @@ fn fix_file(
     if let Some(target) = args.dialect {
         refuse_inexpressible(source, target)?;
     }
-    let (outcome, mut counts) = fixing::fixes(source, options, choice);
-    if converted.is_some() {
-        counts.insert(INVALID_UTF8.name, read.invalid_utf8_lines());
-    }
     let mode = if args.diff { Mode::Diff } else { Mode::Write };
     let style = DiffStyle {
         color: context.color_stdout(),
     };
-    let mut rules = choice.rules.clone();
-    let (changed, after) = match (outcome, mode) {
-        (Outcome::Balanced(document), Mode::Diff) => {
-            let changed = print_balanced(&read, &document, style)?;
-            // What is left to correct is what the text before the balance has but for the
-            // order of its ids, which the balanced order mends (its tree is log2(n) deep):
-            // checked without the rules of that order, the balanced text is never made.
-            rules.ignore(&[
-                RuleSelector::Rule(&COMPAT_READER_CRASH),
-                RuleSelector::Rule(&COMPAT_SLOW_LOAD),
-            ]);
-            (changed, document.into_text())
+    let converted_lines = converted.is_some().then(|| read.invalid_utf8_lines());
+    let after = |fixes: Fixes<'_>| -> Result<(bool, bool), CommandError> {
+        let Fixes {
+            outcome,
+            mut counts,
+            last_check,
+        } = fixes;
+        if let Some(lines) = converted_lines {
+            counts.insert(INVALID_UTF8.name, lines);
         }
-        (outcome, mode) => {
-            let fixed = outcome.into_text();
-            let new_text = fixed.as_deref().unwrap_or(source.text());
-            let changed = rewrite::deliver(path, &read, new_text, mode, style)?;
-            (
-                changed,
-                fixed.map_or(Cow::Borrowed(source.text()), Cow::Owned),
-            )
+        let report = |after: &SourceFile, checked, rules: &RuleSet| {
+            report(after, checked, &counts, options, rules, context, mode)
+        };
+        match (outcome, mode) {
+            (Outcome::Balanced { file, document }, Mode::Diff) => {
+                let changed = print_balanced(&read, &document, style)?;
+                // What is left to correct is what the text before the balance has but for
+                // the order of its ids, which the balanced order mends (its tree is log2(n)
+                // deep): checked without the rules of that order, the balanced text is
+                // never made.
+                let order = [
+                    RuleSelector::Rule(&COMPAT_READER_CRASH),
+                    RuleSelector::Rule(&COMPAT_SLOW_LOAD),
+                ];
+                let mut rules = choice.rules.clone();
+                rules.ignore(&order);
+                let checked = last_check.and_then(|checked| checked.ignoring(&order));
+                Ok((changed, report(file, checked, &rules)?))
+            }
+            (Outcome::Balanced { document, .. }, Mode::Write) => {
+                let text = document.render();
+                let changed = rewrite::deliver(path, &read, &text, mode, style)?;
+                drop(document);
+                let balanced = SourceFile::from_bytes(source.name(), text.into_bytes());
+                Ok((changed, report(&balanced, None, &choice.rules)?))
+            }
+            (Outcome::Edited(file), mode) => {
+                let changed = rewrite::deliver(path, &read, file.text(), mode, style)?;
+                Ok((changed, report(file, last_check, &choice.rules)?))
+            }
+            (Outcome::Unchanged, mode) => {
+                let changed = rewrite::deliver(path, &read, source.text(), mode, style)?;
+                Ok((changed, report(source, last_check, &choice.rules)?))
+            }
         }
     };
-    // Nothing fixed, or only the order: the file is what is left, without a copy of it.
-    let after = match after {
-        Cow::Borrowed(_) => None,
-        Cow::Owned(text) => Some(SourceFile::from_bytes(source.name(), text.into_bytes())),
-    };
-    let errors_left = report(
-        after.as_ref().unwrap_or(source),
-        &counts,
-        options,
-        &rules,
-        context,
-        mode,
-    )?;
+    let (changed, errors_left) = fixing::fixes(source, options, choice, after)?;
     Ok(match mode {
         Mode::Diff if changed => Exit::Findings,
         Mode::Write if errors_left => Exit::Findings,
@@ -137,24 +143,28 @@ fn fix_file(
 /// Prints the diff of `read` and its blocks put in a balanced order (`document`), from the
 /// layout: the lines of the text the document laid out taken back to the lines of `read`
 /// they came from, when that text is not `read`'s (the fixes edited it, or it was read as
-/// Latin-1). Returns whether they differ.
+/// Latin-1). The layout is made once ([`Recorded`]), though the diff reads it three times.
+/// Returns whether they differ.
 fn print_balanced(
     read: &SourceFile,
     document: &Document<'_>,
     style: DiffStyle,
 ) -> Result<bool, CommandError> {
     let old = read.text();
-    if std::ptr::eq(document.text(), old) {
-        return Ok(rewrite::print_diff(read.name(), old, document, style)?);
-    }
-    let between = InOrder {
-        old,
-        new: document.text(),
-    }
-    .origins();
-    let new = Through {
-        new: document,
-        between: &between,
+    let new = match std::ptr::eq(document.text(), old) {
+        true => Recorded::new(old, document),
+        false => {
+            let between = InOrder {
+                old,
+                new: document.text(),
+            }
+            .origins();
+            let through = Through {
+                new: document,
+                between: &between,
+            };
+            Recorded::new(old, &through)
+        }
     };
     Ok(rewrite::print_diff(read.name(), old, &new, style)?)
 }
@@ -209,10 +219,12 @@ fn refuse_inexpressible(source: &SourceFile, target: Dialect) -> Result<(), Comm
     )))
 }
 
-/// Tells, on standard error, what was fixed and which errors are left for a person.
+/// Tells, on standard error, what was fixed (`counts`) and which errors are left in
+/// `after`, the text the fixes made, given its check if the fixes made one that tells.
 /// Returns whether errors are left.
 fn report(
     after: &SourceFile,
+    checked: Option<Checked<'_>>,
     counts: &BTreeMap<&'static str, usize>,
     options: &Options,
     rules: &RuleSet,
@@ -220,11 +232,13 @@ fn report(
     mode: Mode,
 ) -> Result<bool, CommandError> {
     let name = escape(after.name());
-    let options = Options {
-        verbose: false,
-        ..*options
-    };
-    let mut checked = check_with(after, &options, rules);
+    let mut checked = checked.unwrap_or_else(|| {
+        let options = Options {
+            verbose: false,
+            ..*options
+        };
+        check_with(after, &options, rules)
+    });
     let summary = checked.summary();
     if !context.quiet && !counts.is_empty() {
         let fixed: Vec<String> = counts

@@ -67,9 +67,13 @@ impl LineFindings for LineRules {
     }
 
     fn key_case(&mut self, span: Span, written: &str, key: Key, id: Option<u32>) {
-        self.found.push_with(&structure::key_case::KEY_CASE, || {
-            structure::key_case::diagnostic(span, written, key, id)
-        });
+        use structure::key_case;
+        self.found.push_fixable_with(
+            &key_case::KEY_CASE,
+            span,
+            || key_case::diagnostic(span, written, key, id),
+            || key_case::edits(span, key),
+        );
     }
 
     fn unknown_key(&mut self, span: Span, written: &str, id: Option<u32>) {

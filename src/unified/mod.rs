@@ -24,8 +24,10 @@ mod align;
 mod follow;
 mod in_order;
 mod print;
+mod recorded;
 
 pub use in_order::{InOrder, Origins, Through};
+pub use recorded::Recorded;
 
 use std::io::{self, Write};
 use std::ops::ControlFlow;

@@ -44,8 +44,11 @@ pub fn diagnostic(span: Span, written: &str, key: Key, id: Option<u32>) -> Diagn
     )
     .at_location(id)
     .with_help(format!("write the key as `{}`", key.name()))
-    .with_fix(
-        format!("rename to `{}`", key.name()),
-        vec![Edit::replace(span, key.name())],
-    )
+    .with_fix(format!("rename to `{}`", key.name()), edits(span, key))
+}
+
+/// The edits of the fix of [`diagnostic`], alone: for `ekb fix`, which makes a million
+/// of them and reads no message.
+pub fn edits(span: Span, key: Key) -> Vec<Edit> {
+    vec![Edit::replace(span, key.name())]
 }

@@ -1,0 +1,129 @@
+//! New lines read once and given again as often as asked, for new lines that cost more to
+//! make than to keep: `ekb fix --diff` lays out a whole file, which the diff reads up to
+//! three times ([`super::write_diff`]).
+
+use std::ops::ControlFlow;
+
+use super::{old_line, NewLine, NewLines};
+
+/// A line's origin when it has none.
+const NO_ORIGIN: u32 = u32::MAX;
+
+/// A line's length when it is its origin's line, read from the old text again.
+const AS_ITS_ORIGIN: u32 = u32::MAX;
+
+/// New lines, each kept as its origin and, if it differs from its origin's line, its text:
+/// 8 bytes a line, and the text of the lines that changed (a layout changes few lines of a
+/// file written in it, if any).
+pub struct Recorded<'o> {
+    old: &'o str,
+    /// Each line's origin ([`NO_ORIGIN`]: none) and the length of its text in `changed`
+    /// ([`AS_ITS_ORIGIN`]: none there).
+    lines: Vec<(u32, u32)>,
+    /// The text of the lines that are not their origin's, one after the other.
+    changed: String,
+}
+
+impl<'o> Recorded<'o> {
+    /// Reads the lines of `new`, made from `old`, once.
+    pub fn new(old: &'o str, new: &impl NewLines) -> Recorded<'o> {
+        let mut recorded = Recorded {
+            old,
+            lines: Vec::new(),
+            changed: String::new(),
+        };
+        let _ = new.each_line(&mut |line| {
+            let origin = line.origin.unwrap_or(NO_ORIGIN);
+            let same = line
+                .origin
+                .is_some_and(|origin| old_line(old, origin as usize) == line.text);
+            let length = match same {
+                true => AS_ITS_ORIGIN,
+                false => {
+                    recorded.changed.push_str(line.text);
+                    line.text.len() as u32
+                }
+            };
+            recorded.lines.push((origin, length));
+            ControlFlow::Continue(())
+        });
+        recorded
+    }
+}
+
+impl NewLines for Recorded<'_> {
+    fn each_line(&self, visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>) -> ControlFlow<()> {
+        let mut changed_at = 0;
+        for &(origin, length) in &self.lines {
+            let text = match length {
+                AS_ITS_ORIGIN => old_line(self.old, origin as usize),
+                _ => {
+                    let start = changed_at;
+                    changed_at += length as usize;
+                    &self.changed[start..changed_at]
+                }
+            };
+            let origin = (origin != NO_ORIGIN).then_some(origin);
+            visit(NewLine { text, origin })?;
+        }
+        ControlFlow::Continue(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Lines given with their origins (as starts in the old text).
+    struct Given(Vec<(&'static str, Option<u32>)>);
+
+    impl NewLines for Given {
+        fn each_line(
+            &self,
+            visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>,
+        ) -> ControlFlow<()> {
+            for &(text, origin) in &self.0 {
+                visit(NewLine { text, origin })?;
+            }
+            ControlFlow::Continue(())
+        }
+    }
+
+    fn lines(new: &impl NewLines) -> Vec<(String, Option<u32>)> {
+        let mut lines = Vec::new();
+        let _ = new.each_line(&mut |line| {
+            lines.push((line.text.to_string(), line.origin));
+            ControlFlow::Continue(())
+        });
+        lines
+    }
+
+    #[test]
+    fn gives_the_lines_it_read_every_time() {
+        let old = "a\nb\nc";
+        let given = Given(vec![
+            ("c\n", Some(4)),
+            ("a\n", Some(0)),
+            ("\n", None),
+            ("B\n", Some(2)),
+            ("c", Some(4)),
+        ]);
+        let recorded = Recorded::new(old, &given);
+        assert_eq!(lines(&recorded), lines(&given));
+        assert_eq!(lines(&recorded), lines(&given));
+        // Only the lines unlike their origin's are kept.
+        assert_eq!(recorded.changed, "c\n\nB\n");
+    }
+
+    #[test]
+    fn stops_where_the_visit_breaks() {
+        let given = Given(vec![("a\n", Some(0)), ("b\n", None)]);
+        let recorded = Recorded::new("a\n", &given);
+        let mut seen = 0;
+        let _ = recorded.each_line(&mut |_| {
+            seen += 1;
+            ControlFlow::Break(())
+        });
+        assert_eq!(seen, 1);
+    }
+}
