@@ -53,14 +53,6 @@ impl<'a> Document<'a> {
         Document::parse_text(Cow::Borrowed(text))
     }
 
-    /// Lays out the lines of `text`, which the document owns; `text` back if it cannot be.
-    pub fn parse_owned(text: String) -> Result<Document<'static>, String> {
-        match Layout::read(&text) {
-            Ok(layout) => Ok(Document::laid_out(Cow::Owned(text), layout)),
-            Err(_) => Err(text),
-        }
-    }
-
     /// Lays out the lines of `text`, which the document keeps.
     ///
     /// Memory is what matters on a huge file: the lines are read twice rather than each
