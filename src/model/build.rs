@@ -714,7 +714,7 @@ pub fn parse_id(token: &str) -> Option<u32> {
 
 /// A finite decimal number (`nan`, `inf` and digits out of range are not).
 pub fn parse_number(token: &str) -> Option<f64> {
-    if let Some(number) = parse_plain_decimal(token.as_bytes()) {
+    if let Some(number) = syntax::decimal::f64_of(token.as_bytes()) {
         return Some(number);
     }
     let starts_well = token
@@ -725,41 +725,6 @@ pub fn parse_number(token: &str) -> Option<f64> {
         return None;
     }
     token.parse::<f64>().ok().filter(|n| n.is_finite())
-}
-
-/// A number written as most are, `[-+]digits[.digits]` with at most 15 digits, exactly as
-/// `str::parse` reads it, for a fraction of the work: the digits are an integer below
-/// 2^53 and the power of ten is exact, so the one division rounds correctly (Clinger's
-/// fast path). Anything else is `None`, for `str::parse` to read.
-#[inline]
-fn parse_plain_decimal(bytes: &[u8]) -> Option<f64> {
-    const POWERS_OF_TEN: [f64; 16] = [
-        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-    ];
-    let (negative, digits) = match bytes.first()? {
-        b'-' => (true, &bytes[1..]),
-        b'+' => (false, &bytes[1..]),
-        _ => (false, bytes),
-    };
-    let mut mantissa = 0u64;
-    let mut count = 0;
-    let mut point = None;
-    for (at, &byte) in digits.iter().enumerate() {
-        match byte {
-            b'0'..=b'9' if count < 15 => {
-                mantissa = mantissa * 10 + u64::from(byte - b'0');
-                count += 1;
-            }
-            b'.' if point.is_none() => point = Some(at),
-            _ => return None,
-        }
-    }
-    if count == 0 {
-        return None;
-    }
-    let scale = point.map_or(0, |at| digits.len() - at - 1);
-    let magnitude = mantissa as f64 / POWERS_OF_TEN[scale];
-    Some(if negative { -magnitude } else { magnitude })
 }
 
 /// The three numbers of a pose or a point, reporting what is wrong with them.
@@ -1091,28 +1056,6 @@ mod tests {
     }
 
     proptest::proptest! {
-        /// The fast path reads a plain decimal to the same bits as `str::parse`.
-        #[test]
-        fn plain_decimals_read_as_str_parse_reads_them(
-            sign in "[-+]?",
-            whole in "[0-9]{0,17}",
-            fraction in proptest::option::of("[0-9]{0,17}"),
-        ) {
-            let token = match fraction {
-                Some(fraction) => format!("{sign}{whole}.{fraction}"),
-                None => format!("{sign}{whole}"),
-            };
-            let expected = token.parse::<f64>().ok();
-            proptest::prop_assert_eq!(
-                parse_number(&token).map(f64::to_bits),
-                expected.map(f64::to_bits),
-                "{}",
-                token
-            );
-        }
-    }
-
-    proptest::proptest! {
         /// Any token of number-like bytes reads as `str::parse` reads it, or not at all.
         #[test]
         fn number_like_tokens_read_as_str_parse_reads_them(token in "[-+.0-9eE]{0,20}") {
@@ -1123,19 +1066,6 @@ mod tests {
                 "{}",
                 token
             );
-        }
-    }
-
-    #[test]
-    fn the_fast_path_reads_plain_decimals_only() {
-        let read = |token: &str| parse_plain_decimal(token.as_bytes());
-        assert_eq!(read("26.63"), Some(26.63));
-        assert_eq!(read("-117"), Some(-117.0));
-        assert_eq!(read("+.5"), Some(0.5));
-        assert_eq!(read("7."), Some(7.0));
-        let sixteen_digits = "1234567890123456";
-        for token in ["", "-", ".", "1.2.3", "1e5", "--1", "1-", sixteen_digits] {
-            assert_eq!(read(token), None, "{token}");
         }
     }
 

@@ -66,8 +66,11 @@ pub fn float(line: &[u8], at: usize) -> Option<(f32, usize)> {
     if length == 0 {
         return None;
     }
-    let text = std::str::from_utf8(&line[start..start + length]).ok()?;
-    let value = text.parse::<f32>().ok()?;
+    let token = &line[start..start + length];
+    let value = match crate::syntax::decimal::f32_of(token) {
+        Some(value) => value,
+        None => std::str::from_utf8(token).ok()?.parse::<f32>().ok()?,
+    };
     Some((value, start + length))
 }
 

@@ -7,6 +7,7 @@
 //! [`crate::model`] is built on top of this layer and never looks at raw bytes itself.
 
 mod blanks;
+pub mod decimal;
 mod line;
 pub(crate) mod masks;
 mod newline;
