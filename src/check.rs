@@ -344,8 +344,11 @@ pub fn finish<'a>(
     for (rule, n) in suppressed.silenced {
         counts.subtract(rule, n);
     }
-    if let Some(silenced) = suppression::silencer(source.text(), suppression_lines) {
-        fixes.retain(|fix| !silenced(fix.rule, fix.span.start));
+    // Only `ekb fix` keeps fixes: a plain check does not read the suppressions again.
+    if !fixes.is_empty() {
+        if let Some(silenced) = suppression::silencer(source.text(), suppression_lines) {
+            fixes.retain(|fix| !silenced(fix.rule, fix.span.start));
+        }
     }
     if suppressed.unused > 0 {
         let unused = &structure::unused_suppression::UNUSED_SUPPRESSION;

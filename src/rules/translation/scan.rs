@@ -79,6 +79,7 @@ impl Masks {
     }
 }
 
+/// Whether `byte` belongs to a word: an ASCII letter, or a byte of a non-ASCII character.
 fn in_word(byte: u8) -> bool {
     byte.is_ascii_alphabetic() || !byte.is_ascii()
 }
