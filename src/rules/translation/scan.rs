@@ -86,8 +86,8 @@ fn in_word(byte: u8) -> bool {
 
 impl Scan {
     /// Scans `text`, counting the words for which `is_word` holds; `is_word` is asked only
-    /// of words of `lengths` bytes (at most 8), each given as one number: its bytes,
-    /// little-endian, then zeros.
+    /// of words of `lengths` bytes (at most 8; an empty range asks of none), each given as
+    /// one number: its bytes, little-endian, then zeros.
     pub fn of(
         text: &str,
         lengths: std::ops::RangeInclusive<usize>,
@@ -113,30 +113,71 @@ impl Scan {
                 scan.punctuation |= PUNCTUATION.contains(&byte);
                 scan.delimiters |= DELIMITERS.contains(&byte);
             }
-            let mut starts = masks.in_words & !(masks.in_words << 1 | after_word);
+            let in_words = masks.in_words;
+            let starts = in_words & !(in_words << 1 | after_word);
             scan.words += starts.count_ones() as usize;
-            while starts != 0 {
-                let start = starts.trailing_zeros();
-                starts &= starts - 1;
-                let from = 64 * number + start as usize;
-                let mut to = from + (!(masks.in_words >> start)).trailing_zeros() as usize;
-                if to - from == 64 - start as usize {
-                    // The word reaches the end of the block: it may go on past it.
-                    to += bytes[to..]
-                        .iter()
-                        .take(lengths.end() + 1)
-                        .take_while(|&&byte| in_word(byte))
-                        .count();
+            if !lengths.is_empty() {
+                // The last byte of each word (bit 63: the word may go on past the block),
+                // but for the word that went on from the block before: it was counted there.
+                let mut ends = in_words & !(in_words >> 1);
+                if after_word & in_words != 0 {
+                    ends &= ends - 1;
                 }
-                if lengths.contains(&(to - from)) {
-                    let word = swar::word_at(bytes, from) & u64::MAX >> (8 * (8 - (to - from)));
-                    scan.words_found += usize::from(is_word(word));
-                }
+                let words = Words {
+                    bytes,
+                    block_start: 64 * number,
+                    starts,
+                    ends,
+                };
+                scan.words_found += words.count(&lengths, &is_word);
             }
             after_blank = masks.blanks >> 63;
-            after_word = masks.in_words >> 63;
+            after_word = in_words >> 63;
         }
         scan
+    }
+}
+
+/// The words that start in one block of up to 64 bytes.
+struct Words<'t> {
+    bytes: &'t [u8],
+    block_start: usize,
+    /// Bit `i` for the first byte of a word.
+    starts: u64,
+    /// Bit `i` for the last byte of a word, in the same order.
+    ends: u64,
+}
+
+impl Words<'_> {
+    /// How many of the words of `lengths` bytes `is_word` holds for.
+    #[inline(always)]
+    fn count(
+        mut self,
+        lengths: &std::ops::RangeInclusive<usize>,
+        is_word: &impl Fn(u64) -> bool,
+    ) -> usize {
+        let mut found = 0;
+        while self.starts != 0 {
+            let start = self.starts.trailing_zeros() as usize;
+            let end = self.ends.trailing_zeros() as usize + 1;
+            self.starts &= self.starts - 1;
+            self.ends &= self.ends - 1;
+            let from = self.block_start + start;
+            let mut to = self.block_start + end;
+            if end == 64 {
+                // The word reaches the end of the block: it may go on past it.
+                to += self.bytes[to..]
+                    .iter()
+                    .take(lengths.end() + 1)
+                    .take_while(|&&byte| in_word(byte))
+                    .count();
+            }
+            if lengths.contains(&(to - from)) {
+                let word = swar::word_at(self.bytes, from) & u64::MAX >> (8 * (8 - (to - from)));
+                found += usize::from(is_word(word));
+            }
+        }
+        found
     }
 }
 

@@ -40,8 +40,9 @@ const ENGLISH_LENGTHS: std::ops::RangeInclusive<usize> = 2..=7;
 /// a translation.
 pub(super) fn scan(message: &Message<'_>) -> Scan {
     let lengths = match message.language {
-        // No word is 0 bytes long: none is looked up.
-        Language::English => 0..=0,
+        // English is what is looked for: nothing to look up.
+        #[allow(clippy::reversed_empty_ranges)]
+        Language::English => 1..=0,
         _ => ENGLISH_LENGTHS,
     };
     Scan::of(message.text.value, lengths, is_common_english)
