@@ -119,12 +119,35 @@ fn lacks_pairs(bytes: &[u8]) -> bool {
 
 /// Escapes `line` (no newline in it) onto `out`.
 fn escape_line(line: &str, out: &mut String) {
+    let bytes = line.as_bytes();
     let mut at_start = true;
     let mut previous = None;
     // Whether the word being escaped holds an ASCII letter or digit, once a lookalike in it
     // asked: each word is read at most twice more, however many lookalikes it has.
     let mut latin_word = None;
-    for (index, ch) in line.char_indices() {
+    let mut index = 0;
+    while index < line.len() {
+        // A run of characters that are never escaped is copied whole (nearly every line of
+        // a knowledge base is one, but for a letter or two).
+        let run = bytes[index..]
+            .iter()
+            .position(|&b| !is_inert(b))
+            .unwrap_or(line.len() - index);
+        if run > 0 {
+            let piece = &bytes[index..index + run];
+            out.push_str(&line[index..index + run]);
+            at_start &= piece.iter().all(|&b| b == b' ');
+            if !piece.iter().all(u8::is_ascii_alphanumeric) {
+                latin_word = None;
+            }
+            previous = Some(piece[run - 1] as char);
+            index += run;
+            continue;
+        }
+        let ch = line[index..]
+            .chars()
+            .next()
+            .expect("a character at a boundary");
         if !is_word_char(ch) {
             latin_word = None;
         }
@@ -144,7 +167,14 @@ fn escape_line(line: &str, out: &mut String) {
         }
         at_start &= ch == ' ';
         previous = Some(ch);
+        index += ch.len_utf8();
     }
+}
+
+/// Whether `byte` is printable ASCII that [`escape_line`] never escapes, wherever it is
+/// (`:` and `[` it escapes in some places).
+fn is_inert(byte: u8) -> bool {
+    matches!(byte, b' '..=b'~') && byte != b':' && byte != b'['
 }
 
 /// Whether `before` ends with `##` or `##vso` (any case): a `[` after it would make a line
@@ -449,6 +479,31 @@ mod tests {
     }
 
     #[test]
+    fn plain_lines_are_told_from_lines_to_escape() {
+        for plain in ["", "a: b # [c]", "#a#b:c:", "1234567:8", "  a:"] {
+            assert!(is_plain_line(plain), "{plain:?}");
+        }
+        // `::` and `##` anywhere.
+        for at in 0..12 {
+            for pair in ["::", "##"] {
+                let line = format!("{}{pair}x", "a".repeat(at));
+                assert!(!is_plain_line(&line), "{line:?}");
+            }
+        }
+        for odd in [
+            ":x",
+            "   :x",
+            "a\tb",
+            "a\x7f",
+            "caf\u{e9}",
+            "\x1b[0m",
+            "1234567\x01",
+        ] {
+            assert!(!is_plain_line(odd), "{odd:?}");
+        }
+    }
+
+    #[test]
     fn escapes_controls_and_bidi() {
         assert_eq!(escape("a\x1b[31mb"), "a\\u{001B}[31mb");
         assert_eq!(
@@ -498,6 +553,11 @@ mod tests {
         // In their own script, or standing alone, letters and dashes are what they are.
         assert_eq!(escape("Привет — мир"), "Привет — мир");
         assert_eq!(escape("Ελλάδα"), "Ελλάδα");
+        // Told word by word, across the runs copied whole.
+        assert_eq!(
+            escape("ab\u{0435} \u{0435}: [x]"),
+            "ab\\u{0435 CYRILLIC SMALL LETTER IE} \u{0435}: [x]"
+        );
     }
 
     #[test]

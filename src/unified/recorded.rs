@@ -9,16 +9,17 @@ use super::{old_line, NewLine, NewLines};
 /// A line's origin when it has none.
 const NO_ORIGIN: u32 = u32::MAX;
 
-/// A line's length when it is its origin's line, read from the old text again.
-const AS_ITS_ORIGIN: u32 = u32::MAX;
+/// The bit of a line's length that says it is its origin's line, read from the old text
+/// again (a file is at most [`crate::source::MAX_FILE_SIZE`], far shorter than 2^31 bytes).
+const AS_ITS_ORIGIN: u32 = 1 << 31;
 
-/// New lines, each kept as its origin and, if it differs from its origin's line, its text:
-/// 8 bytes a line, and the text of the lines that changed (a layout changes few lines of a
-/// file written in it, if any).
+/// New lines, each kept as its origin, its length and, if it differs from its origin's
+/// line, its text: 8 bytes a line, and the text of the lines that changed (a layout changes
+/// few lines of a file written in it, if any).
 pub struct Recorded<'o> {
     old: &'o str,
-    /// Each line's origin ([`NO_ORIGIN`]: none) and the length of its text in `changed`
-    /// ([`AS_ITS_ORIGIN`]: none there).
+    /// Each line's origin ([`NO_ORIGIN`]: none) and its length, with [`AS_ITS_ORIGIN`] if
+    /// its text is its origin's line (else it is next in `changed`).
     lines: Vec<(u32, u32)>,
     /// The text of the lines that are not their origin's, one after the other.
     changed: String,
@@ -37,11 +38,12 @@ impl<'o> Recorded<'o> {
             let same = line
                 .origin
                 .is_some_and(|origin| old_line(old, origin as usize) == line.text);
+            let length = line.text.len() as u32;
             let length = match same {
-                true => AS_ITS_ORIGIN,
+                true => length | AS_ITS_ORIGIN,
                 false => {
                     recorded.changed.push_str(line.text);
-                    line.text.len() as u32
+                    length
                 }
             };
             recorded.lines.push((origin, length));
@@ -55,9 +57,12 @@ impl NewLines for Recorded<'_> {
     fn each_line(&self, visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>) -> ControlFlow<()> {
         let mut changed_at = 0;
         for &(origin, length) in &self.lines {
-            let text = match length {
-                AS_ITS_ORIGIN => old_line(self.old, origin as usize),
-                _ => {
+            let text = match length & AS_ITS_ORIGIN != 0 {
+                true => {
+                    let start = origin as usize;
+                    &self.old[start..start + (length & !AS_ITS_ORIGIN) as usize]
+                }
+                false => {
                     let start = changed_at;
                     changed_at += length as usize;
                     &self.changed[start..changed_at]
