@@ -12,6 +12,7 @@ use std::fmt;
 use super::{known_key, slot, Document, Written, UNKNOWN_SLOT};
 use crate::model::build::{parse_id, tour_items};
 use crate::model::{IdMap, Key, ValueKind};
+use crate::parallel;
 use crate::render::escape::escape;
 use crate::rewrite::{name_lines, NAMED_LINES};
 use crate::suppression;
@@ -268,17 +269,10 @@ fn arrange(
         Some(placed) => placed
             .into_iter()
             .for_each(|(start, block)| place(start, block)),
-        None => {
-            for line in syntax::lines(text) {
-                let Body::Entry { key, args } = line.body else {
-                    continue;
-                };
-                if let Placement::Located { id, .. } = placement(text, key, args) {
-                    let block = blocks.find(id).expect("counted in the first reading");
-                    place(line.span.start, block);
-                }
-            }
-        }
+        None => each_located(text, |start, id| {
+            let block = blocks.find(id).expect("counted in the first reading");
+            place(start, block);
+        }),
     }
     let mut start = 0;
     for (block, &end) in next.iter().enumerate() {
@@ -288,6 +282,41 @@ fn arrange(
         start = end;
     }
     (order, next)
+}
+
+/// How many bytes of text [`each_located`] reads at a time.
+const READ_AT_A_TIME: usize = 16 << 20;
+
+/// Where each located entry line of `text` starts, and its id, given to `each` in order:
+/// the lines read in parts on the cores, [`READ_AT_A_TIME`] bytes at a time.
+fn each_located(text: &str, mut each: impl FnMut(u32, u32)) {
+    let bytes = text.as_bytes();
+    let mut at = 0;
+    while at < bytes.len() {
+        let newline = bytes
+            .get(at + READ_AT_A_TIME..)
+            .and_then(|rest| memchr::memchr(b'\n', rest));
+        let end = newline.map_or(bytes.len(), |newline| at + READ_AT_A_TIME + newline + 1);
+        let parts = parallel::parts_for_text(end - at);
+        let ranges = parallel::line_ranges(&bytes[at..end], parts);
+        let located = parallel::map_ranges(ranges, |range| {
+            let end = at + range.end;
+            syntax::lines_from(text, at + range.start)
+                .take_while(|line| (line.span.start as usize) < end)
+                .filter_map(|line| match line.body {
+                    Body::Entry { key, args } => match placement(text, key, args) {
+                        Placement::Located { id, .. } => Some((line.span.start, id)),
+                        _ => None,
+                    },
+                    _ => None,
+                })
+                .collect::<Vec<_>>()
+        });
+        for (start, id) in located.into_iter().flatten() {
+            each(start, id);
+        }
+        at = end;
+    }
 }
 
 /// Puts the lines starting at `block` in key order ([`slot`]), keeping the order of lines of
