@@ -593,12 +593,12 @@ mod tests {
         // Lines shorter than a placed line's 8 bytes are read again to be put in place (in
         // parts, on the cores); and written in several batches.
         let lines = 300_000;
-        let text = "a 1 x\nb 2 y\n".repeat(lines);
+        let text = format!("# head\n\n{}", "a 1 x\nb 2 y\n".repeat(lines));
         assert!(text.len() > 2 * parallel::MIN_BYTES_PER_PART && lines > LINES_AT_A_TIME);
         let document = Document::parse(&text).unwrap();
         let block = |line: &str| line.repeat(lines);
         let expected = format!(
-            "{}\n{}",
+            "# head\n\n{}\n{}",
             block("a                             1 x\n"),
             block("b                             2 y\n")
         );
@@ -606,6 +606,10 @@ mod tests {
         let mut written = Vec::new();
         document.write_checked(&mut written).unwrap();
         assert!(written == expected.as_bytes());
+        // A stray carriage return in the second part is named by its line.
+        let text = format!("{text}a 1 x\r\r\n");
+        let error = Document::parse(&text).unwrap_err();
+        assert_eq!((error.count, error.lines[0].0), (1, 2 * lines as u32 + 3));
     }
 
     #[test]
