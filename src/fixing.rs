@@ -142,7 +142,9 @@ fn pass<R>(
     // The check is done with: only the fixes are kept while the new text is written.
     let fixes = std::mem::take(&mut checked.fixes);
     drop(checked);
-    let new = chosen.write(text.text(), &fixes);
+    // The text read is let go of as the new one is written (a mapped file's pages): the
+    // two are not held whole at once.
+    let new = chosen.write(text.text(), &fixes, |end| text.release_before(end));
     drop(fixes);
     for (rule, count) in chosen.counts {
         *passes.counts.entry(rule).or_insert(0) += count;
@@ -274,7 +276,7 @@ fn apply_where(
     allowed: impl Fn(&ListedFix<'_>) -> bool,
 ) -> Option<(String, Counts)> {
     let chosen = choose(text, fixes, allowed)?;
-    Some((chosen.write(text, fixes), chosen.counts))
+    Some((chosen.write(text, fixes, |_| {}), chosen.counts))
 }
 
 /// The fixes of a [`FixList`] chosen to be applied.
@@ -328,15 +330,16 @@ fn choose(text: &str, fixes: &FixList, allowed: impl Fn(&ListedFix<'_>) -> bool)
 
 impl Chosen {
     /// `text` with the edits of the fixes chosen of `fixes` made, written in one pass
-    /// (the edits sorted first if they do not come in order).
-    fn write(&self, text: &str, fixes: &FixList) -> String {
+    /// (the edits sorted first if they do not come in order); told to `copied` as in
+    /// [`write_edits`].
+    fn write(&self, text: &str, fixes: &FixList, copied: impl FnMut(usize)) -> String {
         let edits = edits_taken(text, fixes, &self.taken);
         if self.in_order {
-            return write_edits(text, edits);
+            return write_edits(text, edits, copied);
         }
         let mut edits: Vec<(Span, Cow<'_, str>)> = edits.collect();
         edits.sort_by_key(|(span, _)| (span.start, span.end));
-        write_edits(text, edits.into_iter())
+        write_edits(text, edits.into_iter(), copied)
     }
 }
 
@@ -366,17 +369,31 @@ pub fn splice(text: &str, edits: &[Edit]) -> String {
     write_edits(
         text,
         sorted.iter().map(|e| (e.span, e.replacement.as_str())),
+        |_| {},
     )
 }
 
-/// `text` with `edits` made, given in order of position, none overlapping another.
-fn write_edits(text: &str, edits: impl Iterator<Item = (Span, impl AsRef<str>)>) -> String {
+/// How much of the text [`write_edits`] copies between two calls of its `copied`.
+const COPIED_STEP: usize = 4 << 20;
+
+/// `text` with `edits` made, given in order of position, none overlapping another. Tells
+/// `copied` how far into `text` it has read, every [`COPIED_STEP`] bytes or so.
+fn write_edits(
+    text: &str,
+    edits: impl Iterator<Item = (Span, impl AsRef<str>)>,
+    mut copied: impl FnMut(usize),
+) -> String {
     let mut out = String::with_capacity(text.len());
     let mut at = 0;
+    let mut told = 0;
     for (span, replacement) in edits {
         out.push_str(&text[at..span.start as usize]);
         out.push_str(replacement.as_ref());
         at = span.end as usize;
+        if at - told >= COPIED_STEP {
+            copied(at);
+            told = at;
+        }
     }
     out.push_str(&text[at..]);
     out
@@ -597,5 +614,18 @@ mod tests {
         let (fixed, counts) = apply(text, &[at(8, "C"), at(0, "A"), at(4, "B")]).unwrap();
         assert_eq!(fixed, "A B C\n");
         assert_eq!(counts.get(COMPAT_READER_CRASH.name), Some(&3));
+    }
+
+    #[test]
+    fn the_text_read_is_told_copied_as_the_new_one_is_written() {
+        let text = "k 1 v\n".repeat(3 * COPIED_STEP / 6);
+        let edits = (0..text.len())
+            .step_by(6)
+            .map(|at| (Span::new(at, at + 1), "K"));
+        let mut told = Vec::new();
+        let written = write_edits(&text, edits, |end| told.push(end));
+        assert_eq!(written, text.replace("k 1", "K 1"));
+        assert_eq!(told.len(), 2, "{told:?}");
+        assert!(told[0] >= COPIED_STEP && told[1] - told[0] >= COPIED_STEP);
     }
 }

@@ -218,6 +218,20 @@ impl SourceFile {
         }
     }
 
+    /// Lets go of the memory of the text before `end`, which will not be read for a while
+    /// (`ekb fix` writing the new text of a large file would otherwise hold both whole): a
+    /// mapped file's pages leave memory and are read again from the file if the text is
+    /// read there again. Text in memory is kept.
+    pub fn release_before(&self, end: usize) {
+        if let Text::Mapped(map) = &self.text {
+            // SAFETY: the mapping is read-only and never written, so its pages dropped hold
+            // nothing but the file's bytes, read again when touched (unless the file changed
+            // meanwhile: the risk the module documentation accepts).
+            let advice = memmap2::UncheckedAdvice::DontNeed;
+            let _ = unsafe { map.unchecked_advise_range(advice, 0, end.min(map.len())) };
+        }
+    }
+
     /// Byte ranges of the original file that were not valid UTF-8 (replaced by `?` in `text`):
     /// the first of each line (one per line is what is reported), on the first
     /// [`MAX_KEPT_PER_RULE`] such lines (a binary file has millions).
@@ -476,6 +490,11 @@ mod tests {
         assert!(matches!(file.text, Text::Mapped(_)));
         assert_eq!(file.text().as_bytes(), bytes);
         assert_eq!(file.clone().text(), file.text());
+        // Its pages let go of are read again from the file.
+        file.release_before(bytes.len() / 2);
+        assert_eq!(file.text().as_bytes(), bytes);
+        file.release_before(usize::MAX);
+        assert_eq!(file.text().as_bytes(), bytes);
 
         bytes[30] = 0xff;
         std::fs::write(&path, &bytes).unwrap();

@@ -12,6 +12,7 @@ use std::fmt;
 use super::{known_key, slot, Document, Written, UNKNOWN_SLOT};
 use crate::model::build::{parse_id, tour_items};
 use crate::model::{IdMap, Key, ValueKind};
+use crate::parallel;
 use crate::render::escape::escape;
 use crate::rewrite::{name_lines, NAMED_LINES};
 use crate::suppression;
@@ -98,7 +99,80 @@ struct Layout {
 /// The most bytes [`Layout::placed`] takes, as a share of the text's size.
 const PLACED_SHARE: usize = 8;
 
+/// What the first reading of a file needs of a line. Blank and comment lines matter only
+/// before the first entry (for the header): a part of the file read on its own tells those
+/// before its own first entry, and the whole reading drops those after the file's.
+enum Seen {
+    StrayReturn,
+    Blank {
+        end: u32,
+    },
+    /// A comment `# ekb: ignore[…]` for the next line.
+    Suppression {
+        start: u32,
+    },
+    Entry {
+        start: u32,
+        end: u32,
+        placement: Placement,
+    },
+}
+
+/// What the first reading needs of the lines from `lines` up to `end` (see [`Seen`]).
+fn seen_lines(text: &str, lines: syntax::Lines<'_>, end: usize) -> Vec<Seen> {
+    let mut seen_entry = false;
+    lines
+        .take_while(|line| (line.span.start as usize) < end)
+        .filter_map(|line| {
+            if ends_in_stray_return(text, &line) {
+                return Some(Seen::StrayReturn);
+            }
+            match line.body {
+                Body::Blank if !seen_entry => Some(Seen::Blank { end: line.span.end }),
+                Body::Comment(comment)
+                    if !seen_entry && suppression::is_for_next_line(comment.text(text)) =>
+                {
+                    Some(Seen::Suppression {
+                        start: line.span.start,
+                    })
+                }
+                Body::Blank | Body::Comment(_) => None,
+                Body::Entry { key, args } => {
+                    seen_entry = true;
+                    Some(Seen::Entry {
+                        start: line.span.start,
+                        end: line.span.end,
+                        placement: placement(text, key, args),
+                    })
+                }
+            }
+        })
+        .collect()
+}
+
+/// The lines of `text` that end in a stray carriage return, named.
+fn stray_returns(text: &str) -> Unformattable {
+    let mut stray_returns = Unformattable::default();
+    for line in syntax::lines(text).filter(|line| ends_in_stray_return(text, line)) {
+        stray_returns.count += 1;
+        if stray_returns.lines.len() < NAMED_LINES {
+            let content: String = line
+                .content()
+                .text(text)
+                .trim_matches([' ', '\t'])
+                .chars()
+                .take(40)
+                .collect();
+            stray_returns
+                .lines
+                .push((line.number, escape(&content).into_owned()));
+        }
+    }
+    stray_returns
+}
+
 impl Layout {
+    /// The first reading of `text`, its lines read in parts on the cores.
     fn read(text: &str) -> Result<Layout, Unformattable> {
         let most_placed = text.len() / PLACED_SHARE / std::mem::size_of::<(u32, u32)>();
         let mut layout = Layout {
@@ -108,59 +182,40 @@ impl Layout {
         let mut seen_entry = false;
         // Where the first `# ekb: ignore[…]` comment before any entry starts.
         let mut first_suppression = None;
-        let mut stray_returns = Unformattable::default();
-        for line in syntax::lines(text) {
-            if ends_in_stray_return(text, &line) {
-                stray_returns.count += 1;
-                if stray_returns.lines.len() < NAMED_LINES {
-                    let content: String = line
-                        .content()
-                        .text(text)
-                        .trim_matches([' ', '\t'])
-                        .chars()
-                        .take(40)
-                        .collect();
-                    stray_returns
-                        .lines
-                        .push((line.number, escape(&content).into_owned()));
-                }
-                continue;
+        let mut any_stray_return = false;
+        let each = |seen: Seen| match seen {
+            Seen::StrayReturn => any_stray_return = true,
+            Seen::Blank { end } if !seen_entry => layout.header_end = end,
+            Seen::Suppression { start } if !seen_entry && first_suppression.is_none() => {
+                first_suppression = Some(start);
             }
-            let (key, args) = match line.body {
-                Body::Blank if !seen_entry => {
-                    layout.header_end = line.span.end;
-                    continue;
-                }
-                Body::Comment(comment)
-                    if !seen_entry
-                        && first_suppression.is_none()
-                        && suppression::is_for_next_line(comment.text(text)) =>
-                {
-                    first_suppression = Some(line.span.start);
-                    continue;
-                }
-                Body::Blank | Body::Comment(_) => continue,
-                Body::Entry { key, args } => (key, args),
-            };
-            seen_entry = true;
-            layout.footer_start = line.span.end;
-            match placement(text, key, args) {
-                Placement::Tour => layout.tour.push(line.span.start),
-                Placement::Unplaced => layout.unplaced.push(line.span.start),
-                Placement::Located { id, slot } => {
-                    let block = layout.blocks.count(id, slot);
-                    match &mut layout.placed {
-                        Some(placed) if placed.len() < most_placed => {
-                            placed.push((line.span.start, block));
+            Seen::Blank { .. } | Seen::Suppression { .. } => {}
+            Seen::Entry {
+                start,
+                end,
+                placement,
+            } => {
+                seen_entry = true;
+                layout.footer_start = end;
+                match placement {
+                    Placement::Tour => layout.tour.push(start),
+                    Placement::Unplaced => layout.unplaced.push(start),
+                    Placement::Located { id, slot } => {
+                        let block = layout.blocks.count(id, slot);
+                        match &mut layout.placed {
+                            Some(placed) if placed.len() < most_placed => {
+                                placed.push((start, block));
+                            }
+                            _ => layout.placed = None,
                         }
-                        _ => layout.placed = None,
+                        layout.located += 1;
                     }
-                    layout.located += 1;
                 }
             }
-        }
-        if stray_returns.count > 0 {
-            return Err(stray_returns);
+        };
+        read_in_parts(text, |lines, end| seen_lines(text, lines, end), each);
+        if any_stray_return {
+            return Err(stray_returns(text));
         }
         if !seen_entry {
             // Without entries there is nothing to set a header apart from: it is all footer.
@@ -268,17 +323,10 @@ fn arrange(
         Some(placed) => placed
             .into_iter()
             .for_each(|(start, block)| place(start, block)),
-        None => {
-            for line in syntax::lines(text) {
-                let Body::Entry { key, args } = line.body else {
-                    continue;
-                };
-                if let Placement::Located { id, .. } = placement(text, key, args) {
-                    let block = blocks.find(id).expect("counted in the first reading");
-                    place(line.span.start, block);
-                }
-            }
-        }
+        None => each_located(text, |(start, id)| {
+            let block = blocks.find(id).expect("counted in the first reading");
+            place(start, block);
+        }),
     }
     let mut start = 0;
     for (block, &end) in next.iter().enumerate() {
@@ -288,6 +336,51 @@ fn arrange(
         start = end;
     }
     (order, next)
+}
+
+/// How many bytes of text [`read_in_parts`] reads at a time.
+const READ_AT_A_TIME: usize = 8 << 20;
+
+/// What `part` makes of each range of lines of `text` (a starting offset and an end), given
+/// to `each` in order: the lines read in parts on the cores, [`READ_AT_A_TIME`] bytes at a
+/// time (what `part` makes of them is held meanwhile).
+fn read_in_parts<T: Send>(
+    text: &str,
+    part: impl Fn(syntax::Lines<'_>, usize) -> Vec<T> + Sync,
+    mut each: impl FnMut(T),
+) {
+    let bytes = text.as_bytes();
+    let mut at = 0;
+    while at < bytes.len() {
+        let newline = bytes
+            .get(at + READ_AT_A_TIME..)
+            .and_then(|rest| memchr::memchr(b'\n', rest));
+        let end = newline.map_or(bytes.len(), |newline| at + READ_AT_A_TIME + newline + 1);
+        let ranges = parallel::line_ranges(&bytes[at..end], parallel::parts_for_text(end - at));
+        let parts = parallel::map_ranges(ranges, |range| {
+            part(syntax::lines_from(text, at + range.start), at + range.end)
+        });
+        parts.into_iter().flatten().for_each(&mut each);
+        at = end;
+    }
+}
+
+/// Where each located entry line of `text` starts, and its id, given to `each` in order
+/// (read in parts on the cores).
+fn each_located(text: &str, each: impl FnMut((u32, u32))) {
+    let part = |lines: syntax::Lines<'_>, end: usize| {
+        lines
+            .take_while(|line| (line.span.start as usize) < end)
+            .filter_map(|line| match line.body {
+                Body::Entry { key, args } => match placement(text, key, args) {
+                    Placement::Located { id, .. } => Some((line.span.start, id)),
+                    _ => None,
+                },
+                _ => None,
+            })
+            .collect()
+    };
+    read_in_parts(text, part, each);
 }
 
 /// Puts the lines starting at `block` in key order ([`slot`]), keeping the order of lines of

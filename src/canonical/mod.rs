@@ -35,8 +35,10 @@ pub use from_source::Unformattable;
 use std::borrow::Cow;
 use std::io::{self, Write};
 use std::ops::ControlFlow;
+use std::sync::Mutex;
 
 use crate::model::Key;
+use crate::parallel::{self, lock};
 use crate::reader::Reader;
 use crate::syntax::{self, Body, Line};
 use crate::unified::{NewLine, NewLines};
@@ -53,6 +55,12 @@ const BYTE_ORDER_MARK: char = '\u{feff}';
 
 /// The slot of a key that is no known key, even ignoring case: after every known key.
 const UNKNOWN_SLOT: u8 = Key::CulturalKnowledge as u8 + 1;
+
+/// How many lines [`Document::write_checked`] lays out before it writes them.
+const LINES_AT_A_TIME: usize = 1 << 17;
+
+/// The fewest lines a core is given to lay out: fewer are not worth starting a thread.
+const MIN_LINES_PER_PART: usize = 1 << 13;
 
 /// The widest padding a key gets (`VALUE_COLUMN - 1` spaces, for a key of one character).
 const PADDING: &str = "                              ";
@@ -261,37 +269,91 @@ impl<'a> Document<'a> {
         out
     }
 
-    /// Writes the canonical text to `out`, a line at a time, each line read back as it is
-    /// written: one that would not read as the line meant (the layout must keep every line
-    /// and value) is [`WriteError::NotReadBack`], and nothing after it is written. Nothing
-    /// but one line is held, however large the file.
+    /// Writes the canonical text to `out`, each line read back as it is laid out: one that
+    /// would not read as the line meant (the layout must keep every line and value) is
+    /// [`WriteError::NotReadBack`], and nothing after it is written. The lines are laid out
+    /// [`LINES_AT_A_TIME`] at a time, in parts on the cores: however large the file, only
+    /// those are held.
     pub fn write_checked(&self, out: &mut impl Write) -> Result<(), WriteError> {
-        // Each line is read after a newline, as in the file, where only the first line may
-        // begin with a byte-order mark that reading drops.
-        let mut buffer = String::from("\n");
+        let mut lines = Vec::new();
         let mut first = true;
         let mut failed = None;
-        let _ = self.walk(|item, _| {
-            buffer.truncate(1);
-            push_item(&mut buffer, &item);
-            let (text, start) = match std::mem::take(&mut first) {
-                true => (&buffer[1..], 0),
-                false => (buffer.as_str(), 1),
-            };
-            let read_back = syntax::lines_from(text, start).next();
-            failed = if read_back.is_some_and(|read| reads_as(text, &read, &item)) {
-                out.write_all(&buffer.as_bytes()[1..])
-                    .err()
-                    .map(WriteError::Io)
-            } else {
-                Some(WriteError::NotReadBack)
-            };
+        // The texts of the parts, kept for the next lines (not allocated again each time).
+        let texts = Mutex::new(Vec::new());
+        let mut write = |lines: &mut Vec<Unread<'_>>| {
+            let written = self.write_lines(lines, std::mem::take(&mut first), &texts, out);
+            lines.clear();
+            written
+        };
+        let _ = self.walk_unread(|line, _| {
+            lines.push(line);
+            if lines.len() < LINES_AT_A_TIME {
+                return ControlFlow::Continue(());
+            }
+            failed = write(&mut lines).err();
             match failed {
                 Some(_) => ControlFlow::Break(()),
                 None => ControlFlow::Continue(()),
             }
         });
+        match failed {
+            Some(error) => Err(error),
+            None => write(&mut lines),
+        }
+    }
+
+    /// Lays out `lines` (the file's first ones if `first`), in parts on the cores, each in
+    /// a text taken from `texts` (and given back), and writes them to `out` in order, up to
+    /// the first line that does not read back.
+    fn write_lines(
+        &self,
+        lines: &[Unread<'_>],
+        first: bool,
+        texts: &Mutex<Vec<String>>,
+        out: &mut impl Write,
+    ) -> Result<(), WriteError> {
+        let ranges = parallel::item_ranges(lines.len(), MIN_LINES_PER_PART);
+        let parts = parallel::map_ranges(ranges, |range| {
+            let mut text = lock(texts).pop().unwrap_or_default();
+            let read_back =
+                self.lay_out_checked(&lines[range.clone()], first && range.start == 0, &mut text);
+            (text, read_back)
+        });
+        let mut failed = None;
+        for (text, read_back) in parts {
+            if failed.is_none() {
+                failed = match out.write_all(&text.as_bytes()[1..]) {
+                    Err(error) => Some(WriteError::Io(error)),
+                    Ok(()) => (!read_back).then_some(WriteError::NotReadBack),
+                };
+            }
+            lock(texts).push(text);
+        }
         failed.map_or(Ok(()), Err)
+    }
+
+    /// Lays out `lines` in `text` after a newline, each read back after the newline before
+    /// it, as in the file (where only the first line, if `first`, may begin with a
+    /// byte-order mark that reading drops): up to the first that does not read back.
+    /// Returns whether all did.
+    fn lay_out_checked(&self, lines: &[Unread<'_>], first: bool, text: &mut String) -> bool {
+        text.clear();
+        text.push('\n');
+        for line in lines {
+            let start = text.len();
+            let item = line.clone().read(self);
+            push_item(text, &item);
+            let (laid_out, at) = match first && start == 1 {
+                true => (&text[1..], 0),
+                false => (text.as_str(), start),
+            };
+            let read_back = syntax::lines_from(laid_out, at).next();
+            if !read_back.is_some_and(|read| reads_as(laid_out, &read, &item)) {
+                text.truncate(start);
+                return false;
+            }
+        }
+        true
     }
 
     /// Whether `text` is this document's [`render`](Self::render) already (the usual case of
@@ -322,12 +384,12 @@ impl<'a> Document<'a> {
     }
 
     /// [`Document::walk`], each entry line given unread: read it only if it is wanted.
-    fn walk_unread(
-        &self,
-        mut visit: impl FnMut(Unread<'_>, Option<u32>) -> ControlFlow<()>,
+    fn walk_unread<'d>(
+        &'d self,
+        mut visit: impl FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
         let mut sections = 0;
-        let mut visit = |line: Unread<'_>, origin: u32, new_section: bool| {
+        let mut visit = |line: Unread<'d>, origin: u32, new_section: bool| {
             if new_section {
                 // Sections are apart; and a first line starting with U+FEFF would be read as a
                 // byte-order mark.
@@ -524,6 +586,30 @@ mod tests {
         let mut written = Vec::new();
         document.write_checked(&mut written).unwrap();
         assert_eq!(String::from_utf8(written).unwrap(), document.render());
+    }
+
+    #[test]
+    fn a_large_file_is_laid_out_in_parts_as_in_one() {
+        // Lines shorter than a placed line's 8 bytes are read again to be put in place (in
+        // parts, on the cores); and written in several batches.
+        let lines = 300_000;
+        let text = format!("# head\n\n{}", "a 1 x\nb 2 y\n".repeat(lines));
+        assert!(text.len() > 2 * parallel::MIN_BYTES_PER_PART && lines > LINES_AT_A_TIME);
+        let document = Document::parse(&text).unwrap();
+        let block = |line: &str| line.repeat(lines);
+        let expected = format!(
+            "# head\n\n{}\n{}",
+            block("a                             1 x\n"),
+            block("b                             2 y\n")
+        );
+        assert_eq!(document.render(), expected);
+        let mut written = Vec::new();
+        document.write_checked(&mut written).unwrap();
+        assert!(written == expected.as_bytes());
+        // A stray carriage return in the second part is named by its line.
+        let text = format!("{text}a 1 x\r\r\n");
+        let error = Document::parse(&text).unwrap_err();
+        assert_eq!((error.count, error.lines[0].0), (1, 2 * lines as u32 + 3));
     }
 
     #[test]

@@ -9,7 +9,7 @@ mod share;
 
 use std::ops::Range;
 
-pub use share::{map_shared, Share};
+pub use share::{lock, map_shared, Share};
 
 /// Below this many bytes a part of a text is not worth a thread: starting one costs about
 /// as much as reading 100 kB, and a real knowledge base is a few kilobytes.

@@ -218,7 +218,7 @@ pub fn map_shared<R: Send>(
 }
 
 /// The value in `mutex`. A panic while one is held is raised again by [`map_shared`].
-fn lock<T>(mutex: &Mutex<T>) -> MutexGuard<'_, T> {
+pub fn lock<T>(mutex: &Mutex<T>) -> MutexGuard<'_, T> {
     mutex.lock().unwrap_or_else(PoisonError::into_inner)
 }
 
