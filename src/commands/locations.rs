@@ -49,13 +49,13 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let source = context.read(&path)?;
     let checked = check(&source, &options);
     present::note_errors(&checked, context.quiet);
-    let text = checked.source.text().as_bytes();
-    let loaded = reader::load(text, checked.reader);
+    // The JSON shows the file as written: only the other formats load it as the reader does.
+    let load = || reader::load(checked.source.text().as_bytes(), checked.reader);
     let mut stdout = BufWriter::new(std::io::stdout().lock());
     match args.format {
-        LocationsFormat::Table => write_table(&checked, &loaded, &mut stdout)?,
+        LocationsFormat::Table => write_table(&checked, &load(), &mut stdout)?,
         LocationsFormat::Json => json::write(&JsonLocations::new(&checked), &mut stdout)?,
-        LocationsFormat::Classic => stdout.write_all(render_classic(&loaded).as_bytes())?,
+        LocationsFormat::Classic => stdout.write_all(render_classic(&load()).as_bytes())?,
     }
     stdout.flush()?;
     Ok(Exit::Clean)

@@ -62,9 +62,12 @@ pub fn read(line: &[u8], offset: usize, reader: Reader) -> LineRead {
         return LineRead::Skipped;
     };
     let key_span = at(key_range.clone());
-    let known = std::str::from_utf8(&line[key_range.clone()])
-        .ok()
-        .and_then(Key::from_name);
+    // Compared as bytes: a key is ASCII, and making a `str` of every line's first word first
+    // cost as much as finding the key.
+    let written = &line[key_range.clone()];
+    let known = Key::ALL
+        .into_iter()
+        .find(|key| key.name().as_bytes() == written);
     let Some(key) = known.filter(|&key| reader.reads(key)) else {
         return LineRead::Ignored { key: key_span };
     };
