@@ -256,13 +256,13 @@ fn render_classic(loaded: &Loaded<'_>) -> String {
     };
     for location in loaded.locations.values() {
         let label = |name: &str| format!("{name:<CLASSIC_WIDTH$}");
-        let text = |key: Key| match location.field(key).map(|field| field.value) {
+        let text = |key: Key| match loaded.field(location, key).map(|field| field.value) {
             Some(LoadedValue::Text(span)) => {
                 escape(&String::from_utf8_lossy(&loaded.text()[span.range()])).into_owned()
             }
             _ => String::new(),
         };
-        let numbers = |key: Key| location.field(key).map(|field| field.value);
+        let numbers = |key: Key| loaded.field(location, key).map(|field| field.value);
         out.push_str(&format!("{}{:<4} \n", label("Key"), location.id));
         out.push_str(&format!(
             "{}{} \n",
