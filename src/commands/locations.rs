@@ -53,7 +53,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let load = || reader::load(checked.source.text().as_bytes(), checked.reader);
     let mut stdout = BufWriter::new(std::io::stdout().lock());
     match args.format {
-        LocationsFormat::Table => write_table(&checked, &load(), &mut stdout)?,
+        LocationsFormat::Table => write_table(&checked, load(), &mut stdout)?,
         LocationsFormat::Json => json::write(&JsonLocations::new(&checked), &mut stdout)?,
         LocationsFormat::Classic => stdout.write_all(render_classic(&load()).as_bytes())?,
     }
@@ -63,11 +63,11 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
 
 /// The table of locations, each value as the chosen reader loads it, marked where the file
 /// says otherwise.
-fn write_table(checked: &Checked<'_>, loaded: &Loaded<'_>, out: &mut impl Write) -> io::Result<()> {
+fn write_table(checked: &Checked<'_>, loaded: Loaded<'_>, out: &mut impl Write) -> io::Result<()> {
     let kb = &checked.kb;
     let text = checked.source.text().as_bytes();
     let as_loaded = |location: &Location<'_>, field: Field, key: Key| {
-        let held = view::held(loaded, text, location.id, key);
+        let held = view::held(&loaded, text, location.id, key);
         field
             .get(location)
             .map(|(value, _)| robot::as_loaded(field, &value, &held, checked.reader))
@@ -111,6 +111,8 @@ fn write_table(checked: &Checked<'_>, loaded: &Loaded<'_>, out: &mut impl Write)
         rows
     });
     let table = table::Rows::join(parts).unwrap_or_else(|| table::Rows::new(&header));
+    // The rows hold what the table shows: what the reader holds goes before it is drawn.
+    drop(loaded);
     table.write(out)?;
     let count = kb.locations().len();
     let plural = if count == 1 { "" } else { "s" };

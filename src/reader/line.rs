@@ -55,7 +55,16 @@ pub enum LoadedValue {
 /// it fitted), which starts at `offset` in the file.
 pub fn read(line: &[u8], offset: usize, reader: Reader) -> LineRead {
     // A C string ends at its first NUL.
-    let line = &line[..memchr::memchr(0, line).unwrap_or(line.len())];
+    read_c_string(
+        &line[..memchr::memchr(0, line).unwrap_or(line.len())],
+        offset,
+        reader,
+    )
+}
+
+/// [`read`] of a line without a NUL byte (a text without one need not be searched line by
+/// line).
+pub fn read_c_string(line: &[u8], offset: usize, reader: Reader) -> LineRead {
     let at = |range: std::ops::Range<usize>| Span::new(offset + range.start, offset + range.end);
     let Some(key_range) = scan::word(line, 0) else {
         return LineRead::Skipped;

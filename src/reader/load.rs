@@ -28,9 +28,9 @@ pub struct LoadedLocation {
 }
 
 /// The fields that lines set, each as where its line starts and where the value starts in
-/// it: reading each field's line again from its start when a view asked for it took as long
-/// as loading the file, and holding each value as a [`LoadedValue`] would take 400 bytes a
-/// location.
+/// it, so that a view reads the value alone: reading each field's whole line again cost
+/// `export --as-loaded` nearly as much as the load itself, and holding each value as a
+/// [`LoadedValue`] would take 400 bytes a location.
 #[derive(Debug, Clone, PartialEq)]
 struct SetFields {
     /// Where the `fgets` call that last set each field starts, plus one (0: none), by
@@ -232,10 +232,15 @@ struct Part {
 fn read_part(text: &[u8], range: std::ops::Range<usize>, reader: Reader) -> Part {
     let mut part = Part::default();
     let start = range.start;
-    for (offset, chunk) in chunks(&text[range], reader.line_buffer()) {
+    let part_text = &text[range];
+    let read = match memchr::memchr(0, part_text) {
+        Some(_) => line::read,
+        None => line::read_c_string,
+    };
+    for (offset, chunk) in chunks(part_text, reader.line_buffer()) {
         let offset = start + offset;
         let line = Span::new(offset, offset + chunk.len());
-        match line::read(chunk, offset, reader) {
+        match read(chunk, offset, reader) {
             LineRead::Value {
                 key,
                 id,
