@@ -29,7 +29,7 @@ fn differences(kb: &KnowledgeBase<'_>, loaded: &Loaded, text: &str) -> Vec<Diffe
         if written.is_none() {
             let lines = Key::ALL
                 .iter()
-                .filter_map(|&key| robot.field(key))
+                .filter_map(|&key| loaded.field(robot, key))
                 .map(|field| field.line.start)
                 .collect();
             found.push(differ(
@@ -50,7 +50,7 @@ fn differences(kb: &KnowledgeBase<'_>, loaded: &Loaded, text: &str) -> Vec<Diffe
             ));
             continue;
         };
-        let robot_line = |key: Key| robot.field(key).map(|field| field.line.start);
+        let robot_line = |key: Key| loaded.field(robot, key).map(|field| field.line.start);
         let lines = |written: Option<u32>, key: Key| -> Vec<u32> {
             written.into_iter().chain(robot_line(key)).collect()
         };
@@ -61,8 +61,8 @@ fn differences(kb: &KnowledgeBase<'_>, loaded: &Loaded, text: &str) -> Vec<Diffe
         texts.push(Key::RobotLocationDescription);
         for key in texts {
             let written = location.text_value(key);
-            let held = robot
-                .field(key)
+            let held = loaded
+                .field(robot, key)
                 .map(|field| loaded_text(&field.value).map(String::from_utf8_lossy));
             let same = match (written, &held) {
                 (None, None) => true,
@@ -81,7 +81,7 @@ fn differences(kb: &KnowledgeBase<'_>, loaded: &Loaded, text: &str) -> Vec<Diffe
                 ));
             }
         }
-        let numbers = |key: Key| robot.field(key).map(|field| field.value);
+        let numbers = |key: Key| loaded.field(robot, key).map(|field| field.value);
         // The key of the line the pose was read from (a later line of the other pose key
         // may have been rejected).
         let pose_line_key = |at: u32| {
@@ -125,7 +125,9 @@ fn differences(kb: &KnowledgeBase<'_>, loaded: &Loaded, text: &str) -> Vec<Diffe
         }
         if reader.reads(Key::GestureArm) {
             let written = location.gesture_arm;
-            let held = robot.field(Key::GestureArm).map(|f| loaded_text(&f.value));
+            let held = loaded
+                .field(robot, Key::GestureArm)
+                .map(|f| loaded_text(&f.value));
             if held != written.map(|arm| Some(arm.value.name().as_bytes())) {
                 found.push(differ(
                     format!("gestureArm of {}: {held:?}", location.id),
@@ -138,8 +140,8 @@ fn differences(kb: &KnowledgeBase<'_>, loaded: &Loaded, text: &str) -> Vec<Diffe
             let written: Option<Vec<&str>> =
                 written_value.map(|_| location.cultural_words().collect());
             let held: Option<Vec<&str>> =
-                robot
-                    .field(Key::CulturalKnowledge)
+                loaded
+                    .field(robot, Key::CulturalKnowledge)
                     .map(|field| match &field.value {
                         LoadedValue::Words(words) => {
                             words.iter().map(|span| &text[span.range()]).collect()

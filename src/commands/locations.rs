@@ -49,13 +49,13 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let source = context.read(&path)?;
     let checked = check(&source, &options);
     present::note_errors(&checked, context.quiet);
-    let text = checked.source.text().as_bytes();
-    let loaded = reader::load(text, checked.reader);
+    // The JSON shows the file as written: only the other formats load it as the reader does.
+    let load = || reader::load(checked.source.text().as_bytes(), checked.reader);
     let mut stdout = BufWriter::new(std::io::stdout().lock());
     match args.format {
-        LocationsFormat::Table => write_table(&checked, &loaded, &mut stdout)?,
+        LocationsFormat::Table => write_table(&checked, load(), &mut stdout)?,
         LocationsFormat::Json => json::write(&JsonLocations::new(&checked), &mut stdout)?,
-        LocationsFormat::Classic => stdout.write_all(render_classic(&loaded).as_bytes())?,
+        LocationsFormat::Classic => stdout.write_all(render_classic(&load()).as_bytes())?,
     }
     stdout.flush()?;
     Ok(Exit::Clean)
@@ -63,11 +63,11 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
 
 /// The table of locations, each value as the chosen reader loads it, marked where the file
 /// says otherwise.
-fn write_table(checked: &Checked<'_>, loaded: &Loaded<'_>, out: &mut impl Write) -> io::Result<()> {
+fn write_table(checked: &Checked<'_>, loaded: Loaded<'_>, out: &mut impl Write) -> io::Result<()> {
     let kb = &checked.kb;
     let text = checked.source.text().as_bytes();
     let as_loaded = |location: &Location<'_>, field: Field, key: Key| {
-        let held = view::held(loaded, text, location.id, key);
+        let held = view::held(&loaded, text, location.id, key);
         field
             .get(location)
             .map(|(value, _)| robot::as_loaded(field, &value, &held, checked.reader))
@@ -111,6 +111,8 @@ fn write_table(checked: &Checked<'_>, loaded: &Loaded<'_>, out: &mut impl Write)
         rows
     });
     let table = table::Rows::join(parts).unwrap_or_else(|| table::Rows::new(&header));
+    // The rows hold what the table shows: what the reader holds goes before it is drawn.
+    drop(loaded);
     table.write(out)?;
     let count = kb.locations().len();
     let plural = if count == 1 { "" } else { "s" };
@@ -256,13 +258,13 @@ fn render_classic(loaded: &Loaded<'_>) -> String {
     };
     for location in loaded.locations.values() {
         let label = |name: &str| format!("{name:<CLASSIC_WIDTH$}");
-        let text = |key: Key| match location.field(key).map(|field| field.value) {
+        let text = |key: Key| match loaded.field(location, key).map(|field| field.value) {
             Some(LoadedValue::Text(span)) => {
                 escape(&String::from_utf8_lossy(&loaded.text()[span.range()])).into_owned()
             }
             _ => String::new(),
         };
-        let numbers = |key: Key| location.field(key).map(|field| field.value);
+        let numbers = |key: Key| loaded.field(location, key).map(|field| field.value);
         out.push_str(&format!("{}{:<4} \n", label("Key"), location.id));
         out.push_str(&format!(
             "{}{} \n",

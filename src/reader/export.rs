@@ -39,9 +39,8 @@ impl Serialize for LoadedLocations<'_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let loaded = self.loaded;
         let locations = loaded.locations.values().as_slice();
-        let make = |location: &LoadedLocation<'_>| {
-            LoadedLocationExport::new(location, loaded, loaded.text())
-        };
+        let make =
+            |location: &LoadedLocation| LoadedLocationExport::new(location, loaded, loaded.text());
         InParts::new(locations, make).serialize(serializer)
     }
 }
@@ -97,11 +96,11 @@ impl<'a> LoadedExport<'a> {
 
 impl<'a> LoadedLocationExport<'a> {
     fn new(
-        location: &LoadedLocation<'_>,
+        location: &LoadedLocation,
         loaded: &Loaded<'_>,
         text: &'a [u8],
     ) -> LoadedLocationExport<'a> {
-        let value = |key: Key| location.field(key).map(|field| field.value);
+        let value = |key: Key| loaded.field(location, key).map(|field| field.value);
         let text_of = |key: Key| match value(key) {
             None => Some(Cow::Borrowed("")),
             Some(value) => loaded_text(&value, text),

@@ -19,12 +19,14 @@ pub enum LineRead {
     Skipped,
     /// A key that this version does not read, spelled as written.
     Ignored { key: Span },
-    /// `key` of location `id` loads `value`.
+    /// `key` of location `id` loads `value`, which starts at `value_start` in the file
+    /// (`None`: past the end of the line).
     Value {
         key: Key,
         key_span: Span,
         id: i32,
         value: LoadedValue,
+        value_start: Option<usize>,
     },
     /// A value the reader could not read (`unsuccessful attempt to assign …`): the line
     /// changes nothing.
@@ -53,7 +55,16 @@ pub enum LoadedValue {
 /// it fitted), which starts at `offset` in the file.
 pub fn read(line: &[u8], offset: usize, reader: Reader) -> LineRead {
     // A C string ends at its first NUL.
-    let line = &line[..memchr::memchr(0, line).unwrap_or(line.len())];
+    read_c_string(
+        &line[..memchr::memchr(0, line).unwrap_or(line.len())],
+        offset,
+        reader,
+    )
+}
+
+/// [`read`] of a line without a NUL byte (a text without one need not be searched line by
+/// line).
+pub fn read_c_string(line: &[u8], offset: usize, reader: Reader) -> LineRead {
     let at = |range: std::ops::Range<usize>| Span::new(offset + range.start, offset + range.end);
     let Some(key_range) = scan::word(line, 0) else {
         return LineRead::Skipped;
@@ -62,9 +73,12 @@ pub fn read(line: &[u8], offset: usize, reader: Reader) -> LineRead {
         return LineRead::Skipped;
     };
     let key_span = at(key_range.clone());
-    let known = std::str::from_utf8(&line[key_range.clone()])
-        .ok()
-        .and_then(Key::from_name);
+    // Compared as bytes: a key is ASCII, and making a `str` of every line's first word first
+    // cost as much as finding the key.
+    let written = &line[key_range.clone()];
+    let known = Key::ALL
+        .into_iter()
+        .find(|key| key.name().as_bytes() == written);
     let Some(key) = known.filter(|&key| reader.reads(key)) else {
         return LineRead::Ignored { key: key_span };
     };
@@ -79,24 +93,32 @@ pub fn read(line: &[u8], offset: usize, reader: Reader) -> LineRead {
             key_span,
             id,
             value: LoadedValue::Undefined,
+            value_start: None,
         };
     };
-    let value = match key.value_kind() {
-        ValueKind::Pose | ValueKind::Point => match three_floats(line, start) {
-            Some(numbers) => LoadedValue::Numbers(numbers),
-            None => return LineRead::Failed { key, id },
-        },
-        ValueKind::Words => LoadedValue::Words(words(line, start).into_iter().map(at).collect()),
-        // A text (and on 2026-03 the arm) is the rest of the line less its last byte.
-        ValueKind::Text | ValueKind::Arm => LoadedValue::Text(at(start..line.len() - 1)),
-        ValueKind::Tour => unreachable!("read above"),
+    let Some(value) = value(key, line, start, offset) else {
+        return LineRead::Failed { key, id };
     };
     LineRead::Value {
         key,
         key_span,
         id,
         value,
+        value_start: Some(offset + start),
     }
+}
+
+/// The value of location key `key` that starts at `start` in `line` (which starts at
+/// `offset` in the file), or `None` if its numbers cannot be read.
+pub fn value(key: Key, line: &[u8], start: usize, offset: usize) -> Option<LoadedValue> {
+    let at = |range: std::ops::Range<usize>| Span::new(offset + range.start, offset + range.end);
+    Some(match key.value_kind() {
+        ValueKind::Pose | ValueKind::Point => LoadedValue::Numbers(three_floats(line, start)?),
+        ValueKind::Words => LoadedValue::Words(words(line, start).into_iter().map(at).collect()),
+        // A text (and on 2026-03 the arm) is the rest of the line less its last byte.
+        ValueKind::Text | ValueKind::Arm => LoadedValue::Text(at(start..line.len() - 1)),
+        ValueKind::Tour => unreachable!("the tour is not a location's value"),
+    })
 }
 
 /// Where a location key's value starts: past `strlen(key)` bytes, then past non-alphanumerics,

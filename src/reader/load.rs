@@ -12,7 +12,7 @@ use crate::syntax::Span;
 pub struct Loaded<'a> {
     pub reader: Reader,
     /// By id, as `%d` read it (so possibly 0 or negative).
-    pub locations: Locations<'a>,
+    pub locations: Locations,
     /// `None` when no line set the tour.
     pub tour: Option<LoadedTour>,
     pub tree: TreeShape,
@@ -20,33 +20,69 @@ pub struct Loaded<'a> {
 }
 
 /// One location as the robot holds it: each field set by a line, or never set (the
-/// robot's empty text or 0).
-///
-/// It keeps only where each field's line starts, and reads the line again when asked: a
-/// file of 100,000 locations would otherwise hold every value a second time.
+/// robot's empty text or 0). [`Loaded::field`] gives a field's value.
 #[derive(Debug, Clone, PartialEq)]
-pub struct LoadedLocation<'a> {
+pub struct LoadedLocation {
     pub id: i32,
+    fields: SetFields,
+}
+
+/// The fields that lines set, each as where its line starts and where the value starts in
+/// it, so that a view reads the value alone: reading each field's whole line again cost
+/// `export --as-loaded` nearly as much as the load itself, and holding each value as a
+/// [`LoadedValue`] would take 400 bytes a location.
+#[derive(Debug, Clone, PartialEq)]
+struct SetFields {
     /// Where the `fgets` call that last set each field starts, plus one (0: none), by
     /// [`Key::order`].
     lines: [u32; Key::ALL.len()],
-    text: &'a [u8],
-    reader: Reader,
+    /// Where the value starts in that line ([`UNDEFINED`]: past its end).
+    values: [u16; Key::ALL.len()],
+}
+
+/// A value that starts past the end of its line (no line is this long: see
+/// [`Reader::line_buffer`]).
+const UNDEFINED: u16 = u16::MAX;
+
+impl SetFields {
+    const NONE: SetFields = SetFields {
+        lines: [0; Key::ALL.len()],
+        values: [0; Key::ALL.len()],
+    };
+
+    /// Records that the line at `line` set `key` to a value that starts at `value_start`.
+    fn set(&mut self, key: Key, line: usize, value_start: Option<usize>) {
+        let slot = key.order();
+        self.lines[slot] = u32::try_from(line + 1).expect("a file is less than 4 GiB");
+        self.values[slot] = value_start.map_or(UNDEFINED, |start| {
+            u16::try_from(start - line).expect("a line is shorter than a reader's buffer")
+        });
+    }
+
+    /// Each field that `later` sets, set as it does.
+    fn overwrite_with(&mut self, later: &SetFields) {
+        for slot in 0..Key::ALL.len() {
+            if later.lines[slot] != 0 {
+                self.lines[slot] = later.lines[slot];
+                self.values[slot] = later.values[slot];
+            }
+        }
+    }
 }
 
 /// The locations the robot holds, in ascending id order: a sorted list, which holds 100,000
 /// of them in half the memory of a `BTreeMap`.
 #[derive(Debug, Clone, PartialEq, Default)]
-pub struct Locations<'a>(Vec<LoadedLocation<'a>>);
+pub struct Locations(Vec<LoadedLocation>);
 
-impl<'a> Locations<'a> {
-    pub fn get(&self, id: &i32) -> Option<&LoadedLocation<'a>> {
+impl Locations {
+    pub fn get(&self, id: &i32) -> Option<&LoadedLocation> {
         let index = self.0.binary_search_by_key(id, |location| location.id);
         index.ok().map(|index| &self.0[index])
     }
 
     /// In ascending id order.
-    pub fn values(&self) -> std::slice::Iter<'_, LoadedLocation<'a>> {
+    pub fn values(&self) -> std::slice::Iter<'_, LoadedLocation> {
         self.0.iter()
     }
 
@@ -59,10 +95,10 @@ impl<'a> Locations<'a> {
     }
 }
 
-impl<'a> std::ops::Index<&i32> for Locations<'a> {
-    type Output = LoadedLocation<'a>;
+impl std::ops::Index<&i32> for Locations {
+    type Output = LoadedLocation;
 
-    fn index(&self, id: &i32) -> &LoadedLocation<'a> {
+    fn index(&self, id: &i32) -> &LoadedLocation {
         self.get(id).expect("no location with this id")
     }
 }
@@ -74,23 +110,28 @@ pub struct Field {
     pub value: LoadedValue,
 }
 
-impl LoadedLocation<'_> {
-    /// The value of `key` (for the pose, either pose key), if a line set it.
-    pub fn field(&self, key: Key) -> Option<Field> {
-        let start = self.lines[key.order()].checked_sub(1)? as usize;
-        let (_, chunk) = chunks(&self.text[start..], self.reader.line_buffer()).next()?;
-        let line = Span::new(start, start + chunk.len());
-        match line::read(chunk, start, self.reader) {
-            LineRead::Value { value, .. } => Some(Field { line, value }),
-            _ => unreachable!("the line set this field when it was read"),
-        }
-    }
-}
-
 impl<'a> Loaded<'a> {
     /// The file the values are spans of.
     pub fn text(&self) -> &'a [u8] {
         self.text
+    }
+
+    /// The value of `key` at `location` (for the pose, either pose key), if a line set it.
+    pub fn field(&self, location: &LoadedLocation, key: Key) -> Option<Field> {
+        let slot = key.order();
+        let start = location.fields.lines[slot].checked_sub(1)? as usize;
+        let (_, chunk) = chunks(&self.text[start..], self.reader.line_buffer()).next()?;
+        let line = Span::new(start, start + chunk.len());
+        let value = match location.fields.values[slot] {
+            UNDEFINED => LoadedValue::Undefined,
+            // Read again from where it starts: a C string ends at its first NUL.
+            value_start => {
+                let text = &chunk[..memchr::memchr(0, chunk).unwrap_or(chunk.len())];
+                line::value(key, text, usize::from(value_start), start)
+                    .expect("the line set this field when it was read")
+            }
+        };
+        Some(Field { line, value })
     }
 }
 
@@ -119,16 +160,22 @@ pub fn load(text: &[u8], reader: Reader) -> Loaded<'_> {
 fn load_in_parts(text: &[u8], reader: Reader, parts: usize) -> Loaded<'_> {
     let ranges = parallel::line_ranges(text, parts);
     let parts = parallel::map_ranges(ranges, |range| read_part(text, range, reader));
-    let mut runs = Vec::with_capacity(parts.iter().map(|part| part.runs.len()).sum());
+    // The runs of the first part grow to hold the others' (not copied to a new list: the
+    // runs of a large file are megabytes).
+    let mut locations = Vec::new();
     let mut tree = ShapeBuilder::default();
     let mut tour_line = None;
     let mut count = 0;
     let mut slots: Vec<Option<i32>> = Vec::new();
     for part in parts {
-        for run in &part.runs {
-            tree.add(run.id, run.count);
+        for (run, &lines) in part.runs.iter().zip(&part.lines) {
+            tree.add(run.id, lines);
         }
-        runs.extend(part.runs);
+        if locations.is_empty() {
+            locations = part.runs;
+        } else {
+            locations.extend(part.runs);
+        }
         for (line, declared, stops) in part.tours {
             tour_line = Some(line);
             count = declared;
@@ -142,27 +189,14 @@ fn load_in_parts(text: &[u8], reader: Reader, parts: usize) -> Loaded<'_> {
     }
     // By id, and in file order within an id (the sort is stable), so that a later line
     // overwrites an earlier one's field.
-    runs.sort_by_key(|run| run.id);
-    let mut locations: Vec<LoadedLocation> = Vec::with_capacity(runs.len());
-    for Run { id, lines, .. } in runs {
-        let location = match locations.last_mut() {
-            Some(last) if last.id == id => last,
-            _ => {
-                locations.push(LoadedLocation {
-                    id,
-                    lines: [0; Key::ALL.len()],
-                    text,
-                    reader,
-                });
-                locations.last_mut().expect("a location was just pushed")
-            }
-        };
-        for (held, later) in location.lines.iter_mut().zip(lines) {
-            if later != 0 {
-                *held = later;
-            }
+    locations.sort_by_key(|location| location.id);
+    locations.dedup_by(|later, earlier| {
+        let same = later.id == earlier.id;
+        if same {
+            earlier.fields.overwrite_with(&later.fields);
         }
-    }
+        same
+    });
     let tour = tour_line.map(|line| {
         let shown = (count.max(0) as usize).min(slots.len().max(TOUR_BUFFER));
         LoadedTour {
@@ -182,18 +216,14 @@ fn load_in_parts(text: &[u8], reader: Reader, parts: usize) -> Loaded<'_> {
     }
 }
 
-/// Consecutive lines of one location that load values: where each field's last line
-/// starts (plus one; 0: none), and how many lines there are.
-struct Run {
-    id: i32,
-    lines: [u32; Key::ALL.len()],
-    count: u32,
-}
-
 /// What the lines of one part of a file load, in file order.
 #[derive(Default)]
 struct Part {
-    runs: Vec<Run>,
+    /// Each run of consecutive lines of one location that load values, as a location of
+    /// the fields they set.
+    runs: Vec<LoadedLocation>,
+    /// How many lines each run has.
+    lines: Vec<u32>,
     /// Each tour line read: where, its count, and its stops.
     tours: Vec<(Span, i32, Vec<Option<i32>>)>,
 }
@@ -202,21 +232,31 @@ struct Part {
 fn read_part(text: &[u8], range: std::ops::Range<usize>, reader: Reader) -> Part {
     let mut part = Part::default();
     let start = range.start;
-    for (offset, chunk) in chunks(&text[range], reader.line_buffer()) {
+    let part_text = &text[range];
+    let read = match memchr::memchr(0, part_text) {
+        Some(_) => line::read,
+        None => line::read_c_string,
+    };
+    for (offset, chunk) in chunks(part_text, reader.line_buffer()) {
         let offset = start + offset;
         let line = Span::new(offset, offset + chunk.len());
-        match line::read(chunk, offset, reader) {
-            LineRead::Value { key, id, .. } => {
+        match read(chunk, offset, reader) {
+            LineRead::Value {
+                key,
+                id,
+                value_start,
+                ..
+            } => {
                 if part.runs.last().is_none_or(|run| run.id != id) {
-                    part.runs.push(Run {
+                    part.runs.push(LoadedLocation {
                         id,
-                        lines: [0; Key::ALL.len()],
-                        count: 0,
+                        fields: SetFields::NONE,
                     });
+                    part.lines.push(0);
                 }
                 let run = part.runs.last_mut().expect("a run was just pushed");
-                run.lines[key.order()] = line.start + 1;
-                run.count += 1;
+                run.fields.set(key, offset, value_start);
+                *part.lines.last_mut().expect("a run was just pushed") += 1;
             }
             LineRead::Tour { count, stops } => part.tours.push((line, count, stops)),
             LineRead::Skipped
@@ -276,14 +316,16 @@ mod tests {
         let loaded = load(text.as_bytes(), Reader::V2025_06);
         let location = &loaded.locations[&2];
         assert_eq!(
-            text_of(text, location.field(Key::RobotLocationDescription)),
+            text_of(text, loaded.field(location, Key::RobotLocationDescription)),
             "Lab"
         );
-        let pose = location.field(Key::RobotLocationPose).map(|f| f.value);
+        let pose = loaded
+            .field(location, Key::RobotLocationPose)
+            .map(|f| f.value);
         assert_eq!(pose, Some(LoadedValue::Numbers([1.0, 2.0, 3.0])));
         let seed = load(text.as_bytes(), Reader::D542);
-        let pose = seed.locations[&2]
-            .field(Key::RobotLocation)
+        let pose = seed
+            .field(&seed.locations[&2], Key::RobotLocation)
             .map(|f| f.value);
         assert_eq!(pose, Some(LoadedValue::Numbers([9.0, 9.0, 9.0])));
     }
@@ -295,13 +337,13 @@ mod tests {
         let cut = load(text.as_bytes(), Reader::V2025_06);
         let loaded = text_of(
             &text,
-            cut.locations[&1].field(Key::PreGestureMessageEnglish),
+            cut.field(&cut.locations[&1], Key::PreGestureMessageEnglish),
         );
         assert_eq!(loaded.len(), 199 - 27 - 1);
         let whole = load(text.as_bytes(), Reader::V2026_02);
         let loaded = text_of(
             &text,
-            whole.locations[&1].field(Key::PreGestureMessageEnglish),
+            whole.field(&whole.locations[&1], Key::PreGestureMessageEnglish),
         );
         assert_eq!(loaded, message);
     }

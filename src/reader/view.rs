@@ -36,7 +36,7 @@ pub fn held<'a>(loaded: &Loaded<'_>, text: &'a [u8], id: u32, key: Key) -> Held<
     let field = i32::try_from(id)
         .ok()
         .and_then(|id| loaded.locations.get(&id))
-        .and_then(|location| location.field(key));
+        .and_then(|location| loaded.field(location, key));
     let lossy = |span: &crate::syntax::Span| String::from_utf8_lossy(&text[span.range()]);
     match field.map(|field| field.value) {
         None => Held::Nothing,
@@ -74,7 +74,7 @@ pub fn numbers(loaded: &Loaded<'_>, id: u32, key: Key) -> Option<([f64; 3], crat
         Key::RobotLocation | Key::RobotLocationPose => loaded.reader.pose_key(),
         other => other,
     };
-    let field = loaded.locations.get(&i32::try_from(id).ok()?)?.field(key)?;
+    let field = loaded.field(loaded.locations.get(&i32::try_from(id).ok()?)?, key)?;
     match field.value {
         LoadedValue::Numbers(numbers) => Some((numbers.map(shortest), field.line)),
         _ => None,
