@@ -419,6 +419,13 @@ pub struct LineIndex {
     line_starts: Vec<u32>,
 }
 
+/// Where a line starts, and its 1-based number: a place to count lines from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LineStart {
+    pub offset: u32,
+    pub line: u32,
+}
+
 /// A 1-based line and column.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub struct Position {

@@ -14,11 +14,12 @@ use std::ops::Range;
 
 use crate::model::{
     words, Arm, Dialect, IdMap, Key, KnowledgeBase, LineFacts, Location, Point, Pose, Tour, Value,
-    ValueKind,
+    ValueKind, LINE_STARTS_EVERY,
 };
 use crate::parallel;
 use crate::reader::Reader;
 use crate::render::escape::escape;
+use crate::source::LineStart;
 use crate::syntax::{self, Body, Line, Span};
 
 /// How to read a file.
@@ -262,12 +263,21 @@ impl<'a> Builder<'a> {
             rejected: HashMap::new(),
             miscased: IdMap::default(),
         };
+        let mut next_noted = super::next_noted_line_start(text.as_bytes(), range.start);
         for line in syntax::lines_from(&text[..range.end], range.start) {
             let start = line.span.start as usize;
             if start >= share.end(start) {
                 break;
             }
+            if start >= next_noted {
+                builder.facts.line_starts.push(LineStart {
+                    offset: line.span.start,
+                    line: line.number,
+                });
+                next_noted = (start / LINE_STARTS_EVERY + 1) * LINE_STARTS_EVERY;
+            }
             builder.line(&line, out);
+            builder.facts.lines = line.number;
         }
         builder
     }
@@ -997,6 +1007,60 @@ mod tests {
         );
         assert_eq!(kb.lines.suppression_lines, Some(0));
         assert_eq!(KnowledgeBase::default().lines.suppression_lines, None);
+    }
+
+    #[test]
+    fn the_noted_line_starts_are_the_same_in_every_part() {
+        // Lines of every length around the step, so that parts start on either side of it.
+        let mut text = String::new();
+        for n in 0..400 {
+            text.push_str(&format!(
+                "# {}\nrobotLocation {n} 1 2 3\n",
+                "x".repeat(n * 37)
+            ));
+        }
+        let text = text.repeat(2);
+        let index = crate::source::LineIndex::new(&text);
+        let whole = build_in_parts(&text, &Options::default(), 1, &mut Trace::default()).lines;
+        assert!(whole.line_starts.len() >= text.len() / LINE_STARTS_EVERY);
+        assert_eq!(whole.lines, text.lines().count() as u32);
+        for start in &whole.line_starts {
+            assert_eq!(index.position(&text, start.offset).line, start.line);
+            assert_eq!(text.as_bytes()[start.offset as usize - 1], b'\n');
+        }
+        for parts in 2..=5 {
+            let kb = build_in_parts(&text, &Options::default(), parts, &mut Trace::default());
+            assert_eq!(kb.lines, whole, "{parts} parts");
+        }
+    }
+
+    #[test]
+    fn a_part_notes_its_first_line_if_the_step_is_in_the_line_before() {
+        // Lines start at 0, STEP - 1 (before the step), STEP + 2 (the first after it).
+        let text = format!("{}\nbb\nc\n", "#".repeat(LINE_STARTS_EVERY - 2));
+        let options = Options::default();
+        let noted = |range: Range<usize>| {
+            Builder::read(&text, &options, range, &mut Trace::default())
+                .facts
+                .line_starts
+        };
+        let step = LINE_STARTS_EVERY as u32;
+        let expected = vec![LineStart {
+            offset: step + 2,
+            line: 3,
+        }];
+        assert_eq!(noted(0..text.len()), expected);
+        for cut in [step - 1, step + 2] {
+            let mut first = Builder::read(&text, &options, 0..cut as usize, &mut Trace::default());
+            let later = Builder::read(
+                &text,
+                &options,
+                cut as usize..text.len(),
+                &mut Trace::default(),
+            );
+            assert!(first.join(later));
+            assert_eq!(first.facts.line_starts, expected, "cut at {cut}");
+        }
     }
 
     #[test]

@@ -205,7 +205,7 @@ impl<'a> Source<'a> {
         Source {
             text,
             name: escape(name),
-            locator: Locator::new(text),
+            locator: Locator::new(text, &[]),
             last_label: Cell::new(Mark::START),
         }
     }

@@ -6,7 +6,7 @@ use serde::Serialize;
 
 use crate::check::Checked;
 use crate::diagnostic::{Applicability, Diagnostic, Severity};
-use crate::source::{count_chars, Position};
+use crate::source::{count_chars, LineStart, Position};
 use crate::syntax::Span;
 
 /// A region of a file: 1-based, columns in Unicode scalar values, end exclusive.
@@ -62,7 +62,7 @@ impl<'a> FileReport<'a> {
     /// Locates the findings [`Checked::shown`] lists (at most
     /// [`MAX_SHOWN_PER_RULE`](crate::check::MAX_SHOWN_PER_RULE) of each rule).
     pub fn new(checked: &'a Checked<'a>) -> FileReport<'a> {
-        let locator = Locator::new(checked.source.text());
+        let locator = Locator::new(checked.source.text(), &checked.kb.lines.line_starts);
         let diagnostics = checked
             .shown()
             .map(|diagnostic| LocatedDiagnostic {
@@ -123,27 +123,31 @@ impl Mark {
     }
 }
 
-/// Converts spans to regions by scanning on from the last position found. Findings come
-/// sorted by position, so the scans add up to about one pass over the file (with memchr),
-/// and no index of every line is built (on a 100,000-location file that index was 900,000
-/// entries, built to locate a thousand findings). Locating many findings on one huge line
-/// (a million-stop tour) costs the line's length once, not once per finding.
+/// Converts spans to regions by scanning on from the last position found, or from the
+/// nearest known line start if that is nearer. Findings come sorted by position, so the scans
+/// add up to about one pass over the file (with memchr), and no index of every line is
+/// built (on a 100,000-location file that index was 900,000 entries, built to locate a
+/// thousand findings). Locating many findings on one huge line (a million-stop tour) costs
+/// the line's length once, not once per finding.
 pub(super) struct Locator<'a> {
     text: &'a str,
     /// Where the last region started.
     cursor: Cell<Mark>,
+    /// Lines whose numbers are known, in file order (those the model noted while reading).
+    line_starts: &'a [LineStart],
 }
 
 impl<'a> Locator<'a> {
-    pub fn new(text: &'a str) -> Locator<'a> {
+    pub fn new(text: &'a str, line_starts: &'a [LineStart]) -> Locator<'a> {
         Locator {
             text,
             cursor: Cell::new(Mark::START),
+            line_starts,
         }
     }
 
     fn region(&self, span: Span) -> Region {
-        let start = self.position(self.cursor.get(), span.start);
+        let start = self.position(self.nearest_mark(span.start), span.start);
         let mark = Mark {
             offset: span.start,
             position: start,
@@ -155,6 +159,25 @@ impl<'a> Locator<'a> {
             column: start.column,
             end_line: end.line,
             end_column: end.column,
+        }
+    }
+
+    /// The nearer to `offset` of the last region's start and the last known line start
+    /// before `offset`.
+    fn nearest_mark(&self, offset: u32) -> Mark {
+        let cursor = self.cursor.get();
+        let before = self
+            .line_starts
+            .partition_point(|start| start.offset <= offset);
+        match before.checked_sub(1).map(|last| self.line_starts[last]) {
+            Some(start) if start.offset.abs_diff(offset) < cursor.distance(offset) => Mark {
+                offset: start.offset,
+                position: Position {
+                    line: start.line,
+                    column: 1,
+                },
+            },
+            _ => cursor,
         }
     }
 
@@ -194,10 +217,42 @@ mod tests {
     use crate::source::LineIndex;
 
     #[test]
+    fn known_line_starts_give_the_same_regions() {
+        let text = "ab\nÙmuntu x\n\nlast é line\nmore\n";
+        let index = LineIndex::new(text);
+        let line_starts = [3, 13, 27].map(|offset| LineStart {
+            offset,
+            line: index.position(text, offset).line,
+        });
+        let spans: [(u32, u32); 7] = [
+            (0, 2),
+            (14, 20),
+            (4, 12),
+            (28, 31),
+            (1, 30),
+            (31, 32),
+            (12, 13),
+        ];
+        let with_starts = Locator::new(text, &line_starts);
+        let from_cursor = Locator::new(text, &[]);
+        for (start, end) in spans {
+            let span = Span::new(start as usize, end as usize);
+            let expected = Region {
+                line: index.position(text, start).line,
+                column: index.position(text, start).column,
+                end_line: index.position(text, end).line,
+                end_column: index.position(text, end).column,
+            };
+            assert_eq!(with_starts.region(span), expected, "{span:?}");
+            assert_eq!(from_cursor.region(span), expected, "{span:?}");
+        }
+    }
+
+    #[test]
     fn scanning_on_agrees_with_the_line_index() {
         let text = "ab\nÙmuntu x\n\nlast é line";
         let index = LineIndex::new(text);
-        let locator = Locator::new(text);
+        let locator = Locator::new(text, &[]);
         let offsets = [0, 1, 5, 12, 13, 14, 2, 3, 20, 4, text.len() as u32, 0];
         for from in offsets {
             let known = Mark {
