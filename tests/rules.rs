@@ -775,6 +775,47 @@ fn control_character_explains_a_text_direction_control() {
 }
 
 #[test]
+fn control_characters_and_unicode_spaces_are_found_far_into_a_large_file() {
+    // The bytes are scanned a window (64 kB) at a time ahead of the lines: findings in
+    // later windows, on a line that crosses a window's end, and on a line longer than one.
+    let plain = "robotLocationDescription 1 Entrance\n";
+    let mut text = plain.repeat(5_000);
+    let mut expected = Vec::new();
+    let mut add = |text: &mut String, line: String, rule: &'static str| {
+        text.push_str(&line);
+        expected.push((rule, text.lines().count() as u32));
+        text.push_str(&plain.repeat(1_800));
+    };
+    add(
+        &mut text,
+        "robotLocationDescription 2 Bell\u{7}\n".into(),
+        "control-character",
+    );
+    add(
+        &mut text,
+        "robotLocationDescription\u{A0}3 Lab\n".into(),
+        "unicode-space",
+    );
+    let long = format!(
+        "robotLocationDescription 4 {}\u{202E}\n",
+        "x".repeat(70_000)
+    );
+    add(&mut text, long, "control-character");
+    add(
+        &mut text,
+        "robotLocationDescription\u{3000}5 Hall\n".into(),
+        "unicode-space",
+    );
+    let source = SourceFile::from_bytes("large.dat", text.into_bytes());
+    let found: Vec<(&str, u32)> = findings_of(&source, Options::default())
+        .iter()
+        .filter(|f| matches!(f.rule, "control-character" | "unicode-space"))
+        .map(|f| (f.rule, f.line))
+        .collect();
+    assert_eq!(found, expected);
+}
+
+#[test]
 fn compat_no_final_newline_shows_the_lost_letter_of_a_text() {
     let all = findings(
         "rules/compat-no-final-newline/bad-text.dat",

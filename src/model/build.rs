@@ -40,9 +40,9 @@ pub trait Findings {
     /// What is found in the lines of one part of the text.
     type Part: LineFindings + Send;
 
-    /// Starts the findings of the lines in `range` (whole lines) of `text`, to be added
-    /// here (so made as these are).
-    fn part(&self, text: &str, range: Range<usize>) -> Self::Part;
+    /// Starts the findings of the lines of one part of the text, to be added here (so made
+    /// as these are).
+    fn part(&self) -> Self::Part;
 
     /// Adds the findings of the whole text, read in one part or in several joined in order
     /// ([`LineFindings::append`]) and finished ([`LineFindings::finish`]), after those
@@ -99,7 +99,7 @@ pub struct Unheeded;
 impl Findings for Unheeded {
     type Part = Unheeded;
 
-    fn part(&self, _: &str, _: Range<usize>) -> Unheeded {
+    fn part(&self) -> Unheeded {
         Unheeded
     }
 
@@ -157,9 +157,7 @@ pub(crate) fn build_in_parts<'a, F: Findings + Sync>(
         let cut = |rest: Range<usize>| cut_lines(bytes, rest);
         let parent = &*out;
         let mut read = parallel::map_shared(ranges, cut, |share| {
-            // (The builder reads no further than this, perhaps less if another thread
-            // takes part of the lines.)
-            let mut found = parent.part(text, share.start()..share.end(share.start()));
+            let mut found = parent.part();
             let builder = Builder::read_shared(text, options, share, &mut found);
             (builder, found)
         })
@@ -174,7 +172,7 @@ pub(crate) fn build_in_parts<'a, F: Findings + Sync>(
             return kb;
         }
     }
-    let mut found = out.part(text, 0..text.len());
+    let mut found = out.part();
     let kb = Builder::read(text, options, 0..text.len(), &mut found).finish(&mut found);
     out.add_part(found);
     kb
@@ -794,7 +792,7 @@ mod tests {
     impl Findings for Trace {
         type Part = Trace;
 
-        fn part(&self, _: &str, _: Range<usize>) -> Trace {
+        fn part(&self) -> Trace {
             Trace::default()
         }
 
