@@ -85,9 +85,10 @@ fn in_word(byte: u8) -> bool {
 }
 
 impl Scan {
-    /// Scans `text`, counting the words for which `is_word` holds; `is_word` is asked only
-    /// of words of `lengths` bytes (at most 8; an empty range asks of none), each given as
-    /// one number: its bytes, little-endian, then zeros.
+    /// Scans `text`, counting the words of `lengths` bytes (at most 8; an empty range counts
+    /// none) for which `is_word` holds. `is_word` is given each word as one number: its
+    /// first eight bytes, little-endian, then zeros; it is asked of words of other lengths
+    /// too (its answer then unused), so it must be cheap and never panic.
     pub fn of(
         text: &str,
         lengths: std::ops::RangeInclusive<usize>,
@@ -150,6 +151,10 @@ struct Words<'t> {
 
 impl Words<'_> {
     /// How many of the words of `lengths` bytes `is_word` holds for.
+    ///
+    /// Every word is packed and asked about, and the answer counted only if its length is
+    /// in `lengths`: no branch on the length or the answer, which vary from word to word and
+    /// were mispredicted (measured: this loop was the check's most costly in cycles).
     #[inline(always)]
     fn count(
         mut self,
@@ -172,10 +177,9 @@ impl Words<'_> {
                     .take_while(|&&byte| in_word(byte))
                     .count();
             }
-            if lengths.contains(&(to - from)) {
-                let word = swar::word_at(self.bytes, from) & u64::MAX >> (8 * (8 - (to - from)));
-                found += usize::from(is_word(word));
-            }
+            let length = to - from;
+            let packed = swar::word_at(self.bytes, from) & u64::MAX >> (8 * (8 - length.min(8)));
+            found += usize::from(lengths.contains(&length) & is_word(packed));
         }
         found
     }

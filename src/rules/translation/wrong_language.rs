@@ -48,50 +48,45 @@ pub(super) fn scan(message: &Message<'_>) -> Scan {
     Scan::of(message.text.value, lengths, is_common_english)
 }
 
-/// Whether `word` (of [`ENGLISH_LENGTHS`], as [`Scan::of`] packs it) is a common English
-/// word that is no word of isiZulu or Kinyarwanda. Left out on purpose: `a`, `i`, `me`, `no`,
-/// `we` (words, or parts written apart, of those languages). Asked of most words of every
-/// translation: one look in a table, nearly always.
+/// Whether `word` (as [`Scan::of`] packs it) is a common English word that is no word of
+/// isiZulu or Kinyarwanda. Left out on purpose: `a`, `i`, `me`, `no`, `we` (words, or parts
+/// written apart, of those languages). Asked of every word of every translation: one look in
+/// a table, with no branch.
 fn is_common_english(word: u64) -> bool {
     // Lowercase: `| 0x20` lowercases a letter, and leaves a non-ASCII byte non-ASCII, so that
     // it matches no word of the list.
     let lower = word | lowercase_bits(word);
-    let mut slot = slot_of(lower);
-    loop {
-        match COMMON_ENGLISH[slot] {
-            0 => return false,
-            found if found == lower => return true,
-            _ => slot = (slot + 1) % COMMON_ENGLISH.len(),
-        }
-    }
+    COMMON_ENGLISH[slot_of(lower)] == lower
 }
 
 /// `0x20` in each byte of `word` that is not zero.
 fn lowercase_bits(word: u64) -> u64 {
     let bytes = 8 - word.leading_zeros() as usize / 8;
-    u64::from_le_bytes([0x20; 8]) >> (8 * (8 - bytes))
+    u64::from_le_bytes([0x20; 8])
+        .checked_shr(8 * (8 - bytes as u32))
+        .unwrap_or(0)
 }
 
-/// Where the search for `word` starts in [`COMMON_ENGLISH`].
+/// The one place of `word` in [`COMMON_ENGLISH`]: a multiplicative hash whose multiplier
+/// was chosen (by trying random odd numbers, a few hundred tries) so that no two words of
+/// the list share a place.
 const fn slot_of(word: u64) -> usize {
-    (word.wrapping_mul(0x9e37_79b9_7f4a_7c15) >> (64 - COMMON_ENGLISH_SLOTS.trailing_zeros()))
+    (word.wrapping_mul(0x6d98_14d5_dac5_04e5) >> (64 - COMMON_ENGLISH_SLOTS.trailing_zeros()))
         as usize
 }
 
 const COMMON_ENGLISH_SLOTS: usize = 256;
 
-/// The common English words, each as one number ([`packed`]), in a table of open addressing
-/// (linear probing; an empty slot is 0), four times as large as the list so that a search
-/// for a word not in it ends at once, nearly always.
+/// The common English words, each as one number ([`packed`]) in its own place
+/// ([`slot_of`]; an empty place is 0, which no packed word is). A word that shares a place
+/// with another fails the build: then choose another multiplier for [`slot_of`].
 const COMMON_ENGLISH: [u64; COMMON_ENGLISH_SLOTS] = {
     let mut table = [0; COMMON_ENGLISH_SLOTS];
     let mut i = 0;
     while i < COMMON_ENGLISH_WORDS.len() {
         let word = packed(COMMON_ENGLISH_WORDS[i]);
-        let mut slot = slot_of(word);
-        while table[slot] != 0 {
-            slot = (slot + 1) % COMMON_ENGLISH_SLOTS;
-        }
+        let slot = slot_of(word);
+        assert!(table[slot] == 0, "two common English words share a place");
         table[slot] = word;
         i += 1;
     }
