@@ -747,7 +747,11 @@ fn numbers(
     let mut count = 0;
     let mut valid = true;
     for (token_span, token) in syntax::tokens(text, span.start as usize) {
-        match parse_number(token) {
+        let short = (token.len() <= 8).then(|| {
+            let at = (token_span.start - span.start) as usize;
+            syntax::decimal::f64_of_word(syntax::swar::word_at(text.as_bytes(), at), token.len())
+        });
+        match short.flatten().or_else(|| parse_number(token)) {
             Some(n) if count < 3 => values[count] = n,
             Some(_) => {}
             None => {
