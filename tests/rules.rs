@@ -816,6 +816,31 @@ fn control_characters_and_unicode_spaces_are_found_far_into_a_large_file() {
 }
 
 #[test]
+fn findings_at_one_place_keep_their_order_when_the_locations_are_checked_in_parts() {
+    // Enough locations to be checked on every core, while the tree's shape is made on
+    // another thread; its finding (slow load, at the start) still comes before the tour's.
+    let text: String = ekb::generate::generate(&ekb::generate::Spec::new(6_000))
+        .lines()
+        .filter(|line| !line.starts_with("tourSpecification"))
+        .map(|line| format!("{line}\n"))
+        .collect();
+    let source = SourceFile::from_bytes("no-tour.dat", text.into_bytes());
+    let found: Vec<(&str, u32)> = findings_of(&source, Options::default())
+        .iter()
+        .filter(|f| f.rule != "unused-location")
+        .map(|f| (f.rule, f.line))
+        .collect();
+    assert_eq!(
+        found,
+        [
+            ("compat-slow-load", 1),
+            ("tour-missing", 1),
+            ("compat-reader-crash", 5_999 * 9 + 1)
+        ]
+    );
+}
+
+#[test]
 fn compat_no_final_newline_shows_the_lost_letter_of_a_text() {
     let all = findings(
         "rules/compat-no-final-newline/bad-text.dat",

@@ -264,6 +264,37 @@ pub fn categories() -> Vec<Category> {
 /// version of the robot's reader.
 pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, reader: Reader, out: &mut Diagnostics) {
     compat::check_file(kb, source, reader, out);
+    let context = LocationContext::new(kb, source, reader);
+    // Each location is checked on its own, so a large file's are checked in parts, on
+    // every core.
+    let ranges = crate::parallel::item_ranges(kb.locations().len(), MIN_LOCATIONS_PER_PART);
+    let mut found = out.part();
+    let mut check_the_rest = |ranges| {
+        check_tour(kb, source, &mut found);
+        check_locations(kb.locations().runs(), ranges, &context, &mut found);
+    };
+    let shape = if ranges.len() > 1 {
+        // The tree's shape is a pass over every location in order, on one core (a tenth of
+        // the time of a large file's check, measured): made on another thread meanwhile.
+        std::thread::scope(|scope| {
+            let shape = scope.spawn(|| compat::tree_shape(kb));
+            check_the_rest(ranges);
+            shape
+                .join()
+                .expect("the tree's shape is made without panicking")
+        })
+    } else {
+        check_the_rest(ranges);
+        compat::tree_shape(kb)
+    };
+    // Its findings first, as if made first: findings at one place are listed in the order
+    // in which they are reported.
+    compat::check_tree(kb, &shape, reader, out);
+    out.append(found);
+}
+
+/// Runs the rules about the tour.
+fn check_tour(kb: &KnowledgeBase<'_>, source: &str, out: &mut Diagnostics) {
     tour::tour_missing::check(kb, out);
     if let Some(tour) = &kb.tour {
         tour::tour_empty::check(tour, out);
@@ -273,11 +304,6 @@ pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, reader: Reader, out: &m
         tour::tour_repeated_stop::check(tour, out);
     }
     tour::tour_unknown_location::check(kb, out);
-    let context = LocationContext::new(kb, source, reader);
-    // Each location is checked on its own, so a large file's are checked in parts, on
-    // every core.
-    let ranges = crate::parallel::item_ranges(kb.locations().len(), MIN_LOCATIONS_PER_PART);
-    check_locations(kb.locations().runs(), ranges, &context, out);
 }
 
 /// Below this many locations a part is not worth a thread (starting one costs about as much

@@ -22,7 +22,8 @@ use crate::rules::content::trailing_whitespace::TRAILING_WHITESPACE;
 use crate::rules::structure::legacy_key;
 use crate::syntax::{self, Body, Span};
 
-/// Runs the rules about the whole file that depend on the version of the reader.
+/// Runs the rules about the whole file that depend on the version of the reader, but those
+/// about the tree of locations it builds ([`check_tree`]).
 pub fn check_file(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagnostics) {
     compat_line_too_long::check(kb, text, reader, out);
     compat_no_final_newline::check(text, reader, out);
@@ -31,12 +32,26 @@ pub fn check_file(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut 
     legacy_key::check(kb, text, reader, out);
     compat_ignored_key::check(kb, text, reader, out);
     arm_blanks_are_errors(kb, text, reader, out);
-    let shape = tree::shape_of_locations(kb.locations().iter().map(|location| {
+}
+
+/// The shape of the tree of locations that loading `kb` builds: a pass over every location,
+/// in file order.
+pub fn tree_shape(kb: &KnowledgeBase<'_>) -> tree::TreeShape {
+    tree::shape_of_locations(kb.locations().iter().map(|location| {
         let lines = location.given.count_ones();
         (location.first_line.start, location.id as i32, lines)
-    }));
-    compat_reader_crash::check(kb, &shape, reader, out);
-    compat_slow_load::check(&shape, reader, out);
+    }))
+}
+
+/// Runs the rules about the tree of locations, of `shape`, that `reader` builds from `kb`.
+pub fn check_tree(
+    kb: &KnowledgeBase<'_>,
+    shape: &tree::TreeShape,
+    reader: Reader,
+    out: &mut Diagnostics,
+) {
+    compat_reader_crash::check(kb, shape, reader, out);
+    compat_slow_load::check(shape, reader, out);
 }
 
 /// The key and arguments of every line of `key`, in file order.
