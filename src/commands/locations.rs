@@ -92,16 +92,22 @@ fn write_table(checked: &Checked<'_>, loaded: Loaded<'_>, out: &mut impl Write) 
     header.extend(["messages", "tour stop"]);
     let positions = TourPositions::first(kb, present::MAX_LISTED);
     let row = |location: &Location<'_>| {
-        let mut row = vec![
-            location.id.to_string(),
+        // Made as long as the header at once: a row that grew to it took a copy of each.
+        let mut row = Vec::with_capacity(header.len());
+        row.push(location.id.to_string());
+        row.push(
             as_loaded(location, Field::Description, Key::RobotLocationDescription)
                 .unwrap_or_else(|| "—".to_string()),
+        );
+        row.push(
             as_loaded(location, Field::Pose, Key::RobotLocationPose)
                 .unwrap_or_else(|| "—".to_string()),
+        );
+        row.push(
             location
                 .gesture_target
                 .map_or_else(|| "—".to_string(), |t| Gesture::of(&t.value).short()),
-        ];
+        );
         if with_arm {
             row.push(
                 as_loaded(location, Field::GestureArm, Key::GestureArm)

@@ -194,7 +194,9 @@ fn load_in_parts(text: &[u8], reader: Reader, only: Option<Vec<Key>>, parts: usi
         read_part(text, range, reader, names.as_deref())
     });
     // The runs of the first part grow to hold the others' (not copied to a new list: the
-    // runs of a large file are megabytes).
+    // runs of a large file are megabytes), at once to the size of them all (growing by
+    // doubling left a quarter of 100,000 locations' list unused).
+    let runs: usize = parts.iter().map(|part| part.runs.len()).sum();
     let mut locations = Vec::new();
     let mut tree = ShapeBuilder::default();
     let mut tour_line = None;
@@ -206,6 +208,7 @@ fn load_in_parts(text: &[u8], reader: Reader, only: Option<Vec<Key>>, parts: usi
         }
         if locations.is_empty() {
             locations = part.runs;
+            locations.reserve_exact(runs - locations.len());
         } else {
             locations.extend(part.runs);
         }
@@ -315,8 +318,11 @@ fn read_part(
 fn starts_with_one_of(line: &[u8], names: &[&[u8]]) -> bool {
     let start = line.iter().position(|&byte| !is_space(byte));
     let word = &line[start.unwrap_or(line.len())..];
+    // The first byte first: it tells most keys apart without a call to compare the rest.
     names.iter().any(|name| {
-        word.starts_with(name) && word.get(name.len()).is_none_or(|&byte| is_space(byte))
+        word.first() == name.first()
+            && word.starts_with(name)
+            && word.get(name.len()).is_none_or(|&byte| is_space(byte))
     })
 }
 
