@@ -190,8 +190,11 @@ fn load_in_parts(text: &[u8], reader: Reader, only: Option<Vec<Key>>, parts: usi
         .as_ref()
         .map(|keys| keys.iter().map(|key| key.name().as_bytes()).collect());
     let ranges = parallel::line_ranges(text, parts);
-    let parts = parallel::map_ranges(ranges, |range| {
-        read_part(text, range, reader, names.as_deref())
+    // The whole load is made without a test of each line's key (a closure that always says
+    // yes costs nothing).
+    let parts = parallel::map_ranges(ranges, |range| match &names {
+        None => read_part(text, range, reader, |_| true),
+        Some(names) => read_part(text, range, reader, |line| starts_with_one_of(line, names)),
     });
     // The runs of the first part grow to hold the others' (not copied to a new list: the
     // runs of a large file are megabytes), at once to the size of them all (growing by
@@ -265,12 +268,12 @@ struct Part {
     tours: Vec<(Span, i32, Vec<Option<i32>>)>,
 }
 
-/// Reads the whole lines of `text` in `range` (of the keys named `only`, if given).
+/// Reads the whole lines of `text` in `range` that `wanted` says may set a field.
 fn read_part(
     text: &[u8],
     range: std::ops::Range<usize>,
     reader: Reader,
-    only: Option<&[&[u8]]>,
+    wanted: impl Fn(&[u8]) -> bool,
 ) -> Part {
     let mut part = Part::default();
     let start = range.start;
@@ -280,7 +283,7 @@ fn read_part(
         None => line::read_c_string,
     };
     for (offset, chunk) in chunks(part_text, reader.line_buffer()) {
-        if only.is_some_and(|names| !starts_with_one_of(chunk, names)) {
+        if !wanted(chunk) {
             continue;
         }
         let offset = start + offset;
