@@ -1,7 +1,6 @@
 //! `ekb locations [FILE]`: every location in id order, as a table, JSON, or the layout of
 //! the robot's own `printToScreen()`.
 
-use std::fmt::Write as _;
 use std::io::{self, BufWriter, Write};
 use std::path::PathBuf;
 
@@ -50,16 +49,29 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let checked = check(&source, &options);
     present::note_errors(&checked, context.quiet);
     // The JSON shows the file as written: only the other formats load it as the reader does.
-    let load = || reader::load(checked.source.text().as_bytes(), checked.reader);
+    let text = checked.source.text().as_bytes();
     let mut stdout = BufWriter::new(std::io::stdout().lock());
     match args.format {
-        LocationsFormat::Table => write_table(&checked, load(), &mut stdout)?,
+        LocationsFormat::Table => {
+            let loaded = reader::load_fields(text, checked.reader, &TABLE_KEYS);
+            write_table(&checked, loaded, &mut stdout)?;
+        }
         LocationsFormat::Json => json::write(&JsonLocations::new(&checked), &mut stdout)?,
-        LocationsFormat::Classic => stdout.write_all(render_classic(&load()).as_bytes())?,
+        LocationsFormat::Classic => {
+            let loaded = reader::load(text, checked.reader);
+            stdout.write_all(render_classic(&loaded).as_bytes())?;
+        }
     }
     stdout.flush()?;
     Ok(Exit::Clean)
 }
+
+/// The keys whose values the table shows as the reader loads them.
+const TABLE_KEYS: [Key; 3] = [
+    Key::RobotLocationDescription,
+    Key::RobotLocationPose,
+    Key::GestureArm,
+];
 
 /// The table of locations, each value as the chosen reader loads it, marked where the file
 /// says otherwise.
@@ -80,16 +92,22 @@ fn write_table(checked: &Checked<'_>, loaded: Loaded<'_>, out: &mut impl Write) 
     header.extend(["messages", "tour stop"]);
     let positions = TourPositions::first(kb, present::MAX_LISTED);
     let row = |location: &Location<'_>| {
-        let mut row = vec![
-            location.id.to_string(),
+        // Made as long as the header at once: a row that grew to it took a copy of each.
+        let mut row = Vec::with_capacity(header.len());
+        row.push(location.id.to_string());
+        row.push(
             as_loaded(location, Field::Description, Key::RobotLocationDescription)
                 .unwrap_or_else(|| "—".to_string()),
+        );
+        row.push(
             as_loaded(location, Field::Pose, Key::RobotLocationPose)
                 .unwrap_or_else(|| "—".to_string()),
+        );
+        row.push(
             location
                 .gesture_target
                 .map_or_else(|| "—".to_string(), |t| Gesture::of(&t.value).short()),
-        ];
+        );
         if with_arm {
             row.push(
                 as_loaded(location, Field::GestureArm, Key::GestureArm)
@@ -134,9 +152,11 @@ fn message_marks(location: &Location<'_>) -> String {
         if i > 0 {
             marks.push('\n');
         }
-        // Pieces pushed, not formatted: this is two cells of every row of a table that may
-        // have 100,000 of them.
-        write!(marks, "{:<6}", phase.name()).expect("a String takes any text");
+        // Pieces pushed, not formatted (padding with `{:<6}` was a third of the cell): this
+        // is two lines of every row of a table that may have 100,000 of them.
+        let name = phase.name();
+        marks.push_str(name);
+        marks.push_str(&"      "[name.len().min(6)..]);
         for &lang in Language::ALL.iter() {
             marks.push(' ');
             marks.push_str(language::code(lang));

@@ -15,5 +15,5 @@ pub mod tree;
 mod version;
 pub mod view;
 
-pub use load::{chunks, load, Field, Loaded, LoadedLocation, LoadedTour, Locations};
+pub use load::{chunks, load, load_fields, Field, Loaded, LoadedLocation, LoadedTour, Locations};
 pub use version::Reader;
