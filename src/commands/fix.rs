@@ -21,7 +21,7 @@ use crate::rules::structure::invalid_utf8::INVALID_UTF8;
 use crate::source::SourceFile;
 use crate::stderr_line;
 use crate::syntax::{self, Body};
-use crate::unified::{InOrder, Recorded, Through};
+use crate::unified::{InOrder, NewLines, Recorded, Through};
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -152,7 +152,7 @@ fn print_balanced(
 ) -> Result<bool, CommandError> {
     let old = read.text();
     let new = match std::ptr::eq(document.text(), old) {
-        true => Recorded::new(old, document),
+        true => document.record(old),
         false => {
             let between = InOrder {
                 old,

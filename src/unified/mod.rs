@@ -54,6 +54,15 @@ pub trait NewLines {
         false
     }
 
+    /// The lines read once ([`Recorded`]) against `old`, the text they were made from. A new
+    /// text that can lay out its lines in parts on the cores does so.
+    fn record<'o>(&self, old: &'o str) -> Recorded<'o>
+    where
+        Self: Sized,
+    {
+        Recorded::new(old, self)
+    }
+
     /// Visits the lines whose index (0-based) `wanted` takes, in order, each with its index,
     /// until `visit` breaks; `wanted` is asked of each index in order. A new text that can
     /// pass over a line more cheaply than it writes it does so for the others.

@@ -28,28 +28,44 @@ pub struct Recorded<'o> {
 impl<'o> Recorded<'o> {
     /// Reads the lines of `new`, made from `old`, once.
     pub fn new(old: &'o str, new: &impl NewLines) -> Recorded<'o> {
-        let mut recorded = Recorded {
-            old,
-            lines: Vec::new(),
-            changed: String::new(),
-        };
+        let mut recorded = Recorded::none(old);
         let _ = new.each_line(&mut |line| {
-            let origin = line.origin.unwrap_or(NO_ORIGIN);
-            let same = line
-                .origin
-                .is_some_and(|origin| old_line(old, origin as usize) == line.text);
-            let length = line.text.len() as u32;
-            let length = match same {
-                true => length | AS_ITS_ORIGIN,
-                false => {
-                    recorded.changed.push_str(line.text);
-                    length
-                }
-            };
-            recorded.lines.push((origin, length));
+            recorded.push(line);
             ControlFlow::Continue(())
         });
         recorded
+    }
+
+    /// No lines yet, of a new text made from `old`: lines are pushed, or parts appended.
+    pub fn none(old: &'o str) -> Recorded<'o> {
+        Recorded {
+            old,
+            lines: Vec::new(),
+            changed: String::new(),
+        }
+    }
+
+    /// Records the next line.
+    pub fn push(&mut self, line: NewLine<'_>) {
+        let origin = line.origin.unwrap_or(NO_ORIGIN);
+        let same = line
+            .origin
+            .is_some_and(|origin| old_line(self.old, origin as usize) == line.text);
+        let length = line.text.len() as u32;
+        let length = match same {
+            true => length | AS_ITS_ORIGIN,
+            false => {
+                self.changed.push_str(line.text);
+                length
+            }
+        };
+        self.lines.push((origin, length));
+    }
+
+    /// Records the lines of `part` (recorded apart, as on another core) after these.
+    pub fn append(&mut self, part: Recorded<'_>) {
+        self.lines.extend_from_slice(&part.lines);
+        self.changed.push_str(&part.changed);
     }
 }
 
