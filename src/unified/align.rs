@@ -85,17 +85,17 @@ pub(super) fn first_reading(old: &str, new: &impl NewLines) -> FirstReading {
     ))
 }
 
-/// The changes of a new text whose origins ascend (nothing moved), found in one reading,
-/// as [`first_reading`] finds them, and handed to `finder` every `hand_over_every` lines.
-pub(super) fn find_in_order(
+/// The changes, found in one reading as [`first_reading`] finds them when nothing moved,
+/// else as [`changes`] finds them from the lines `kept`, and handed to `finder` every
+/// `hand_over_every` lines.
+pub(super) fn find(
     old: &str,
     new: &impl NewLines,
+    kept: Option<&Kept>,
     mut finder: Finder<'_>,
     hand_over_every: u32,
 ) {
-    let mut pairing = Pairing::new(old);
-    let _ = new.each_line(&mut |line| {
-        pairing.line(line, true);
+    let changes = pair(old, new, kept, |pairing| {
         if pairing.index % hand_over_every == 0 {
             // Every change not found yet starts at the one open, or at the lines to come.
             let settled = match pairing.open {
@@ -104,9 +104,8 @@ pub(super) fn find_in_order(
             };
             finder.hand_over(&mut pairing.changes.regions, settled);
         }
-        ControlFlow::Continue(())
     });
-    finder.finish(pairing.finish());
+    finder.finish(changes);
 }
 
 /// Whether the old line at `origin` follows the one that ends at `next`: nothing but blank
@@ -184,15 +183,27 @@ pub(super) struct Changes {
 /// The changes when lines moved: a second reading, which pairs the lines that `kept` says
 /// keep their place.
 pub(super) fn changes(old: &str, new: &impl NewLines, kept: &Kept) -> Changes {
+    pair(old, new, Some(kept), |_| {})
+}
+
+/// Pairs every new line ([`Pairing`]), each kept if `kept` says so (every one if there is
+/// no `kept`: nothing moved), `after_line` called after each.
+fn pair(
+    old: &str,
+    new: &impl NewLines,
+    kept: Option<&Kept>,
+    mut after_line: impl FnMut(&mut Pairing<'_>),
+) -> Changes {
     let mut pairing = Pairing::new(old);
-    let mut kept_ranges = kept.0.iter().peekable();
+    let mut kept_ranges = kept.map(|kept| kept.0.iter().peekable());
     let _ = new.each_line(&mut |line| {
         let index = pairing.index;
-        while kept_ranges.next_if(|range| range.end <= index).is_some() {}
-        let is_kept = kept_ranges
-            .peek()
-            .is_some_and(|range| range.contains(&index));
+        let is_kept = kept_ranges.as_mut().is_none_or(|ranges| {
+            while ranges.next_if(|range| range.end <= index).is_some() {}
+            ranges.peek().is_some_and(|range| range.contains(&index))
+        });
         pairing.line(line, is_kept);
+        after_line(&mut pairing);
         ControlFlow::Continue(())
     });
     pairing.finish()

@@ -99,11 +99,15 @@ pub fn write_diff(
     new: &(impl NewLines + Sync),
     style: Style<'_>,
 ) -> io::Result<bool> {
-    if new.origins_ascend() && parallel::parts_for_text(old.len()) > 1 {
-        return write_as_found(out, old, new, style, HAND_OVER_EVERY);
+    let large = parallel::parts_for_text(old.len()) > 1;
+    if new.origins_ascend() && large {
+        return write_as_found(out, old, new, None, style, HAND_OVER_EVERY);
     }
     let changes = match align::first_reading(old, new) {
         align::FirstReading::InOrder(changes) => changes,
+        align::FirstReading::Moved(kept) if large => {
+            return write_as_found(out, old, new, Some(&kept), style, HAND_OVER_EVERY);
+        }
         align::FirstReading::Moved(kept) => align::changes(old, new, &kept),
     };
     print::print(out, old, new, follow::Known::all(changes), style)
@@ -112,24 +116,26 @@ pub fn write_diff(
 /// How many new lines the finder of [`write_as_found`] reads between two hand-overs.
 const HAND_OVER_EVERY: u32 = 4096;
 
-/// [`write_diff`] of new lines whose origins ascend (nothing moved): the changes are found
-/// on another thread, handed over every `hand_over_every` lines, as the diff is printed.
+/// [`write_diff`] of new lines whose origins ascend (nothing moved), or whose lines `kept`
+/// keep their place: the changes are found on another thread, handed over every
+/// `hand_over_every` lines, as the diff is printed.
 fn write_as_found(
     out: &mut impl Write,
     old: &str,
     new: &(impl NewLines + Sync),
+    kept: Option<&align::Kept>,
     style: Style<'_>,
     hand_over_every: u32,
 ) -> io::Result<bool> {
     let shared = follow::Shared::default();
     std::thread::scope(|scope| {
-        let find = || align::find_in_order(old, new, shared.finder(), hand_over_every);
+        let find = || align::find(old, new, kept, shared.finder(), hand_over_every);
         if std::thread::Builder::new()
             .spawn_scoped(scope, find)
             .is_err()
         {
             // Without a thread, they are all found first.
-            align::find_in_order(old, new, shared.finder(), hand_over_every);
+            align::find(old, new, kept, shared.finder(), hand_over_every);
         }
         print::print(out, old, new, follow::Known::following(&shared), style)
     })
@@ -197,8 +203,19 @@ mod tests {
     /// The diff printed as the changes are found, handed over every `every` lines.
     fn diff_as_found(old: &str, new: &(impl NewLines + Sync), every: u32) -> String {
         let mut out = Vec::new();
-        write_as_found(&mut out, old, new, STYLE, every).unwrap();
+        write_as_found(&mut out, old, new, None, STYLE, every).unwrap();
         String::from_utf8(out).unwrap()
+    }
+
+    /// The diff of lines that moved printed as the changes are found, handed over every
+    /// `every` lines; none if nothing moved.
+    fn diff_moved_as_found(old: &str, new: &(impl NewLines + Sync), every: u32) -> Option<String> {
+        let align::FirstReading::Moved(kept) = align::first_reading(old, new) else {
+            return None;
+        };
+        let mut out = Vec::new();
+        write_as_found(&mut out, old, new, Some(&kept), STYLE, every).unwrap();
+        Some(String::from_utf8(out).unwrap())
     }
 
     fn in_order(old: &str, new: &str) -> String {
@@ -390,7 +407,10 @@ mod tests {
                     (line, origin)
                 })
                 .collect();
-            let diff = diff(&old, &Given { lines, old: &old });
+            let given = Given { lines, old: &old };
+            let diff = diff(&old, &given);
+            let as_found = diff_moved_as_found(&old, &given, 1 + picks[0].unwrap_or(0) as u32 % 4);
+            prop_assert!(as_found.is_none_or(|as_found| as_found == diff));
             prop_assert_eq!(apply(&old, &diff), new);
         }
     }
