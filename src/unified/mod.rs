@@ -54,6 +54,12 @@ pub trait NewLines {
         false
     }
 
+    /// These lines, if they were read once already ([`Recorded`]): then the diff's first
+    /// reading is done too.
+    fn as_recorded(&self) -> Option<&Recorded<'_>> {
+        None
+    }
+
     /// The lines read once ([`Recorded`]) against `old`, the text they were made from. A new
     /// text that can lay out its lines in parts on the cores does so.
     fn record<'o>(&self, old: &'o str) -> Recorded<'o>
@@ -103,7 +109,11 @@ pub fn write_diff(
     if new.origins_ascend() && large {
         return write_as_found(out, old, new, None, style, HAND_OVER_EVERY);
     }
-    let changes = match align::first_reading(old, new) {
+    let reading = match new.as_recorded() {
+        Some(recorded) => recorded.first_reading(),
+        None => align::first_reading(old, new),
+    };
+    let changes = match reading {
         align::FirstReading::InOrder(changes) => changes,
         align::FirstReading::Moved(kept) if large => {
             return write_as_found(out, old, new, Some(&kept), style, HAND_OVER_EVERY);
@@ -375,6 +385,24 @@ mod tests {
             })
     }
 
+    /// The lines of `new`, each with the old line `picks` picks as its origin, if any.
+    fn picked_origins<'n>(
+        old: &str,
+        new: &'n str,
+        picks: &[Option<u8>],
+    ) -> Vec<(&'n str, Option<usize>)> {
+        let old_count = lines_inclusive(old).count();
+        lines_inclusive(new)
+            .zip(picks)
+            .map(|((_, line), pick)| {
+                let origin = pick
+                    .filter(|_| old_count > 0)
+                    .map(|pick| pick as usize % old_count);
+                (line, origin)
+            })
+            .collect()
+    }
+
     proptest! {
         #[test]
         fn the_diff_of_any_two_texts_gives_the_new_one(old in text(), new in text()) {
@@ -394,19 +422,30 @@ mod tests {
         }
 
         #[test]
+        fn lines_recorded_in_two_parts_are_read_first_as_they_are_given(
+            old in text(),
+            new in text(),
+            picks in proptest::collection::vec(any::<Option<u8>>(), 40),
+            cut in 0..40usize,
+        ) {
+            let lines = picked_origins(&old, &new, &picks);
+            let cut = cut.min(lines.len());
+            let part = |lines: &[(&str, Option<usize>)]| {
+                Recorded::new(&old, &Given { lines: lines.to_vec(), old: &old })
+            };
+            let mut recorded = part(&lines[..cut]);
+            recorded.append(part(&lines[cut..]));
+            let given = Given { lines, old: &old };
+            prop_assert_eq!(recorded.first_reading(), align::first_reading(&old, &given));
+        }
+
+        #[test]
         fn any_origins_give_a_diff_that_gives_the_new_text(
             old in text(),
             new in text(),
             picks in proptest::collection::vec(any::<Option<u8>>(), 40),
         ) {
-            let old_count = lines_inclusive(&old).count();
-            let lines = lines_inclusive(&new)
-                .zip(&picks)
-                .map(|((_, line), pick)| {
-                    let origin = pick.filter(|_| old_count > 0).map(|pick| pick as usize % old_count);
-                    (line, origin)
-                })
-                .collect();
+            let lines = picked_origins(&old, &new, &picks);
             let given = Given { lines, old: &old };
             let diff = diff(&old, &given);
             let as_found = diff_moved_as_found(&old, &given, 1 + picks[0].unwrap_or(0) as u32 % 4);

@@ -4,6 +4,7 @@
 
 use std::ops::ControlFlow;
 
+use super::align::{FirstReading, Runs};
 use super::{old_line, NewLine, NewLines};
 
 /// A line's origin when it has none.
@@ -23,6 +24,9 @@ pub struct Recorded<'o> {
     lines: Vec<(u32, u32)>,
     /// The text of the lines that are not their origin's, one after the other.
     changed: String,
+    /// The runs of lines, found as they are recorded (in parts, on the cores): the diff's
+    /// first reading, done.
+    runs: Runs,
 }
 
 impl<'o> Recorded<'o> {
@@ -42,15 +46,21 @@ impl<'o> Recorded<'o> {
             old,
             lines: Vec::new(),
             changed: String::new(),
+            runs: Runs::default(),
         }
     }
 
     /// Records the next line.
     pub fn push(&mut self, line: NewLine<'_>) {
         let origin = line.origin.unwrap_or(NO_ORIGIN);
-        let same = line
-            .origin
-            .is_some_and(|origin| old_line(self.old, origin as usize) == line.text);
+        let same = line.origin.is_some_and(|origin| {
+            let old_text = old_line(self.old, origin as usize);
+            let same = old_text == line.text;
+            let index = self.lines.len() as u32;
+            self.runs
+                .line(self.old, index, origin, old_text.len() as u32, same);
+            same
+        });
         let length = line.text.len() as u32;
         let length = match same {
             true => length | AS_ITS_ORIGIN,
@@ -64,12 +74,26 @@ impl<'o> Recorded<'o> {
 
     /// Records the lines of `part` (recorded apart, as on another core) after these.
     pub fn append(&mut self, part: Recorded<'_>) {
+        let offset = self.lines.len() as u32;
+        self.runs.append(self.old, part.runs, offset);
         self.lines.extend_from_slice(&part.lines);
         self.changed.push_str(&part.changed);
     }
 }
 
+impl Recorded<'_> {
+    /// What the diff's first reading of these lines finds, from the runs found as they were
+    /// recorded.
+    pub(super) fn first_reading(&self) -> FirstReading {
+        self.runs.reading(self.old, self)
+    }
+}
+
 impl NewLines for Recorded<'_> {
+    fn as_recorded(&self) -> Option<&Recorded<'_>> {
+        Some(self)
+    }
+
     fn each_line(&self, visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>) -> ControlFlow<()> {
         let mut changed_at = 0;
         for &(origin, length) in &self.lines {
