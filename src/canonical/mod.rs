@@ -662,19 +662,9 @@ mod tests {
             .collect();
         let document = Document::parse(&text).unwrap();
         let in_parts = document.record(&text);
-        let in_one = lines_of(&document);
+        let in_one = crate::unified::lines_of(&document);
         assert!(in_one.len() > 2 * LINES_RECORDED_AT_A_TIME);
-        assert_eq!(lines_of(&in_parts), in_one);
-    }
-
-    /// The lines of `new`, each with its origin.
-    fn lines_of(new: &impl NewLines) -> Vec<(String, Option<u32>)> {
-        let mut lines = Vec::new();
-        let _ = new.each_line(&mut |line| {
-            lines.push((line.text.to_string(), line.origin));
-            ControlFlow::Continue(())
-        });
-        lines
+        assert_eq!(crate::unified::lines_of(&in_parts), in_one);
     }
 
     #[test]

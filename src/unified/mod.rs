@@ -166,6 +166,18 @@ pub(crate) fn lines_inclusive(text: &str) -> impl Iterator<Item = (usize, &str)>
     })
 }
 
+/// The lines of `new`, each with its origin: for tests that compare two ways of making
+/// them.
+#[cfg(test)]
+pub(crate) fn lines_of(new: &impl NewLines) -> Vec<(String, Option<u32>)> {
+    let mut lines = Vec::new();
+    let _ = new.each_line(&mut |line| {
+        lines.push((line.text.to_string(), line.origin));
+        ControlFlow::Continue(())
+    });
+    lines
+}
+
 /// The old line that starts at `start`, with its line ending.
 fn old_line(old: &str, start: usize) -> &str {
     let end = memchr::memchr(b'\n', &old.as_bytes()[start..]).map_or(old.len(), |i| start + i + 1);

@@ -117,6 +117,7 @@ impl NewLines for Recorded<'_> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::lines_of as lines;
     use super::*;
 
     /// Lines given with their origins (as starts in the old text).
@@ -132,15 +133,6 @@ mod tests {
             }
             ControlFlow::Continue(())
         }
-    }
-
-    fn lines(new: &impl NewLines) -> Vec<(String, Option<u32>)> {
-        let mut lines = Vec::new();
-        let _ = new.each_line(&mut |line| {
-            lines.push((line.text.to_string(), line.origin));
-            ControlFlow::Continue(())
-        });
-        lines
     }
 
     #[test]
