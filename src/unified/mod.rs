@@ -10,9 +10,12 @@
 //!
 //! 1. [`align::first_reading`]: the new lines that keep their place, the longest ascending
 //!    chain of runs of consecutive origins (weighted by their equal lines); when the runs
-//!    all ascend (nothing moved), the changes too, and there is no second reading;
+//!    all ascend (nothing moved), the changes too, and there is no second reading. New
+//!    lines read once and kept ([`Recorded`]) found their runs as they were read, in parts
+//!    on the cores;
 //! 2. [`align::changes`]: the changes, each a range of old lines replaced by a range of new
-//!    ones, with what is equal between them;
+//!    ones, with what is equal between them; in a large text, found on another thread as
+//!    the hunks are printed ([`follow`]);
 //! 3. [`print`]: the hunks, with three lines of context, written as they come (old lines
 //!    from the old text, new ones as the third reading reaches them).
 //!
