@@ -41,7 +41,7 @@ use crate::model::Key;
 use crate::parallel::{self, lock};
 use crate::reader::Reader;
 use crate::syntax::{self, Body, Line};
-use crate::unified::{NewLine, NewLines};
+use crate::unified::{NewLine, NewLines, Recorded};
 use from_source::Place;
 
 /// Padding never makes a line as long as the smallest reader's line buffer.
@@ -58,6 +58,10 @@ const UNKNOWN_SLOT: u8 = Key::CulturalKnowledge as u8 + 1;
 
 /// How many lines [`Document::write_checked`] lays out before it writes them.
 const LINES_AT_A_TIME: usize = 1 << 17;
+
+/// How many lines [`Document::record`](NewLines::record) lays out at a time (72 bytes each
+/// before they are laid out).
+const LINES_RECORDED_AT_A_TIME: usize = 1 << 15;
 
 /// The fewest lines a core is given to lay out: fewer are not worth starting a thread.
 const MIN_LINES_PER_PART: usize = 1 << 13;
@@ -469,6 +473,42 @@ impl NewLines for Document<'_> {
             .all(|(before, after)| before < after)
     }
 
+    /// Laid out [`LINES_RECORDED_AT_A_TIME`] lines at a time, in parts on the cores.
+    fn record<'o>(&self, old: &'o str) -> Recorded<'o> {
+        let mut recorded = Recorded::none(old);
+        let mut lines = Vec::new();
+        let mut record = |lines: &mut Vec<(Unread<'_>, Option<u32>)>| {
+            let ranges = parallel::item_ranges(lines.len(), MIN_LINES_PER_PART);
+            let parts = parallel::map_ranges(ranges, |range| {
+                let mut part = Recorded::none(old);
+                let mut text = String::new();
+                for (line, origin) in &lines[range] {
+                    text.clear();
+                    push_item(&mut text, &line.clone().read(self));
+                    let origin = *origin;
+                    part.push(NewLine {
+                        text: &text,
+                        origin,
+                    });
+                }
+                part
+            });
+            for part in parts {
+                recorded.append(part);
+            }
+            lines.clear();
+        };
+        let _ = self.walk_unread(|line, origin| {
+            lines.push((line, origin));
+            if lines.len() == LINES_RECORDED_AT_A_TIME {
+                record(&mut lines);
+            }
+            ControlFlow::Continue(())
+        });
+        record(&mut lines);
+        recorded
+    }
+
     fn each_wanted_line(
         &self,
         wanted: &mut dyn FnMut(u32) -> bool,
@@ -610,6 +650,21 @@ mod tests {
         let text = format!("{text}a 1 x\r\r\n");
         let error = Document::parse(&text).unwrap_err();
         assert_eq!((error.count, error.lines[0].0), (1, 2 * lines as u32 + 3));
+    }
+
+    #[test]
+    fn a_large_file_is_recorded_in_parts_as_in_one() {
+        // Blocks out of order, with comments and lines the layout changes, in more lines
+        // than are recorded at a time.
+        let blocks = 2 * LINES_RECORDED_AT_A_TIME / 3;
+        let text: String = (0..blocks)
+            .map(|n| format!("# {n}\nb {} x\na   {} y\n", blocks - n, blocks - n))
+            .collect();
+        let document = Document::parse(&text).unwrap();
+        let in_parts = document.record(&text);
+        let in_one = crate::unified::lines_of(&document);
+        assert!(in_one.len() > 2 * LINES_RECORDED_AT_A_TIME);
+        assert_eq!(crate::unified::lines_of(&in_parts), in_one);
     }
 
     #[test]

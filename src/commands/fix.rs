@@ -21,7 +21,7 @@ use crate::rules::structure::invalid_utf8::INVALID_UTF8;
 use crate::source::SourceFile;
 use crate::stderr_line;
 use crate::syntax::{self, Body};
-use crate::unified::{InOrder, Recorded, Through};
+use crate::unified::{InOrder, NewLines, Recorded, Through};
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -143,7 +143,8 @@ fn fix_file(
 /// Prints the diff of `read` and its blocks put in a balanced order (`document`), from the
 /// layout: the lines of the text the document laid out taken back to the lines of `read`
 /// they came from, when that text is not `read`'s (the fixes edited it, or it was read as
-/// Latin-1). The layout is made once ([`Recorded`]), though the diff reads it three times.
+/// Latin-1). The layout is made once ([`Recorded`], in parts on the cores when it is the
+/// file's own), though the diff reads it twice more.
 /// Returns whether they differ.
 fn print_balanced(
     read: &SourceFile,
@@ -152,7 +153,7 @@ fn print_balanced(
 ) -> Result<bool, CommandError> {
     let old = read.text();
     let new = match std::ptr::eq(document.text(), old) {
-        true => Recorded::new(old, document),
+        true => document.record(old),
         false => {
             let between = InOrder {
                 old,

@@ -23,9 +23,11 @@ struct Run {
 }
 
 /// The new lines (by index, ascending ranges) that keep their place.
+#[derive(Debug, PartialEq, Eq)]
 pub(super) struct Kept(Vec<Range<u32>>);
 
 /// What the first reading of the new lines finds.
+#[derive(Debug, PartialEq, Eq)]
 pub(super) enum FirstReading {
     /// The origins ascend, so every line with one keeps its place: the changes, found on
     /// the way (no second reading).
@@ -39,63 +41,134 @@ pub(super) enum FirstReading {
 /// their equal lines). When the runs all ascend (a text that only changed in place, or
 /// moved nothing), the chain is every run, and the changes are found in the same reading.
 pub(super) fn first_reading(old: &str, new: &impl NewLines) -> FirstReading {
-    let mut runs: Vec<Run> = Vec::new();
-    let mut in_order = true;
+    let mut runs = Runs::default();
     let mut pairing = Pairing::new(old);
     let mut index = 0u32;
     let _ = new.each_line(&mut |line| {
         if let Some(origin) = line.origin {
             let old_text = old_line(old, origin as usize);
-            let equal = u32::from(old_text == line.text);
-            let next = origin + old_text.len() as u32;
-            match runs.last_mut() {
-                Some(run) if follows(old, run.next, origin) => {
-                    run.last = origin;
-                    run.next = next;
-                    run.lines.1 = index + 1;
-                    run.equal += equal;
-                }
-                previous => {
-                    in_order &= previous.is_none_or(|run| run.last < origin);
-                    runs.push(Run {
-                        first: origin,
-                        last: origin,
-                        next,
-                        lines: (index, index + 1),
-                        equal,
-                    });
-                }
-            }
+            runs.line(
+                old,
+                index,
+                origin,
+                old_text.len() as u32,
+                old_text == line.text,
+            );
         }
-        if in_order {
+        if runs.in_order {
             pairing.line(line, true);
         }
         index += 1;
         ControlFlow::Continue(())
     });
-    if in_order {
-        return FirstReading::InOrder(pairing.finish());
+    match runs.in_order {
+        true => FirstReading::InOrder(pairing.finish()),
+        false => FirstReading::Moved(runs.kept()),
     }
-    let chain = heaviest_chain(&runs);
-    FirstReading::Moved(Kept(
-        chain
-            .into_iter()
-            .map(|run| runs[run].lines.0..runs[run].lines.1)
-            .collect(),
-    ))
 }
 
-/// The changes of a new text whose origins ascend (nothing moved), found in one reading,
-/// as [`first_reading`] finds them, and handed to `finder` every `hand_over_every` lines.
-pub(super) fn find_in_order(
+/// The runs of new lines read so far, and whether they ascend.
+#[derive(Debug, Clone)]
+pub(super) struct Runs {
+    runs: Vec<Run>,
+    in_order: bool,
+}
+
+impl Default for Runs {
+    fn default() -> Runs {
+        Runs {
+            runs: Vec::new(),
+            in_order: true,
+        }
+    }
+}
+
+impl Runs {
+    /// New line `index`, made from the old line that starts at `origin` and is
+    /// `old_length` bytes long (`equal` to it or not).
+    pub(super) fn line(
+        &mut self,
+        old: &str,
+        index: u32,
+        origin: u32,
+        old_length: u32,
+        equal: bool,
+    ) {
+        let (next, equal) = (origin + old_length, u32::from(equal));
+        match self.runs.last_mut() {
+            Some(run) if follows(old, run.next, origin) => {
+                run.last = origin;
+                run.next = next;
+                run.lines.1 = index + 1;
+                run.equal += equal;
+            }
+            previous => {
+                self.in_order &= previous.is_none_or(|run| run.last < origin);
+                self.runs.push(Run {
+                    first: origin,
+                    last: origin,
+                    next,
+                    lines: (index, index + 1),
+                    equal,
+                });
+            }
+        }
+    }
+
+    /// Adds the runs of the new lines after these, read apart (their indices counted from
+    /// 0 there, from `offset` here): the first goes on with the last one here if it follows
+    /// it, as it would have if they had been read here.
+    pub(super) fn append(&mut self, old: &str, mut after: Runs, offset: u32) {
+        for run in &mut after.runs {
+            run.lines = (run.lines.0 + offset, run.lines.1 + offset);
+        }
+        let mut rest = after.runs.into_iter().peekable();
+        if let (Some(last), Some(first)) = (self.runs.last_mut(), rest.peek()) {
+            match follows(old, last.next, first.first) {
+                true => {
+                    (last.last, last.next, last.lines.1) = (first.last, first.next, first.lines.1);
+                    last.equal += first.equal;
+                    rest.next();
+                }
+                false => self.in_order &= last.last < first.first,
+            }
+        }
+        self.in_order &= after.in_order;
+        self.runs.extend(rest);
+    }
+
+    /// What the first reading of `new`, whose runs these are, finds: when the runs
+    /// ascend, the changes are found in a second reading (the runs were read apart).
+    pub(super) fn reading(&self, old: &str, new: &impl NewLines) -> FirstReading {
+        match self.in_order {
+            true => FirstReading::InOrder(pair(old, new, None, |_| {})),
+            false => FirstReading::Moved(self.kept()),
+        }
+    }
+
+    /// The new lines of the heaviest chain of runs.
+    fn kept(&self) -> Kept {
+        let chain = heaviest_chain(&self.runs);
+        Kept(
+            chain
+                .into_iter()
+                .map(|run| self.runs[run].lines.0..self.runs[run].lines.1)
+                .collect(),
+        )
+    }
+}
+
+/// The changes, found in one reading as [`first_reading`] finds them when nothing moved,
+/// else as [`changes`] finds them from the lines `kept`, and handed to `finder` every
+/// `hand_over_every` lines.
+pub(super) fn find(
     old: &str,
     new: &impl NewLines,
+    kept: Option<&Kept>,
     mut finder: Finder<'_>,
     hand_over_every: u32,
 ) {
-    let mut pairing = Pairing::new(old);
-    let _ = new.each_line(&mut |line| {
-        pairing.line(line, true);
+    let changes = pair(old, new, kept, |pairing| {
         if pairing.index % hand_over_every == 0 {
             // Every change not found yet starts at the one open, or at the lines to come.
             let settled = match pairing.open {
@@ -104,9 +177,8 @@ pub(super) fn find_in_order(
             };
             finder.hand_over(&mut pairing.changes.regions, settled);
         }
-        ControlFlow::Continue(())
     });
-    finder.finish(pairing.finish());
+    finder.finish(changes);
 }
 
 /// Whether the old line at `origin` follows the one that ends at `next`: nothing but blank
@@ -175,7 +247,7 @@ pub(super) struct Region {
 
 /// Every change, in order, and how many lines the old text has. Between two changes, and
 /// before the first and after the last, the lines are equal.
-#[derive(Debug, Default)]
+#[derive(Debug, Default, PartialEq, Eq)]
 pub(super) struct Changes {
     pub regions: Vec<Region>,
     pub old_lines: u32,
@@ -184,15 +256,27 @@ pub(super) struct Changes {
 /// The changes when lines moved: a second reading, which pairs the lines that `kept` says
 /// keep their place.
 pub(super) fn changes(old: &str, new: &impl NewLines, kept: &Kept) -> Changes {
+    pair(old, new, Some(kept), |_| {})
+}
+
+/// Pairs every new line ([`Pairing`]), each kept if `kept` says so (every one if there is
+/// no `kept`: nothing moved), `after_line` called after each.
+fn pair(
+    old: &str,
+    new: &impl NewLines,
+    kept: Option<&Kept>,
+    mut after_line: impl FnMut(&mut Pairing<'_>),
+) -> Changes {
     let mut pairing = Pairing::new(old);
-    let mut kept_ranges = kept.0.iter().peekable();
+    let mut kept_ranges = kept.map(|kept| kept.0.iter().peekable());
     let _ = new.each_line(&mut |line| {
         let index = pairing.index;
-        while kept_ranges.next_if(|range| range.end <= index).is_some() {}
-        let is_kept = kept_ranges
-            .peek()
-            .is_some_and(|range| range.contains(&index));
+        let is_kept = kept_ranges.as_mut().is_none_or(|ranges| {
+            while ranges.next_if(|range| range.end <= index).is_some() {}
+            ranges.peek().is_some_and(|range| range.contains(&index))
+        });
         pairing.line(line, is_kept);
+        after_line(&mut pairing);
         ControlFlow::Continue(())
     });
     pairing.finish()

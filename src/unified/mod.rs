@@ -10,9 +10,12 @@
 //!
 //! 1. [`align::first_reading`]: the new lines that keep their place, the longest ascending
 //!    chain of runs of consecutive origins (weighted by their equal lines); when the runs
-//!    all ascend (nothing moved), the changes too, and there is no second reading;
+//!    all ascend (nothing moved), the changes too, and there is no second reading. New
+//!    lines read once and kept ([`Recorded`]) found their runs as they were read, in parts
+//!    on the cores;
 //! 2. [`align::changes`]: the changes, each a range of old lines replaced by a range of new
-//!    ones, with what is equal between them;
+//!    ones, with what is equal between them; in a large text, found on another thread as
+//!    the hunks are printed ([`follow`]);
 //! 3. [`print`]: the hunks, with three lines of context, written as they come (old lines
 //!    from the old text, new ones as the third reading reaches them).
 //!
@@ -54,6 +57,21 @@ pub trait NewLines {
         false
     }
 
+    /// These lines, if they were read once already ([`Recorded`]): then the diff's first
+    /// reading is done too.
+    fn as_recorded(&self) -> Option<&Recorded<'_>> {
+        None
+    }
+
+    /// The lines read once ([`Recorded`]) against `old`, the text they were made from. A new
+    /// text that can lay out its lines in parts on the cores does so.
+    fn record<'o>(&self, old: &'o str) -> Recorded<'o>
+    where
+        Self: Sized,
+    {
+        Recorded::new(old, self)
+    }
+
     /// Visits the lines whose index (0-based) `wanted` takes, in order, each with its index,
     /// until `visit` breaks; `wanted` is asked of each index in order. A new text that can
     /// pass over a line more cheaply than it writes it does so for the others.
@@ -90,11 +108,19 @@ pub fn write_diff(
     new: &(impl NewLines + Sync),
     style: Style<'_>,
 ) -> io::Result<bool> {
-    if new.origins_ascend() && parallel::parts_for_text(old.len()) > 1 {
-        return write_as_found(out, old, new, style, HAND_OVER_EVERY);
+    let large = parallel::parts_for_text(old.len()) > 1;
+    if new.origins_ascend() && large {
+        return write_as_found(out, old, new, None, style, HAND_OVER_EVERY);
     }
-    let changes = match align::first_reading(old, new) {
+    let reading = match new.as_recorded() {
+        Some(recorded) => recorded.first_reading(),
+        None => align::first_reading(old, new),
+    };
+    let changes = match reading {
         align::FirstReading::InOrder(changes) => changes,
+        align::FirstReading::Moved(kept) if large => {
+            return write_as_found(out, old, new, Some(&kept), style, HAND_OVER_EVERY);
+        }
         align::FirstReading::Moved(kept) => align::changes(old, new, &kept),
     };
     print::print(out, old, new, follow::Known::all(changes), style)
@@ -103,24 +129,26 @@ pub fn write_diff(
 /// How many new lines the finder of [`write_as_found`] reads between two hand-overs.
 const HAND_OVER_EVERY: u32 = 4096;
 
-/// [`write_diff`] of new lines whose origins ascend (nothing moved): the changes are found
-/// on another thread, handed over every `hand_over_every` lines, as the diff is printed.
+/// [`write_diff`] of new lines whose origins ascend (nothing moved), or whose lines `kept`
+/// keep their place: the changes are found on another thread, handed over every
+/// `hand_over_every` lines, as the diff is printed.
 fn write_as_found(
     out: &mut impl Write,
     old: &str,
     new: &(impl NewLines + Sync),
+    kept: Option<&align::Kept>,
     style: Style<'_>,
     hand_over_every: u32,
 ) -> io::Result<bool> {
     let shared = follow::Shared::default();
     std::thread::scope(|scope| {
-        let find = || align::find_in_order(old, new, shared.finder(), hand_over_every);
+        let find = || align::find(old, new, kept, shared.finder(), hand_over_every);
         if std::thread::Builder::new()
             .spawn_scoped(scope, find)
             .is_err()
         {
             // Without a thread, they are all found first.
-            align::find_in_order(old, new, shared.finder(), hand_over_every);
+            align::find(old, new, kept, shared.finder(), hand_over_every);
         }
         print::print(out, old, new, follow::Known::following(&shared), style)
     })
@@ -139,6 +167,18 @@ pub(crate) fn lines_inclusive(text: &str) -> impl Iterator<Item = (usize, &str)>
         start = end;
         Some(line)
     })
+}
+
+/// The lines of `new`, each with its origin: for tests that compare two ways of making
+/// them.
+#[cfg(test)]
+pub(crate) fn lines_of(new: &impl NewLines) -> Vec<(String, Option<u32>)> {
+    let mut lines = Vec::new();
+    let _ = new.each_line(&mut |line| {
+        lines.push((line.text.to_string(), line.origin));
+        ControlFlow::Continue(())
+    });
+    lines
 }
 
 /// The old line that starts at `start`, with its line ending.
@@ -188,8 +228,19 @@ mod tests {
     /// The diff printed as the changes are found, handed over every `every` lines.
     fn diff_as_found(old: &str, new: &(impl NewLines + Sync), every: u32) -> String {
         let mut out = Vec::new();
-        write_as_found(&mut out, old, new, STYLE, every).unwrap();
+        write_as_found(&mut out, old, new, None, STYLE, every).unwrap();
         String::from_utf8(out).unwrap()
+    }
+
+    /// The diff of lines that moved printed as the changes are found, handed over every
+    /// `every` lines; none if nothing moved.
+    fn diff_moved_as_found(old: &str, new: &(impl NewLines + Sync), every: u32) -> Option<String> {
+        let align::FirstReading::Moved(kept) = align::first_reading(old, new) else {
+            return None;
+        };
+        let mut out = Vec::new();
+        write_as_found(&mut out, old, new, Some(&kept), STYLE, every).unwrap();
+        Some(String::from_utf8(out).unwrap())
     }
 
     fn in_order(old: &str, new: &str) -> String {
@@ -349,6 +400,24 @@ mod tests {
             })
     }
 
+    /// The lines of `new`, each with the old line `picks` picks as its origin, if any.
+    fn picked_origins<'n>(
+        old: &str,
+        new: &'n str,
+        picks: &[Option<u8>],
+    ) -> Vec<(&'n str, Option<usize>)> {
+        let old_count = lines_inclusive(old).count();
+        lines_inclusive(new)
+            .zip(picks)
+            .map(|((_, line), pick)| {
+                let origin = pick
+                    .filter(|_| old_count > 0)
+                    .map(|pick| pick as usize % old_count);
+                (line, origin)
+            })
+            .collect()
+    }
+
     proptest! {
         #[test]
         fn the_diff_of_any_two_texts_gives_the_new_one(old in text(), new in text()) {
@@ -368,20 +437,34 @@ mod tests {
         }
 
         #[test]
+        fn lines_recorded_in_two_parts_are_read_first_as_they_are_given(
+            old in text(),
+            new in text(),
+            picks in proptest::collection::vec(any::<Option<u8>>(), 40),
+            cut in 0..40usize,
+        ) {
+            let lines = picked_origins(&old, &new, &picks);
+            let cut = cut.min(lines.len());
+            let part = |lines: &[(&str, Option<usize>)]| {
+                Recorded::new(&old, &Given { lines: lines.to_vec(), old: &old })
+            };
+            let mut recorded = part(&lines[..cut]);
+            recorded.append(part(&lines[cut..]));
+            let given = Given { lines, old: &old };
+            prop_assert_eq!(recorded.first_reading(), align::first_reading(&old, &given));
+        }
+
+        #[test]
         fn any_origins_give_a_diff_that_gives_the_new_text(
             old in text(),
             new in text(),
             picks in proptest::collection::vec(any::<Option<u8>>(), 40),
         ) {
-            let old_count = lines_inclusive(&old).count();
-            let lines = lines_inclusive(&new)
-                .zip(&picks)
-                .map(|((_, line), pick)| {
-                    let origin = pick.filter(|_| old_count > 0).map(|pick| pick as usize % old_count);
-                    (line, origin)
-                })
-                .collect();
-            let diff = diff(&old, &Given { lines, old: &old });
+            let lines = picked_origins(&old, &new, &picks);
+            let given = Given { lines, old: &old };
+            let diff = diff(&old, &given);
+            let as_found = diff_moved_as_found(&old, &given, 1 + picks[0].unwrap_or(0) as u32 % 4);
+            prop_assert!(as_found.is_none_or(|as_found| as_found == diff));
             prop_assert_eq!(apply(&old, &diff), new);
         }
     }

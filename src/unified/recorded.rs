@@ -4,6 +4,7 @@
 
 use std::ops::ControlFlow;
 
+use super::align::{FirstReading, Runs};
 use super::{old_line, NewLine, NewLines};
 
 /// A line's origin when it has none.
@@ -23,37 +24,76 @@ pub struct Recorded<'o> {
     lines: Vec<(u32, u32)>,
     /// The text of the lines that are not their origin's, one after the other.
     changed: String,
+    /// The runs of lines, found as they are recorded (in parts, on the cores): the diff's
+    /// first reading, done.
+    runs: Runs,
 }
 
 impl<'o> Recorded<'o> {
     /// Reads the lines of `new`, made from `old`, once.
     pub fn new(old: &'o str, new: &impl NewLines) -> Recorded<'o> {
-        let mut recorded = Recorded {
-            old,
-            lines: Vec::new(),
-            changed: String::new(),
-        };
+        let mut recorded = Recorded::none(old);
         let _ = new.each_line(&mut |line| {
-            let origin = line.origin.unwrap_or(NO_ORIGIN);
-            let same = line
-                .origin
-                .is_some_and(|origin| old_line(old, origin as usize) == line.text);
-            let length = line.text.len() as u32;
-            let length = match same {
-                true => length | AS_ITS_ORIGIN,
-                false => {
-                    recorded.changed.push_str(line.text);
-                    length
-                }
-            };
-            recorded.lines.push((origin, length));
+            recorded.push(line);
             ControlFlow::Continue(())
         });
         recorded
     }
+
+    /// No lines yet, of a new text made from `old`: lines are pushed, or parts appended.
+    pub fn none(old: &'o str) -> Recorded<'o> {
+        Recorded {
+            old,
+            lines: Vec::new(),
+            changed: String::new(),
+            runs: Runs::default(),
+        }
+    }
+
+    /// Records the next line.
+    pub fn push(&mut self, line: NewLine<'_>) {
+        let origin = line.origin.unwrap_or(NO_ORIGIN);
+        let same = line.origin.is_some_and(|origin| {
+            let old_text = old_line(self.old, origin as usize);
+            let same = old_text == line.text;
+            let index = self.lines.len() as u32;
+            self.runs
+                .line(self.old, index, origin, old_text.len() as u32, same);
+            same
+        });
+        let length = line.text.len() as u32;
+        let length = match same {
+            true => length | AS_ITS_ORIGIN,
+            false => {
+                self.changed.push_str(line.text);
+                length
+            }
+        };
+        self.lines.push((origin, length));
+    }
+
+    /// Records the lines of `part` (recorded apart, as on another core) after these.
+    pub fn append(&mut self, part: Recorded<'_>) {
+        let offset = self.lines.len() as u32;
+        self.runs.append(self.old, part.runs, offset);
+        self.lines.extend_from_slice(&part.lines);
+        self.changed.push_str(&part.changed);
+    }
+}
+
+impl Recorded<'_> {
+    /// What the diff's first reading of these lines finds, from the runs found as they were
+    /// recorded.
+    pub(super) fn first_reading(&self) -> FirstReading {
+        self.runs.reading(self.old, self)
+    }
 }
 
 impl NewLines for Recorded<'_> {
+    fn as_recorded(&self) -> Option<&Recorded<'_>> {
+        Some(self)
+    }
+
     fn each_line(&self, visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>) -> ControlFlow<()> {
         let mut changed_at = 0;
         for &(origin, length) in &self.lines {
@@ -77,6 +117,7 @@ impl NewLines for Recorded<'_> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::lines_of as lines;
     use super::*;
 
     /// Lines given with their origins (as starts in the old text).
@@ -92,15 +133,6 @@ mod tests {
             }
             ControlFlow::Continue(())
         }
-    }
-
-    fn lines(new: &impl NewLines) -> Vec<(String, Option<u32>)> {
-        let mut lines = Vec::new();
-        let _ = new.each_line(&mut |line| {
-            lines.push((line.text.to_string(), line.origin));
-            ControlFlow::Continue(())
-        });
-        lines
     }
 
     #[test]
