@@ -5,6 +5,7 @@ use std::io::{self, Write};
 use comfy_table::{presets, ContentArrangement, Table};
 
 use crate::parallel;
+use crate::syntax::swar;
 
 /// A table that fits the terminal: comfy-table measures it when standard output is one;
 /// `COLUMNS` sets the width otherwise (and wins, as for other tools).
@@ -244,15 +245,10 @@ fn widest_line(cell: &str) -> Option<usize> {
 /// How many bytes at the start of `bytes` are printable ASCII (`' '..='~'`), eight at a
 /// time: most of a cell is.
 fn printable_ascii_run(bytes: &[u8]) -> usize {
-    const ONES: u64 = u64::from_le_bytes([0x01; 8]);
-    const HIGH: u64 = u64::from_le_bytes([0x80; 8]);
     let mut at = 0;
     while let Some(eight) = bytes.get(at..at + 8) {
         let word = u64::from_le_bytes(eight.try_into().expect("eight bytes"));
-        // The high bit of each byte from `~` up (adding one carries into it), or below a space
-        // (taking a space away borrows into it). A carry or a borrow may set the bits of the
-        // bytes after such a byte, but never of those before it: the first is exact.
-        let outside = (word.wrapping_sub(0x20 * ONES) | word | word.wrapping_add(ONES)) & HIGH;
+        let outside = swar::unprintable_bytes(word);
         if outside != 0 {
             return at + (outside.trailing_zeros() / 8) as usize;
         }

@@ -163,18 +163,9 @@ mod sse2 {
 }
 
 /// The high bit of each byte of `word` that is not printable ASCII (a control, DEL, not
-/// ASCII) or is `:` or `#`. No carry crosses bytes: the sums are of 7-bit values.
+/// ASCII) or is `:` or `#`.
 fn unusual_bytes(word: u64) -> u64 {
-    const LOW_BITS: u64 = 0x7f7f_7f7f_7f7f_7f7f;
-    const HIGH_BITS: u64 = 0x8080_8080_8080_8080;
-    let splat = |byte: u8| u64::from_ne_bytes([byte; 8]);
-    let low = word & LOW_BITS;
-    let not_ascii = word;
-    let delete = low + splat(1);
-    let control = !((low | HIGH_BITS) - splat(b' '));
-    (not_ascii | delete | control) & HIGH_BITS
-        | swar::bytes_equal(word, b':')
-        | swar::bytes_equal(word, b'#')
+    swar::unprintable_bytes(word) | swar::bytes_equal(word, b':') | swar::bytes_equal(word, b'#')
 }
 
 /// Whether `bytes` holds neither `::` nor `##`. (A search for each pair builds a searcher

@@ -57,6 +57,17 @@ pub fn non_blank_bytes(word: u64) -> u64 {
     !blank_bytes(word) & HIGH_BITS
 }
 
+/// The high bit of each byte of `word` that is not printable ASCII (`' '..='~'`): a
+/// control, DEL, or not ASCII. Exact for every byte: the sums are of 7-bit values, so no
+/// carry crosses bytes.
+#[inline]
+pub fn unprintable_bytes(word: u64) -> u64 {
+    let low = word & LOW_BITS;
+    let delete = low + splat(1);
+    let control = !((low | HIGH_BITS) - splat(b' '));
+    (word | delete | control) & HIGH_BITS
+}
+
 /// The high bit of each byte of `word` that is not ASCII.
 #[inline]
 pub fn non_ascii_bytes(word: u64) -> u64 {
@@ -102,6 +113,7 @@ mod tests {
         agrees(blank_bytes, crate::syntax::is_blank);
         agrees(non_blank_bytes, |b| !crate::syntax::is_blank(b));
         agrees(non_ascii_bytes, |b| !b.is_ascii());
+        agrees(unprintable_bytes, |b| !matches!(b, b' '..=b'~'));
         assert!(words().all(|(word, at, byte)| word.to_le_bytes()[at] == byte));
     }
 
