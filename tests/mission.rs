@@ -163,6 +163,7 @@ rule_tests! {
     culture_line_too_long: "culture-line-too-long" => [(CULTURE, 2, 199)];
     culture_no_final_newline: "culture-no-final-newline" => [(CULTURE, 2, 34)];
     culture_crlf: "culture-crlf" => [(CULTURE, 1, 23)];
+    culture_word_too_long: "culture-word-too-long" => [(CULTURE, 2, 23), (CULTURE, 3, 1)];
 }
 
 #[test]

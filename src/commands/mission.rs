@@ -291,6 +291,8 @@ fn run_walk(args: &ShowArgs, context: &Context) -> CommandResult {
     Ok(match walked.outcome {
         walk::Outcome::Completed => Exit::Clean,
         walk::Outcome::Stopped { .. } => Exit::Failure,
-        walk::Outcome::Failed | walk::Outcome::NeverEnds { .. } => Exit::Findings,
+        walk::Outcome::Failed | walk::Outcome::NeverEnds { .. } | walk::Outcome::Crashes { .. } => {
+            Exit::Findings
+        }
     })
 }

@@ -206,19 +206,20 @@ fn the_walk_visits_the_tour_in_order_and_ends() {
 }
 
 #[test]
-fn a_walk_in_isizulu_says_undefined_phrases_and_placeholders() {
+fn a_walk_in_isizulu_crashes_at_the_welcome_whose_phrase_is_undefined() {
+    // The robot holds a null pointer for an UNDEFINED phrase and makes a string of it:
+    // it throws, and the robot stops at the first SayText.
     let walked = run(&["mission", "walk", "--config-dir", CONFIG, "--lang", "zu"]);
-    assert_eq!(walked.code, 0);
+    assert_eq!(walked.code, 1);
     assert!(
-        walked
-            .stdout
-            .contains("utilityPhraseIsiZulu4 is typed UNDEFINED"),
+        walked.stdout.contains(
+            "end: the robot crashes at `SayText` (line 55): utilityPhraseIsiZulu4 is typed \
+             UNDEFINED"
+        ),
         "{}",
         walked.stdout
     );
-    assert!(walked
-        .stdout
-        .contains("say \"No message in isiZulu\" — a placeholder, said aloud"));
+    assert!(walked.stdout.contains("logic_error"), "{}", walked.stdout);
 }
 
 #[test]
