@@ -375,6 +375,72 @@ fn each_kind_of_tree_that_behaviortree_cpp_refuses_is_an_error() {
     }
 }
 
+/// BehaviorTree.CPP 4.6's loader (`xml_parsing.cpp`, `VerifyXML` and `createNodeFromXML`):
+/// what it refuses beyond the cases above, and its near misses, which it loads. Each
+/// error is `(rule, line)`.
+#[test]
+fn behaviortree_cpp_4_refuses_tree_ids_of_nodes_nameless_trees_and_two_models() {
+    let cases: &[(&str, &[(&str, u32)])] = &[
+        // A tree may not take a node's name, as a <BehaviorTree> or a <SubTree> call.
+        (
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"Navigate\">\n\
+             <BehaviorTree ID=\"Navigate\"><AlwaysSuccess/></BehaviorTree></root>",
+            &[("mission-unknown-tree", 2)],
+        ),
+        (
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n\
+             <BehaviorTree ID=\"A\"><SubTree ID=\"Sequence\"/></BehaviorTree>\n\
+             <BehaviorTree ID=\"Sequence\"><AlwaysSuccess/></BehaviorTree></root>",
+            &[("mission-unknown-tree", 2), ("mission-unknown-tree", 3)],
+        ),
+        (
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"Go\">\n\
+             <BehaviorTree ID=\"Go\"><Navigate/></BehaviorTree></root>",
+            &[],
+        ),
+        // A tree without an ID beside any other element of <root>.
+        (
+            "<root BTCPP_format=\"4\">\n<TreeNodesModel/>\n\
+             <BehaviorTree><AlwaysSuccess/></BehaviorTree></root>",
+            &[("mission-unknown-tree", 3)],
+        ),
+        (
+            "<root BTCPP_format=\"4\">\n<BehaviorTree><AlwaysSuccess/></BehaviorTree></root>",
+            &[],
+        ),
+        // One <TreeNodesModel> at most.
+        (
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n<TreeNodesModel/>\n\
+             <TreeNodesModel/>\n<BehaviorTree ID=\"A\"><AlwaysSuccess/></BehaviorTree></root>",
+            &[("mission-bad-children", 3)],
+        ),
+        // Only a name that starts with a letter is checked against the ports.
+        (
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n<BehaviorTree ID=\"A\">\n\
+             <Navigate _description=\"go\" _skipIf=\"false\" \u{e9}tape=\"1\"/></BehaviorTree></root>",
+            &[],
+        ),
+        (
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n<BehaviorTree ID=\"A\">\n\
+             <Navigate etape=\"1\"/></BehaviorTree></root>",
+            &[("mission-unknown-attribute", 3)],
+        ),
+    ];
+    for (xml, expected) in cases {
+        let source = SourceFile::from_bytes("t.xml", xml.as_bytes().to_vec());
+        let checked = check_together(
+            &MissionSources {
+                mission: Some(&source),
+                ..MissionSources::default()
+            },
+            &RuleSet::default(),
+        );
+        let all = locate(&checked);
+        let found: Vec<(&str, u32)> = errors(&all).iter().map(|f| (f.rule, f.line)).collect();
+        assert_eq!(found, *expected, "{xml}:\n{}", show(&all));
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // Any input: a finding, never a panic or a hang
 

@@ -23,6 +23,7 @@ pub fn check_tree(mission: &Mission, out: &mut Diagnostics) {
     mission_missing_format::check(mission, out);
     mission_unknown_tree::check(mission, out);
     mission_unreachable_tree::check(mission, out);
+    mission_bad_children::check_root(mission, out);
     for behavior_tree in mission.trees() {
         mission_bad_children::check_tree(behavior_tree, out);
         for node in tree::nodes(behavior_tree) {
