@@ -441,6 +441,37 @@ fn behaviortree_cpp_4_refuses_tree_ids_of_nodes_nameless_trees_and_two_models() 
     }
 }
 
+/// behaviorController v1.1 (April 2026) registers `…Async` forms of six nodes: a warning
+/// (the robots before refuse them), and each does its synchronous node's work.
+#[test]
+fn the_async_nodes_of_behavior_controller_v1_1_are_a_warning_and_say_their_phrases() {
+    let xml = "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n<BehaviorTree ID=\"A\">\n\
+               <Sequence>\n<SayTextAsync name=\"4\"/>\n<SayTextAsync name=\"9\"/>\n\
+               <NavigateAsync/>\n<PerformIconicGestureAsync name=\"wave\"/>\n</Sequence>\n\
+               </BehaviorTree></root>";
+    let [_, culture, types, kb] = set_up(None);
+    let files = [SourceFile::from_bytes(MISSION, xml.as_bytes().to_vec()), culture, types, kb];
+    let all = check_set(&files);
+    let mission: Vec<(&str, u32, Severity)> = all
+        .iter()
+        .filter(|f| f.file == MISSION)
+        .map(|f| (f.rule, f.line, f.severity))
+        .collect();
+    assert_eq!(
+        mission,
+        [
+            ("mission-unknown-node", 4, Severity::Warning),
+            ("mission-unknown-node", 5, Severity::Warning),
+            ("mission-missing-phrase", 5, Severity::Error),
+            ("mission-unknown-node", 6, Severity::Warning),
+            ("mission-unknown-node", 7, Severity::Warning),
+            ("mission-invalid-name", 7, Severity::Error),
+        ],
+        "{}",
+        show(&all)
+    );
+}
+
 // ---------------------------------------------------------------------------------------
 // Any input: a finding, never a panic or a hang
 

@@ -329,6 +329,14 @@ impl Walker<'_, '_> {
     fn robot_node(&mut self, node: &Element, id: &str) -> Result<Status, Halt> {
         let name = tree::robot_name(node).unwrap_or(id);
         let stops: Vec<u32> = self.world.kb.tour_stops().collect();
+        if id == "DescribeExhibitSpeechAsync" {
+            // v1.1: both messages, whatever the node's name.
+            let pre = self.describe_exhibit("1");
+            return Ok(Status::of(
+                pre == Status::Success && self.describe_exhibit("2") == Status::Success,
+            ));
+        }
+        let id = super::catalogue::synchronous(id);
         if id == "SayText" {
             return self.say_phrase(node, name).map(|()| Status::Success);
         }

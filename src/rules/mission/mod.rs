@@ -30,6 +30,7 @@ pub fn check_tree(mission: &Mission, out: &mut Diagnostics) {
             match tree::model(node) {
                 None => mission_unknown_node::check(mission, node, out),
                 Some(model) => {
+                    mission_unknown_node::check_v1_1_only(node, model, out);
                     mission_bad_children::check(node, model, out);
                     mission_unknown_attribute::check(node, model, out);
                     mission_invalid_name::check(node, model, out);
