@@ -414,6 +414,12 @@ fn behaviortree_cpp_4_refuses_tree_ids_of_nodes_nameless_trees_and_two_models() 
              <TreeNodesModel/>\n<BehaviorTree ID=\"A\"><AlwaysSuccess/></BehaviorTree></root>",
             &[("mission-bad-children", 3)],
         ),
+        // tinyxml2 keeps a `&` that starts no entity as it is.
+        (
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n<BehaviorTree ID=\"A\">\n\
+             <Navigate _description=\"Fish & Chips &nbsp;\"/></BehaviorTree></root>",
+            &[],
+        ),
         // Only a name that starts with a letter is checked against the ports.
         (
             "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n<BehaviorTree ID=\"A\">\n\
@@ -450,7 +456,12 @@ fn the_async_nodes_of_behavior_controller_v1_1_are_a_warning_and_say_their_phras
                <NavigateAsync/>\n<PerformIconicGestureAsync name=\"wave\"/>\n</Sequence>\n\
                </BehaviorTree></root>";
     let [_, culture, types, kb] = set_up(None);
-    let files = [SourceFile::from_bytes(MISSION, xml.as_bytes().to_vec()), culture, types, kb];
+    let files = [
+        SourceFile::from_bytes(MISSION, xml.as_bytes().to_vec()),
+        culture,
+        types,
+        kb,
+    ];
     let all = check_set(&files);
     let mission: Vec<(&str, u32, Severity)> = all
         .iter()
