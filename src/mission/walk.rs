@@ -13,7 +13,7 @@ use serde::Serialize;
 use super::culture::{Held, PhraseBook};
 use super::tree::{self, Mission};
 use super::xml::Element;
-use crate::model::{Arm, KnowledgeBase, Phase};
+use crate::model::{Arm, KnowledgeBase, Language, Phase};
 use crate::source::LineIndex;
 use crate::syntax::Span;
 
@@ -403,7 +403,14 @@ impl Walker<'_, '_> {
             }
             "GetVisitorResponse" => {
                 self.steps.push(Step::Listen);
-                self.board.visitor_response = Some("yes".to_string());
+                // The robot knows yes-words in English and Kinyarwanda only: an isiZulu
+                // answer is no answer after its 10 seconds.
+                let understood = matches!(
+                    self.world.phrases.language,
+                    Some(Language::English | Language::Kinyarwanda)
+                );
+                let response = if understood { "yes" } else { "" };
+                self.board.visitor_response = Some(response.to_string());
                 Status::Success
             }
             "HasVisitorResponded" => Status::of(

@@ -405,3 +405,63 @@ fn a_phrase_the_types_file_does_not_declare_repeats_the_last_one_said() {
         )
     );
 }
+
+#[test]
+fn the_configuration_folder_is_read_as_the_robot_reads_it() {
+    // The behaviour controller takes the rest of the line as the value: `= labTour`.
+    let root = edited_set_up("behaviorControllerConfiguration.ini", |text| {
+        text.replace(
+            "scenarioSpecification labTour",
+            "scenarioSpecification = labTour",
+        )
+    });
+    let checked = run(&["mission", "check", "--config-dir", &config_of(&root)]);
+    assert_eq!(checked.code, 2, "{}", checked.stderr);
+    assert!(
+        checked
+            .stderr
+            .contains("with the value `= labTour`, not `labTour`"),
+        "{}",
+        checked.stderr
+    );
+    assert!(
+        checked.stderr.contains("= labTour.xml"),
+        "{}",
+        checked.stderr
+    );
+    // The corpus's own files draw no warning.
+    let corpus = run(&["mission", "check", "--config-dir", CONFIG]);
+    assert!(!corpus.stderr.contains("warning"), "{}", corpus.stderr);
+}
+
+#[test]
+fn an_isizulu_answer_is_never_understood_and_the_tour_never_starts() {
+    // With every isiZulu phrase typed PHRASE, the welcome is said; then the robot listens,
+    // knows no isiZulu yes-word, and the visitor never answers.
+    let root = edited_set_up("cultureKnowledgeValueTypesInput.dat", |text| {
+        text.lines()
+            .map(|line| match line.starts_with("utilityPhraseIsiZulu") {
+                true => line.replace("UNDEFINED", "PHRASE"),
+                false => line.to_string(),
+            })
+            .collect::<Vec<_>>()
+            .join("\n")
+            + "\n"
+    });
+    let culture = root.path().join("data/cultureKnowledgeBaseInput.dat");
+    let mut text = std::fs::read_to_string(&culture).unwrap();
+    for number in 1..=7 {
+        text.push_str(&format!("\nutilityPhraseIsiZulu{number} Sawubona {number}"));
+    }
+    std::fs::write(&culture, text + "\n").unwrap();
+    let walked = run(&[
+        "mission",
+        "walk",
+        "--config-dir",
+        &config_of(&root),
+        "--lang",
+        "zu",
+    ]);
+    assert!(walked.stdout.contains("listen"), "{}", walked.stdout);
+    assert!(!walked.stdout.contains("go to"), "{}", walked.stdout);
+}
