@@ -454,6 +454,11 @@ impl<'a> CultureKnowledgeBase<'a> {
             return Held::Undefined;
         }
         let readings = self.readings.get(key).map_or(&[][..], Vec::as_slice);
+        // A PHRASE line always stores what it copies, even bytes the file never wrote.
+        let readings = match value_type {
+            ValueType::Phrase => &readings[readings.len().saturating_sub(1)..],
+            _ => readings,
+        };
         let value = readings.iter().rev().find_map(|reading| {
             let entry = &self.entries[reading.entry];
             match value_type {
@@ -596,6 +601,13 @@ mod tests {
             crlf.held(&types, "utilityPhraseEnglish1").text(),
             Some("Goodbye\r")
         );
+    }
+
+    #[test]
+    fn a_phrase_copied_from_bytes_the_file_never_wrote_replaces_the_one_before() {
+        let types = ValueTypes::parse("k PHRASE\n");
+        let kb = CultureKnowledgeBase::parse("k Hi\nk \u{e9}\n");
+        assert!(matches!(kb.held(&types, "k"), Held::Unreadable(_)));
     }
 
     #[test]

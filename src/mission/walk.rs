@@ -64,8 +64,9 @@ pub enum Step {
     Gesture { gesture: String },
     /// `PressYesNoDialogue`.
     AskOnTablet,
-    /// `GetVisitorResponse`.
-    Listen,
+    /// `GetVisitorResponse`: the visitor answers yes, and the robot understands it if it
+    /// knows the yes-words of the mission's language.
+    Listen { understood: bool },
     /// `Navigate`.
     GoTo { place: Option<Place>, home: bool },
     /// `PerformDeicticGesture`.
@@ -402,13 +403,13 @@ impl Walker<'_, '_> {
                 Status::Success
             }
             "GetVisitorResponse" => {
-                self.steps.push(Step::Listen);
-                // The robot knows yes-words in English and Kinyarwanda only: an isiZulu
-                // answer is no answer after its 10 seconds.
+                // The robot knows yes-words in English and Kinyarwanda only: an answer in
+                // another language is no answer after its 10 seconds.
                 let understood = matches!(
                     self.world.phrases.language,
                     Some(Language::English | Language::Kinyarwanda)
                 );
+                self.steps.push(Step::Listen { understood });
                 let response = if understood { "yes" } else { "" };
                 self.board.visitor_response = Some(response.to_string());
                 Status::Success
@@ -627,7 +628,11 @@ fn describe(step: &Step) -> String {
         }
         Step::Gesture { gesture } => format!("make the {gesture} gesture"),
         Step::AskOnTablet => "ask on the tablet: Yes or No".to_string(),
-        Step::Listen => "listen to the visitor, who answers yes".to_string(),
+        Step::Listen { understood: true } => "listen to the visitor, who answers yes".to_string(),
+        Step::Listen { understood: false } => "listen to the visitor, who answers yes, and hear \
+                                               no answer: the robot knows no yes-word in this \
+                                               language"
+            .to_string(),
         Step::GoTo { place, home } => format!(
             "go {}to {}",
             if *home { "home " } else { "" },
