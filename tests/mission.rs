@@ -335,6 +335,19 @@ fn a_lost_last_letter_is_an_error_when_the_mission_says_the_phrase() {
 // ---------------------------------------------------------------------------------------
 // Each kind of tree that BehaviorTree.CPP refuses
 
+/// The findings of a mission file checked alone.
+fn check_mission_alone(text: String) -> Vec<Finding> {
+    let source = SourceFile::from_bytes("t.xml", text.into_bytes());
+    let checked = check_together(
+        &MissionSources {
+            mission: Some(&source),
+            ..MissionSources::default()
+        },
+        &RuleSet::default(),
+    );
+    locate(&checked)
+}
+
 #[test]
 fn each_kind_of_tree_that_behaviortree_cpp_refuses_is_an_error() {
     let cases: &[(&str, &str)] = &[
@@ -361,15 +374,7 @@ fn each_kind_of_tree_that_behaviortree_cpp_refuses_is_an_error() {
         } else {
             xml.to_string()
         };
-        let source = SourceFile::from_bytes("t.xml", text.into_bytes());
-        let checked = check_together(
-            &MissionSources {
-                mission: Some(&source),
-                ..MissionSources::default()
-            },
-            &RuleSet::default(),
-        );
-        let all = locate(&checked);
+        let all = check_mission_alone(text);
         let found: Vec<&str> = errors(&all).iter().map(|f| f.rule).collect();
         assert_eq!(found, [*rule], "{xml}:\n{}", show(&all));
     }
@@ -433,15 +438,7 @@ fn behaviortree_cpp_4_refuses_tree_ids_of_nodes_nameless_trees_and_two_models() 
         ),
     ];
     for (xml, expected) in cases {
-        let source = SourceFile::from_bytes("t.xml", xml.as_bytes().to_vec());
-        let checked = check_together(
-            &MissionSources {
-                mission: Some(&source),
-                ..MissionSources::default()
-            },
-            &RuleSet::default(),
-        );
-        let all = locate(&checked);
+        let all = check_mission_alone(xml.to_string());
         let found: Vec<(&str, u32)> = errors(&all).iter().map(|f| (f.rule, f.line)).collect();
         assert_eq!(found, *expected, "{xml}:\n{}", show(&all));
     }
