@@ -163,6 +163,7 @@ rule_tests! {
     culture_line_too_long: "culture-line-too-long" => [(CULTURE, 2, 199)];
     culture_no_final_newline: "culture-no-final-newline" => [(CULTURE, 2, 34)];
     culture_crlf: "culture-crlf" => [(CULTURE, 1, 23)];
+    culture_word_too_long: "culture-word-too-long" => [(CULTURE, 2, 23), (CULTURE, 3, 1)];
 }
 
 #[test]
@@ -334,6 +335,19 @@ fn a_lost_last_letter_is_an_error_when_the_mission_says_the_phrase() {
 // ---------------------------------------------------------------------------------------
 // Each kind of tree that BehaviorTree.CPP refuses
 
+/// The findings of a mission file checked alone.
+fn check_mission_alone(text: String) -> Vec<Finding> {
+    let source = SourceFile::from_bytes("t.xml", text.into_bytes());
+    let checked = check_together(
+        &MissionSources {
+            mission: Some(&source),
+            ..MissionSources::default()
+        },
+        &RuleSet::default(),
+    );
+    locate(&checked)
+}
+
 #[test]
 fn each_kind_of_tree_that_behaviortree_cpp_refuses_is_an_error() {
     let cases: &[(&str, &str)] = &[
@@ -360,18 +374,110 @@ fn each_kind_of_tree_that_behaviortree_cpp_refuses_is_an_error() {
         } else {
             xml.to_string()
         };
-        let source = SourceFile::from_bytes("t.xml", text.into_bytes());
-        let checked = check_together(
-            &MissionSources {
-                mission: Some(&source),
-                ..MissionSources::default()
-            },
-            &RuleSet::default(),
-        );
-        let all = locate(&checked);
+        let all = check_mission_alone(text);
         let found: Vec<&str> = errors(&all).iter().map(|f| f.rule).collect();
         assert_eq!(found, [*rule], "{xml}:\n{}", show(&all));
     }
+}
+
+/// BehaviorTree.CPP 4.6's loader (`xml_parsing.cpp`, `VerifyXML` and `createNodeFromXML`):
+/// what it refuses beyond the cases above, and its near misses, which it loads. Each
+/// error is `(rule, line)`.
+#[test]
+fn behaviortree_cpp_4_refuses_tree_ids_of_nodes_nameless_trees_and_two_models() {
+    let cases: &[(&str, &[(&str, u32)])] = &[
+        // A tree may not take a node's name, as a <BehaviorTree> or a <SubTree> call.
+        (
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"Navigate\">\n\
+             <BehaviorTree ID=\"Navigate\"><AlwaysSuccess/></BehaviorTree></root>",
+            &[("mission-unknown-tree", 2)],
+        ),
+        (
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n\
+             <BehaviorTree ID=\"A\"><SubTree ID=\"Sequence\"/></BehaviorTree>\n\
+             <BehaviorTree ID=\"Sequence\"><AlwaysSuccess/></BehaviorTree></root>",
+            &[("mission-unknown-tree", 2), ("mission-unknown-tree", 3)],
+        ),
+        (
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"Go\">\n\
+             <BehaviorTree ID=\"Go\"><Navigate/></BehaviorTree></root>",
+            &[],
+        ),
+        // A tree without an ID beside any other element of <root>.
+        (
+            "<root BTCPP_format=\"4\">\n<TreeNodesModel/>\n\
+             <BehaviorTree><AlwaysSuccess/></BehaviorTree></root>",
+            &[("mission-unknown-tree", 3)],
+        ),
+        (
+            "<root BTCPP_format=\"4\">\n<BehaviorTree><AlwaysSuccess/></BehaviorTree></root>",
+            &[],
+        ),
+        // One <TreeNodesModel> at most.
+        (
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n<TreeNodesModel/>\n\
+             <TreeNodesModel/>\n<BehaviorTree ID=\"A\"><AlwaysSuccess/></BehaviorTree></root>",
+            &[("mission-bad-children", 3)],
+        ),
+        // tinyxml2 keeps a `&` that starts no entity as it is.
+        (
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n<BehaviorTree ID=\"A\">\n\
+             <Navigate _description=\"Fish & Chips &nbsp;\"/></BehaviorTree></root>",
+            &[],
+        ),
+        // Only a name that starts with a letter is checked against the ports.
+        (
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n<BehaviorTree ID=\"A\">\n\
+             <Navigate _description=\"go\" _skipIf=\"false\" \u{e9}tape=\"1\"/></BehaviorTree></root>",
+            &[],
+        ),
+        (
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n<BehaviorTree ID=\"A\">\n\
+             <Navigate etape=\"1\"/></BehaviorTree></root>",
+            &[("mission-unknown-attribute", 3)],
+        ),
+    ];
+    for (xml, expected) in cases {
+        let all = check_mission_alone(xml.to_string());
+        let found: Vec<(&str, u32)> = errors(&all).iter().map(|f| (f.rule, f.line)).collect();
+        assert_eq!(found, *expected, "{xml}:\n{}", show(&all));
+    }
+}
+
+/// behaviorController v1.1 (April 2026) registers `…Async` forms of six nodes: a warning
+/// (the robots before refuse them), and each does its synchronous node's work.
+#[test]
+fn the_async_nodes_of_behavior_controller_v1_1_are_a_warning_and_say_their_phrases() {
+    let xml = "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n<BehaviorTree ID=\"A\">\n\
+               <Sequence>\n<SayTextAsync name=\"4\"/>\n<SayTextAsync name=\"9\"/>\n\
+               <NavigateAsync/>\n<PerformIconicGestureAsync name=\"wave\"/>\n</Sequence>\n\
+               </BehaviorTree></root>";
+    let [_, culture, types, kb] = set_up(None);
+    let files = [
+        SourceFile::from_bytes(MISSION, xml.as_bytes().to_vec()),
+        culture,
+        types,
+        kb,
+    ];
+    let all = check_set(&files);
+    let mission: Vec<(&str, u32, Severity)> = all
+        .iter()
+        .filter(|f| f.file == MISSION)
+        .map(|f| (f.rule, f.line, f.severity))
+        .collect();
+    assert_eq!(
+        mission,
+        [
+            ("mission-unknown-node", 4, Severity::Warning),
+            ("mission-unknown-node", 5, Severity::Warning),
+            ("mission-missing-phrase", 5, Severity::Error),
+            ("mission-unknown-node", 6, Severity::Warning),
+            ("mission-unknown-node", 7, Severity::Warning),
+            ("mission-invalid-name", 7, Severity::Error),
+        ],
+        "{}",
+        show(&all)
+    );
 }
 
 // ---------------------------------------------------------------------------------------

@@ -409,6 +409,7 @@ fn the_catalogue_is_the_specified_one() {
         ("culture-line-too-long", Error, false),
         ("culture-no-final-newline", Warning, false),
         ("culture-crlf", Error, false),
+        ("culture-word-too-long", Error, false),
         ("same-as-source", Warning, false),
         ("end-punctuation-mismatch", Warning, false),
         ("double-space", Warning, true),

@@ -137,6 +137,11 @@ struct Read {
 impl Read {
     fn all(files: &Files, context: &Context) -> Result<Read, CommandError> {
         let paths = paths(files, context)?;
+        if !context.quiet {
+            for warning in &paths.warnings {
+                crate::stderr_line!("ekb: warning: {}", escape(warning));
+            }
+        }
         let read = |path: &Option<PathBuf>| path.as_deref().map(|p| context.read(p)).transpose();
         let kb = match &paths.kb {
             Some(path) => Some((context.read(path)?, context.read_options(path)?)),
@@ -291,6 +296,8 @@ fn run_walk(args: &ShowArgs, context: &Context) -> CommandResult {
     Ok(match walked.outcome {
         walk::Outcome::Completed => Exit::Clean,
         walk::Outcome::Stopped { .. } => Exit::Failure,
-        walk::Outcome::Failed | walk::Outcome::NeverEnds { .. } => Exit::Findings,
+        walk::Outcome::Failed | walk::Outcome::NeverEnds { .. } | walk::Outcome::Crashes { .. } => {
+            Exit::Findings
+        }
     })
 }

@@ -1,6 +1,7 @@
 //! The nodes a mission may use (SPEC §11): BehaviorTree.CPP v4's built-in nodes with their
 //! ports, and the 23 action and condition nodes the robot registers, none with a port,
-//! whose parameter travels in the `name` attribute.
+//! whose parameter travels in the `name` attribute; behaviorController v1.1 (April 2026)
+//! registers six more, the `…Async` forms of six of them.
 
 /// What a node is, which decides how many children it must have.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -95,6 +96,8 @@ pub struct NodeModel {
     pub names: Names,
     /// Registered by the robot (not built into BehaviorTree.CPP).
     pub robot: bool,
+    /// Registered only by behaviorController v1.1 (April 2026): an older robot refuses it.
+    pub v1_1_only: bool,
 }
 
 const ANY_CHILDREN: usize = usize::MAX;
@@ -110,6 +113,7 @@ const fn with_ports(id: &'static str, kind: NodeKind, ports: &'static [&'static 
         ports,
         names: Names::Any,
         robot: false,
+        v1_1_only: false,
     }
 }
 
@@ -120,6 +124,15 @@ const fn robot(id: &'static str, names: Names) -> NodeModel {
         ports: &[],
         names,
         robot: true,
+        v1_1_only: false,
+    }
+}
+
+/// A node that behaviorController v1.1 registers, and no version before.
+const fn v1_1(id: &'static str, names: Names) -> NodeModel {
+    NodeModel {
+        v1_1_only: true,
+        ..robot(id, names)
     }
 }
 
@@ -223,7 +236,26 @@ pub static ROBOT: &[NodeModel] = &[
     ),
     robot("SetRobotPose", Names::Any),
     robot("SetSpeechEvent", Names::OneOf(&["true", "false"])),
+    // behaviorController v1.1: the same work as an action that runs while it waits.
+    // `DescribeExhibitSpeechAsync` says both messages, whatever its name.
+    v1_1("DescribeExhibitSpeechAsync", Names::Any),
+    v1_1("GetVisitorResponseAsync", Names::Any),
+    v1_1("NavigateAsync", Names::Any),
+    v1_1("PerformDeicticGestureAsync", Names::Any),
+    v1_1(
+        "PerformIconicGestureAsync",
+        Names::OneOf(&["welcome", "goodbye"]),
+    ),
+    v1_1("SayTextAsync", Names::Number),
 ];
+
+/// The node a `…Async` node of behaviorController v1.1 does the work of, or `id` itself.
+pub fn synchronous(id: &str) -> &str {
+    match lookup(id) {
+        Some(model) if model.v1_1_only => id.strip_suffix("Async").unwrap_or(id),
+        _ => id,
+    }
+}
 
 /// The element names that name a node by an `ID` attribute: `<Action ID="SayText"/>`.
 pub const EXPLICIT_FORMS: [&str; 4] = ["Action", "Condition", "Control", "Decorator"];
@@ -267,8 +299,11 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_robot_registers_23_nodes_without_ports() {
-        assert_eq!(ROBOT.len(), 23);
+    fn the_robot_registers_23_nodes_without_ports_and_v1_1_six_more() {
+        assert_eq!(ROBOT.iter().filter(|m| !m.v1_1_only).count(), 23);
+        assert_eq!(ROBOT.len(), 29);
+        assert_eq!(synchronous("SayTextAsync"), "SayText");
+        assert_eq!(synchronous("SayText"), "SayText");
         assert!(ROBOT.iter().all(|m| m.ports.is_empty() && m.kind == Leaf));
         let mut ids: Vec<&str> = all().map(|m| m.id).collect();
         ids.sort_unstable();

@@ -50,6 +50,7 @@ pub fn check_together<'s>(sources: &MissionSources<'s>, rules: &RuleSet) -> Vec<
         culture_unknown_type::check(&types, &mut types_out);
         culture_duplicate_key::check(&types.entries, Wins::Earlier, &mut types_out);
         culture_line_too_long::check(source.text(), &mut types_out);
+        culture_word_too_long::check(&types.entries, &mut types_out);
         types
     });
 
@@ -63,6 +64,7 @@ pub fn check_together<'s>(sources: &MissionSources<'s>, rules: &RuleSet) -> Vec<
         culture_duplicate_key::check(&culture.entries, Wins::Later, &mut culture_out);
         culture_line_too_long::check(source.text(), &mut culture_out);
         culture_crlf::check(source.text(), &mut culture_out);
+        culture_word_too_long::check(&culture.entries, &mut culture_out);
         if let Some(types) = &types {
             culture_unknown_key::check(culture, types, &mut culture_out);
             culture_type_mismatch::check(culture, types, &mut culture_out);

@@ -4,19 +4,34 @@
 //! values, each read as its key's type says.
 //!
 //! Both are read with `fgets` and a 200-byte buffer: a longer line is cut, and its rest
-//! read as a line of its own. The first word of a line is its key; a `NUMBER` or a `WORD`
-//! is the next word (`sscanf`); a `PHRASE` is the rest of the line from the first letter or
-//! digit after the key's length, less its last character (taken to be the newline).
-//! Later values of a key overwrite earlier ones; a key declared twice in the types file
-//! keeps its first type. A key that the types file does not declare gets no value.
+//! read as a line of its own. Every line, blank lines and comments included, is scanned
+//! with `sscanf(" %s %s")` into a key and a second word that are not cleared between
+//! lines: a line with one word keeps the second word of an earlier line, and a blank line
+//! keeps both. So a types line with no type takes the type of the line before, and a
+//! value line with no value takes the value of the line before.
+//!
+//! - Types file: a line whose second word is a type declares its key (the first
+//!   declaration wins); any other line declares nothing, but while nothing is declared
+//!   yet it stores a node without a key, on which the robot's next lookup crashes.
+//! - Knowledge base: a `NUMBER` is the second word read with `%d` (a line that does not
+//!   read keeps the earlier value), a `WORD` the second word, a `PHRASE` the bytes of the
+//!   line buffer from the first letter or digit at or after the key's length (past the end
+//!   of a line without one, into what earlier lines left in the buffer), less the last
+//!   byte (taken to be the newline). Later values overwrite earlier ones. A key that the
+//!   types file does not declare, or declares `UNDEFINED`, gets no value.
 
 use std::borrow::Cow;
+use std::collections::HashMap;
 
 use crate::reader::chunks;
 use crate::syntax::{floor_char_boundary, Span};
 
 /// The robot reads both files with this buffer (`STRING_LENGTH`).
 pub const LINE_BUFFER: usize = 200;
+
+/// The robot copies each word into a buffer of this many bytes (`KEY_LENGTH`): a word
+/// of this length or more overflows it.
+pub const WORD_BUFFER: usize = 100;
 
 /// The type of a key's value.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -72,46 +87,73 @@ impl Entry<'_> {
     }
 }
 
-/// The lines of a file of `key value` lines, as `fgets` with [`LINE_BUFFER`] returns them.
-/// Blank lines and comments (`#`) are left out: the robot gets nothing from them.
-pub fn entries(text: &str) -> Vec<Entry<'_>> {
-    let mut out = Vec::new();
+/// A line as `fgets` returns it: where it starts, its words, and its entry if it has one
+/// (blank lines and comments have none).
+struct Line<'a> {
+    start: usize,
+    bytes: &'a [u8],
+    /// Its first two words.
+    first: Option<&'a str>,
+    second: Option<&'a str>,
+    entry: Option<usize>,
+}
+
+/// Every line of `text` as `fgets` with [`LINE_BUFFER`] returns it, and the entries: the
+/// lines with a key that is not a comment (`#`).
+fn read_lines(text: &str) -> (Vec<Line<'_>>, Vec<Entry<'_>>) {
+    let mut lines = Vec::new();
+    let mut entries = Vec::new();
     let mut continuation = false;
     for (start, piece) in chunks(text.as_bytes(), LINE_BUFFER) {
         let is_continuation = continuation;
         continuation = !piece.ends_with(b"\n");
         // A cut may fall inside a character: take the piece's whole characters.
-        let (start, end) = (
+        let (from, end) = (
             floor_char_boundary(text, start),
             floor_char_boundary(text, start + piece.len()),
         );
-        let line = &text[start..end];
-        let mut words = c_words(line, start);
-        let Some((key, key_span)) = (!words.is_empty()).then(|| words.remove(0)) else {
-            continue;
+        let mut words = c_words(&text[from..end], from);
+        let first = words.first().map(|&(word, _)| word);
+        let second = words.get(1).map(|&(word, _)| word);
+        let entry = match first {
+            Some(key) if !key.starts_with('#') => {
+                let (_, key_span) = words.remove(0);
+                let after_key = key_span.end as usize;
+                let rest_text = &text[after_key..end];
+                let trimmed =
+                    rest_text.trim_matches(|c: char| c.is_ascii_whitespace() || c == '\x0b');
+                let rest_start = match trimmed.is_empty() {
+                    true => after_key,
+                    false => after_key + rest_text.find(trimmed).unwrap_or(0),
+                };
+                entries.push(Entry {
+                    span: Span::new(from, end),
+                    key,
+                    key_span,
+                    words,
+                    rest: trimmed,
+                    rest_span: Span::new(rest_start, rest_start + trimmed.len()),
+                    continuation: is_continuation,
+                });
+                Some(entries.len() - 1)
+            }
+            _ => None,
         };
-        if key.starts_with('#') {
-            continue;
-        }
-        let after_key = key_span.end as usize;
-        let rest_text = &text[after_key..end];
-        let rest = rest_text.trim_matches(|c: char| c.is_ascii_whitespace() || c == '\x0b');
-        let rest_start = if rest.is_empty() {
-            after_key
-        } else {
-            after_key + rest_text.find(rest).unwrap_or(0)
-        };
-        out.push(Entry {
-            span: Span::new(start, end),
-            key,
-            key_span,
-            words,
-            rest,
-            rest_span: Span::new(rest_start, rest_start + rest.len()),
-            continuation: is_continuation,
+        lines.push(Line {
+            start,
+            bytes: piece,
+            first,
+            second,
+            entry,
         });
     }
-    out
+    (lines, entries)
+}
+
+/// The lines of a file of `key value` lines, as `fgets` with [`LINE_BUFFER`] returns them.
+/// Blank lines and comments (`#`) are left out.
+pub fn entries(text: &str) -> Vec<Entry<'_>> {
+    read_lines(text).1
 }
 
 /// The words of `line` split at C's blanks (`isspace`), with their spans (`line` starts at
@@ -129,35 +171,154 @@ fn c_words(line: &str, offset: usize) -> Vec<(&str, Span)> {
     words
 }
 
+/// A line, the key `sscanf` holds after it with the entry of the line that wrote it, and
+/// the second word it holds.
+type Scanned<'l, 'a> = (
+    &'l Line<'a>,
+    Option<(&'a str, Option<usize>)>,
+    Option<&'a str>,
+);
+
+/// The key and the second word `sscanf(" %s %s")` leaves after each line: a line with
+/// fewer words keeps those of the lines before. Gives, for each line, the pair and the
+/// entry of the line that wrote the key.
+fn scanned<'l, 'a>(lines: &'l [Line<'a>]) -> impl Iterator<Item = Scanned<'l, 'a>> {
+    let mut key: Option<(&'a str, Option<usize>)> = None;
+    let mut second: Option<&'a str> = None;
+    lines.iter().map(move |line| {
+        if let Some(word) = line.first {
+            key = Some((word, line.entry));
+        }
+        if let Some(word) = line.second {
+            second = Some(word);
+        }
+        (line, key, second)
+    })
+}
+
+/// A key the robot declares, and how.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Declared {
+    pub value_type: ValueType,
+    /// The entry of the line that declared it.
+    pub entry: usize,
+    /// The line names no type, and the key took the type of a line before.
+    pub borrowed: bool,
+}
+
 /// The types file: the keys of the culture knowledge base and the type of each.
 #[derive(Debug, Clone, Default)]
 pub struct ValueTypes<'a> {
     pub entries: Vec<Entry<'a>>,
+    declared: HashMap<&'a str, Declared>,
+    /// The first line, while nothing is declared yet, that declares nothing: the robot
+    /// stores a node without a key there, and crashes (segmentation fault) on its next
+    /// lookup. An empty place at the start when the file declares nothing at all.
+    pub crash: Option<Span>,
+    /// Keys starting with `#` that the robot declares (a comment with a type second).
+    comment_keys: Vec<&'a str>,
+    /// The last line that names a type, when it names a key already declared with another
+    /// type: the robot still holds that line's declaration, and stores it over the key's
+    /// if the knowledge base's first line names no declared key.
+    pub last_redeclared: Option<(&'a str, ValueType)>,
 }
 
 impl<'a> ValueTypes<'a> {
     pub fn parse(text: &'a str) -> ValueTypes<'a> {
+        let (lines, entries) = read_lines(text);
+        let mut declared = HashMap::new();
+        // The robot's tree holds a node once any key is declared, a comment's included.
+        let mut any_declared = false;
+        let mut crash = None;
+        let mut comment_keys = Vec::new();
+        let mut last_assigned = None;
+        for (line, key, second) in scanned(&lines) {
+            let value_type = second.and_then(ValueType::parse);
+            if let (Some((key, _)), Some(value_type)) = (key, value_type) {
+                last_assigned = Some((key, value_type));
+            }
+            match (key, value_type) {
+                // A comment's key is declared too, but no lookup reaches it.
+                (Some((key, Some(entry))), Some(value_type)) => {
+                    any_declared = true;
+                    let borrowed = entries[entry].first_word().is_none();
+                    declared.entry(key).or_insert(Declared {
+                        value_type,
+                        entry,
+                        borrowed,
+                    });
+                }
+                (Some((key, None)), Some(_)) => {
+                    any_declared = true;
+                    comment_keys.push(key);
+                }
+                _ if !any_declared && crash.is_none() => {
+                    let end = line.start + line.bytes.len();
+                    crash = Some(Span::new(
+                        floor_char_boundary(text, line.start),
+                        floor_char_boundary(text, end),
+                    ));
+                }
+                _ => {}
+            }
+        }
+        if !any_declared && crash.is_none() {
+            // Nothing declared at all: the first lookup of any key fails on an empty
+            // dictionary and the robot makes a string of a null pointer.
+            crash = Some(Span::empty_at(0));
+        }
+        let last_redeclared = last_assigned.filter(|&(key, value_type)| {
+            declared
+                .get(key)
+                .is_some_and(|d: &Declared| d.value_type != value_type)
+        });
         ValueTypes {
-            entries: entries(text),
+            entries,
+            declared,
+            crash,
+            comment_keys,
+            last_redeclared,
         }
     }
 
-    /// The entry that declares `key`: the first (the robot keeps it).
+    /// Whether the robot finds `key` in its dictionary.
+    fn knows(&self, key: &str) -> bool {
+        self.declared.contains_key(key) || self.comment_keys.contains(&key)
+    }
+
+    /// The first line that names `key` (the robot keeps its type, if it declares one).
     pub fn declaration(&self, key: &str) -> Option<&Entry<'a>> {
         self.entries.iter().find(|entry| entry.key == key)
     }
 
-    /// The type of `key`; `None` if it is not declared, or declared with no known type (the
-    /// robot then keeps whatever type the line before declared, a case reported apart).
-    pub fn type_of(&self, key: &str) -> Option<ValueType> {
-        let (word, _) = self.declaration(key)?.first_word()?;
-        ValueType::parse(word)
+    /// How the robot declares `key`; `None` if it does not.
+    pub fn declared(&self, key: &str) -> Option<Declared> {
+        self.declared.get(key).copied()
     }
 
-    /// Every declared key, in file order.
+    /// The type the robot gives `key`; `None` if it does not declare it (no line names it,
+    /// or its line names no known type).
+    pub fn type_of(&self, key: &str) -> Option<ValueType> {
+        self.declared(key).map(|declared| declared.value_type)
+    }
+
+    /// Every key a line names, in file order.
     pub fn keys(&self) -> impl Iterator<Item = &'a str> + '_ {
         self.entries.iter().map(|entry| entry.key)
     }
+}
+
+/// What one line of the knowledge base gives its key (the key and value may be an
+/// earlier line's), for each type the key may have.
+#[derive(Debug, Clone)]
+struct Reading<'a> {
+    /// The entry of the line that wrote the key.
+    entry: usize,
+    /// The second word.
+    word: Option<&'a str>,
+    /// What a `PHRASE` copies; `None` when the copy starts past what the file wrote into
+    /// the buffer.
+    phrase: Option<Cow<'a, str>>,
 }
 
 /// The culture knowledge base's `key value` lines.
@@ -165,6 +326,11 @@ impl<'a> ValueTypes<'a> {
 pub struct CultureKnowledgeBase<'a> {
     pub text: &'a str,
     pub entries: Vec<Entry<'a>>,
+    /// What each line gives, by key, in file order.
+    readings: HashMap<&'a str, Vec<Reading<'a>>>,
+    /// The key of the first line: `None` for an empty file, `Some(None)` for a first line
+    /// with no word (the robot looks up whatever its key buffer holds).
+    first_key: Option<Option<&'a str>>,
 }
 
 /// What the robot holds for a key after reading both files.
@@ -172,13 +338,13 @@ pub struct CultureKnowledgeBase<'a> {
 pub enum Held<'a> {
     /// The types file does not declare the key: its lines are skipped.
     NotDeclared,
-    /// Declared `UNDEFINED` (or with an unknown type): no value is ever read for it.
+    /// Declared `UNDEFINED`: no value is ever read for it.
     Undefined,
     /// Declared, but no line gives it a value.
     Missing,
-    /// A line gives it a value that does not read as its type.
+    /// Lines give it values, but none reads as its type (this is the last).
     Unreadable(&'a Entry<'a>),
-    Number(i64, &'a Entry<'a>),
+    Number(i32, &'a Entry<'a>),
     Text(Cow<'a, str>, &'a Entry<'a>),
 }
 
@@ -192,55 +358,143 @@ impl<'a> Held<'a> {
     }
 }
 
-impl<'a> CultureKnowledgeBase<'a> {
-    pub fn parse(text: &'a str) -> CultureKnowledgeBase<'a> {
-        CultureKnowledgeBase {
-            text,
-            entries: entries(text),
+/// `fgets`'s buffer: each line overwrites its start and ends with a NUL; the bytes after
+/// are what longer lines before left. Each byte remembers where in the file it came from.
+struct LineBuffer {
+    bytes: Vec<u8>,
+    from: Vec<usize>,
+    /// How many bytes the file has written.
+    written: usize,
+}
+
+impl LineBuffer {
+    fn new() -> LineBuffer {
+        LineBuffer {
+            bytes: vec![0; LINE_BUFFER],
+            from: vec![0; LINE_BUFFER],
+            written: 0,
         }
     }
 
-    /// The last line that gives `key` a value (the robot keeps the last).
+    fn read(&mut self, line: &Line<'_>) {
+        let length = line.bytes.len();
+        self.bytes[..length].copy_from_slice(line.bytes);
+        self.bytes[length] = 0;
+        for (at, from) in self.from[..length].iter_mut().enumerate() {
+            *from = line.start + at;
+        }
+        self.written = self.written.max(length + 1);
+    }
+
+    /// What the robot copies for a `PHRASE` whose key is `key_length` bytes long: the
+    /// file's byte range, from the first letter or digit at or after `key_length` to the
+    /// NUL, less one byte. `None` if the copy would start past what the file wrote.
+    fn phrase(&self, key_length: usize) -> Option<std::ops::Range<usize>> {
+        let first =
+            (key_length..self.written).find(|&at| self.bytes[at].is_ascii_alphanumeric())?;
+        let nul = (first..self.written).find(|&at| self.bytes[at] == 0)?;
+        // The bytes up to the NUL come from one line of the file, in order.
+        Some(self.from[first]..self.from[first] + (nul - first - 1))
+    }
+}
+
+impl<'a> CultureKnowledgeBase<'a> {
+    pub fn parse(text: &'a str) -> CultureKnowledgeBase<'a> {
+        let (lines, entries) = read_lines(text);
+        let mut buffer = LineBuffer::new();
+        let mut readings: HashMap<&'a str, Vec<Reading<'a>>> = HashMap::new();
+        for (line, key, word) in scanned(&lines) {
+            buffer.read(line);
+            let Some((key, Some(entry))) = key else {
+                continue;
+            };
+            let phrase = buffer
+                .phrase(key.len())
+                .map(|range| String::from_utf8_lossy(&text.as_bytes()[range]));
+            readings.entry(key).or_default().push(Reading {
+                entry,
+                word,
+                phrase,
+            });
+        }
+        let first_key = lines.first().map(|line| line.first);
+        CultureKnowledgeBase {
+            text,
+            entries,
+            readings,
+            first_key,
+        }
+    }
+
+    /// The type the robot reads `key`'s values as: its declaration, unless the types
+    /// file's last line re-declares it and this file's first line is no lookup that
+    /// succeeds.
+    pub fn value_type(&self, types: &ValueTypes<'_>, key: &str) -> Option<ValueType> {
+        let first_misses = match self.first_key {
+            Some(first) => first.is_none_or(|first| !types.knows(first)),
+            None => false,
+        };
+        match types.last_redeclared {
+            Some((redeclared, value_type)) if redeclared == key && first_misses => Some(value_type),
+            _ => types.type_of(key),
+        }
+    }
+
+    /// The last line that names `key`.
     pub fn last(&self, key: &str) -> Option<&Entry<'a>> {
         self.entries.iter().rev().find(|entry| entry.key == key)
     }
 
     /// What the robot holds for `key`.
     pub fn held(&'a self, types: &ValueTypes<'_>, key: &str) -> Held<'a> {
-        let Some(declared) = types.declaration(key) else {
+        let Some(value_type) = self.value_type(types, key) else {
             return Held::NotDeclared;
         };
-        let value_type = declared.first_word().and_then(|(w, _)| ValueType::parse(w));
-        let Some(value_type) = value_type.filter(|t| *t != ValueType::Undefined) else {
+        if value_type == ValueType::Undefined {
             return Held::Undefined;
+        }
+        let readings = self.readings.get(key).map_or(&[][..], Vec::as_slice);
+        // A PHRASE line always stores what it copies, even bytes the file never wrote.
+        let readings = match value_type {
+            ValueType::Phrase => &readings[readings.len().saturating_sub(1)..],
+            _ => readings,
         };
-        let Some(entry) = self.last(key) else {
-            return Held::Missing;
-        };
-        match value_type {
-            ValueType::Number => match entry.first_word().and_then(|(w, _)| c_integer(w)) {
-                Some(number) => Held::Number(number, entry),
-                None => Held::Unreadable(entry),
-            },
-            ValueType::Word => match entry.first_word() {
-                Some((word, _)) => Held::Text(Cow::Borrowed(word), entry),
-                None => Held::Unreadable(entry),
-            },
-            ValueType::Phrase => Held::Text(self.phrase(entry), entry),
-            ValueType::Undefined => Held::Undefined,
+        let value = readings.iter().rev().find_map(|reading| {
+            let entry = &self.entries[reading.entry];
+            match value_type {
+                ValueType::Number => reading
+                    .word
+                    .and_then(c_integer)
+                    .map(|number| Held::Number(number, entry)),
+                ValueType::Word => reading
+                    .word
+                    .map(|word| Held::Text(Cow::Borrowed(word), entry)),
+                _ => reading
+                    .phrase
+                    .clone()
+                    .map(|phrase| Held::Text(phrase, entry)),
+            }
+        });
+        match (value, readings.last()) {
+            (Some(value), _) => value,
+            (None, Some(last)) => Held::Unreadable(&self.entries[last.entry]),
+            (None, None) => Held::Missing,
         }
     }
 
-    /// A `PHRASE` as the robot copies it: from the first letter or digit at or after the
-    /// key's length into the line, to the end of the line less its last byte.
+    /// Where in `entry`'s line the robot starts copying a `PHRASE`: the first letter or
+    /// digit at or after the key's length; `None` if the line has none there.
+    pub fn phrase_start(&self, entry: &Entry<'a>) -> Option<usize> {
+        let line = &self.text.as_bytes()[entry.span.range()];
+        (entry.key.len()..line.len()).find(|&at| line[at].is_ascii_alphanumeric())
+    }
+
+    /// A `PHRASE` as the robot copies it from `entry`'s line alone: from the first letter
+    /// or digit at or after the key's length into the line, to the end of the line less
+    /// its last byte.
     pub fn phrase(&self, entry: &Entry<'a>) -> Cow<'a, str> {
         let line = &self.text.as_bytes()[entry.span.range()];
-        let from = line
-            .iter()
-            .enumerate()
-            .skip(entry.key.len())
-            .find(|(_, b)| b.is_ascii_alphanumeric())
-            .map_or(line.len(), |(at, _)| at);
+        let from = self.phrase_start(entry).unwrap_or(line.len());
         let copied = &line[from..];
         let kept = &copied[..copied.len().saturating_sub(1)];
         String::from_utf8_lossy(kept)
@@ -280,20 +534,25 @@ impl<'a> PhraseBook<'a> {
     }
 }
 
-/// `sscanf(word, "%d")`: an optional sign and the digits that follow; `None` without digits.
-fn c_integer(word: &str) -> Option<i64> {
-    let digits_from = usize::from(word.starts_with(['+', '-']));
-    let digits = word[digits_from..]
-        .bytes()
-        .take_while(u8::is_ascii_digit)
-        .count();
-    if digits == 0 {
+/// `sscanf(word, "%d")` as glibc does it: an optional sign and the digits that follow,
+/// read as a `long` (saturating) and cut to an `int` (wrapping); `None` without digits.
+pub fn c_integer(word: &str) -> Option<i32> {
+    let negative = word.starts_with('-');
+    let digits = word.strip_prefix(['+', '-']).unwrap_or(word);
+    let digits = &digits[..digits.bytes().take_while(u8::is_ascii_digit).count()];
+    if digits.is_empty() {
         return None;
     }
-    word[..digits_from + digits]
-        .parse::<i64>()
-        .ok()
-        .map(|n| n.clamp(i32::MIN.into(), i32::MAX.into()))
+    let magnitude = digits.bytes().try_fold(0i64, |n, b| {
+        n.checked_mul(10)?.checked_sub(i64::from(b - b'0'))
+    });
+    let long = match (magnitude, negative) {
+        (Some(n), true) => n,
+        (Some(n), false) => n.checked_neg().unwrap_or(i64::MAX),
+        (None, true) => i64::MIN,
+        (None, false) => i64::MAX,
+    };
+    Some(long as i32)
 }
 
 /// Whether `word` is a whole integer, as a `NUMBER` must be (`2.5` loads as 2).
@@ -342,6 +601,13 @@ mod tests {
             crlf.held(&types, "utilityPhraseEnglish1").text(),
             Some("Goodbye\r")
         );
+    }
+
+    #[test]
+    fn a_phrase_copied_from_bytes_the_file_never_wrote_replaces_the_one_before() {
+        let types = ValueTypes::parse("k PHRASE\n");
+        let kb = CultureKnowledgeBase::parse("k Hi\nk \u{e9}\n");
+        assert!(matches!(kb.held(&types, "k"), Held::Unreadable(_)));
     }
 
     #[test]

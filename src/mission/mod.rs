@@ -67,7 +67,7 @@ pub struct SaidPhrase<'m> {
 pub fn said_phrases(mission: &Mission, language: Language) -> Vec<SaidPhrase<'_>> {
     mission
         .reachable_nodes()
-        .filter(|node| tree::node_id(node) == Some("SayText"))
+        .filter(|node| tree::node_id(node).map(catalogue::synchronous) == Some("SayText"))
         .filter_map(|node| {
             let name = node.attribute("name")?;
             catalogue::Names::Number

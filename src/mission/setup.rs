@@ -28,6 +28,9 @@ pub struct MissionPaths {
     pub asr_enabled: Option<bool>,
     /// The configuration folder they came from, if any (for messages).
     pub config_dir: Option<PathBuf>,
+    /// Where the robot reads its configuration otherwise than a reader of INI files
+    /// would: each a sentence for a warning.
+    pub warnings: Vec<String>,
 }
 
 impl MissionPaths {
@@ -47,14 +50,24 @@ impl MissionPaths {
             config_dir: Some(dir.to_path_buf()),
             ..MissionPaths::default()
         };
-        if let Some(values) = read_ini(&dir.join(BEHAVIOR_CONTROLLER_INI))? {
-            paths.mission = value(&values, "scenarioSpecification")
-                .map(|scenario| data.join(format!("{scenario}.xml")));
-            paths.asr_enabled = value(&values, "asrEnabled").map(|v| v == "true");
+        if let Some(text) = read(&dir.join(BEHAVIOR_CONTROLLER_INI))? {
+            let robot = RobotIni::BehaviorController;
+            let values = robot.values(&text);
+            let get = |key| robot.value(&values, key);
+            paths.mission =
+                get("scenarioSpecification").map(|scenario| data.join(format!("{scenario}.xml")));
+            paths.asr_enabled = get("asrEnabled").map(|v| v == "true");
+            paths
+                .warnings
+                .extend(robot.warnings(&text, BEHAVIOR_CONTROLLER_INI));
         }
-        if let Some(values) = read_ini(&dir.join(CULTURE_INI))? {
-            paths.culture_kb = value(&values, "knowledgeBase").map(|name| data.join(name));
-            paths.culture_types = value(&values, "valueTypes").map(|name| data.join(name));
+        if let Some(text) = read(&dir.join(CULTURE_INI))? {
+            let robot = RobotIni::Culture;
+            let values = robot.values(&text);
+            let get = |key| robot.value(&values, key);
+            paths.culture_kb = get("knowledgeBase").map(|name| data.join(name));
+            paths.culture_types = get("valueTypes").map(|name| data.join(name));
+            paths.warnings.extend(robot.warnings(&text, CULTURE_INI));
         }
         let environment = dir.join(ENVIRONMENT_INI);
         if environment.is_file() {
@@ -74,6 +87,7 @@ impl MissionPaths {
             kb: self.kb.or(fallback.kb),
             asr_enabled: self.asr_enabled.or(fallback.asr_enabled),
             config_dir: self.config_dir.or(fallback.config_dir),
+            warnings: [self.warnings, fallback.warnings].concat(),
         }
     }
 
@@ -91,36 +105,98 @@ impl MissionPaths {
 
 /// The `key value` (or `key = value`) lines of a configuration file of the robot's; `None`
 /// if there is no such file.
-fn read_ini(path: &Path) -> Result<Option<Vec<(String, String)>>, String> {
+fn read(path: &Path) -> Result<Option<String>, String> {
     if !path.is_file() {
         return Ok(None);
     }
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
-    Ok(Some(ini_values(&text)))
+    std::fs::read_to_string(path)
+        .map(Some)
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))
 }
 
-/// The robot's own INI form, `key   value`, and the standard `key = value`.
-fn ini_values(text: &str) -> Vec<(String, String)> {
-    text.lines()
-        .map(str::trim)
-        .filter(|line| !line.is_empty() && !line.starts_with(['#', ';', '[']))
-        .filter_map(|line| {
-            let (key, value) = line
-                .split_once('=')
-                .or_else(|| line.split_once(char::is_whitespace))?;
-            Some((key.trim().to_string(), value.trim().to_string()))
-        })
-        .collect()
+/// How the robot reads one of its two configuration files: the first word of a line is
+/// its key, in both.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum RobotIni {
+    /// `behaviorControllerConfiguration.ini` (`getValueFromConfig`): the value is the rest
+    /// of the line, trimmed; the first line with the key wins; every key is required.
+    BehaviorController,
+    /// `cultureKnowledgeBaseConfiguration.ini` (`readConfigurationData`): the value is the
+    /// second word (`sscanf("%s %s")`); the last line with the key wins.
+    Culture,
 }
 
-fn value<'v>(values: &'v [(String, String)], key: &str) -> Option<&'v str> {
-    values
-        .iter()
-        .rev()
-        .find(|(k, _)| k == key)
-        .map(|(_, v)| v.as_str())
-        .filter(|v| !v.is_empty())
+impl RobotIni {
+    fn values(self, text: &str) -> Vec<(String, String)> {
+        text.lines()
+            .filter_map(|line| {
+                let line = line.trim_start();
+                let key = line.split_whitespace().next()?;
+                let rest = &line[key.len()..];
+                let value = match self {
+                    RobotIni::BehaviorController => rest.trim(),
+                    RobotIni::Culture => rest.split_whitespace().next().unwrap_or(""),
+                };
+                Some((key.to_string(), value.to_string()))
+            })
+            .collect()
+    }
+
+    fn value<'v>(self, values: &'v [(String, String)], key: &str) -> Option<&'v str> {
+        let mut with_key = values.iter().filter(|(k, _)| k == key);
+        let found = match self {
+            RobotIni::BehaviorController => with_key.next(),
+            RobotIni::Culture => with_key.next_back(),
+        };
+        found.map(|(_, v)| v.as_str()).filter(|v| !v.is_empty())
+    }
+
+    /// The keys the robot needs from the file.
+    fn keys(self) -> &'static [&'static str] {
+        match self {
+            RobotIni::BehaviorController => &[
+                "scenarioSpecification",
+                "verboseMode",
+                "asrEnabled",
+                "audioDebugMode",
+            ],
+            RobotIni::Culture => &["knowledgeBase", "valueTypes"],
+        }
+    }
+
+    /// What the robot reads otherwise than meant: `key = value` lines, and (in the
+    /// behaviour controller's file) a missing key, which stops it as it starts.
+    fn warnings(self, text: &str, file: &str) -> Vec<String> {
+        let values = self.values(text);
+        let mut warnings = Vec::new();
+        for line in text.lines().map(str::trim) {
+            let Some((key, value)) = line.split_once('=') else {
+                continue;
+            };
+            let key = key.trim();
+            if self.keys().contains(&key) && !key.contains(char::is_whitespace) {
+                let read = self.value(&values, key).unwrap_or("");
+                warnings.push(format!(
+                    "{file}: the robot reads `{line}` as the key `{}` with the value `{read}`, \
+                     not `{}`: write `{key} {}`",
+                    line.split_whitespace().next().unwrap_or(key),
+                    value.trim(),
+                    value.trim()
+                ));
+            }
+        }
+        if self == RobotIni::BehaviorController {
+            for key in self.keys() {
+                if self.value(&values, key).is_none() {
+                    warnings.push(format!(
+                        "{file}: no `{key}`: the robot stops as it starts (\"Failed to retrieve \
+                         value for key: {key}\")"
+                    ));
+                }
+            }
+        }
+        warnings
+    }
 }
 
 #[cfg(test)]
@@ -128,11 +204,29 @@ mod tests {
     use super::*;
 
     #[test]
-    fn both_ini_forms() {
-        let values = ini_values("verboseMode   false\nknowledgeBase = kb.dat\n# note\n[s]\n");
-        assert_eq!(value(&values, "verboseMode"), Some("false"));
-        assert_eq!(value(&values, "knowledgeBase"), Some("kb.dat"));
-        assert_eq!(value(&values, "note"), None);
+    fn each_file_is_read_as_the_robot_reads_it() {
+        let culture = RobotIni::Culture;
+        let text =
+            "verboseMode   false\nknowledgeBase = kb.dat\nvalueTypes t.dat\nvalueTypes u.dat\n";
+        let values = culture.values(text);
+        assert_eq!(culture.value(&values, "verboseMode"), Some("false"));
+        assert_eq!(culture.value(&values, "knowledgeBase"), Some("="));
+        assert_eq!(culture.value(&values, "valueTypes"), Some("u.dat"));
+        let warnings = culture.warnings(text, CULTURE_INI);
+        assert_eq!(warnings.len(), 1, "{warnings:?}");
+        assert!(warnings[0].contains("the value `=`"), "{warnings:?}");
+        let controller = RobotIni::BehaviorController;
+        let text =
+            "scenarioSpecification = labTour\nscenarioSpecification other\nasrEnabled true\n";
+        let values = controller.values(text);
+        assert_eq!(
+            controller.value(&values, "scenarioSpecification"),
+            Some("= labTour")
+        );
+        let warnings = controller.warnings(text, BEHAVIOR_CONTROLLER_INI);
+        assert_eq!(warnings.len(), 3, "{warnings:?}");
+        assert!(warnings[1].contains("no `verboseMode`"), "{warnings:?}");
+        assert!(warnings[2].contains("no `audioDebugMode`"), "{warnings:?}");
     }
 
     #[test]
@@ -142,7 +236,8 @@ mod tests {
         std::fs::create_dir(&config).unwrap();
         std::fs::write(
             config.join(BEHAVIOR_CONTROLLER_INI),
-            "scenarioSpecification labTour\nasrEnabled false\n",
+            "scenarioSpecification labTour\nasrEnabled false\nverboseMode false\n\
+             audioDebugMode false\n",
         )
         .unwrap();
         std::fs::write(
@@ -157,6 +252,7 @@ mod tests {
         assert_eq!(paths.culture_types, Some(data.join("t.dat")));
         assert_eq!(paths.kb, None);
         assert_eq!(paths.asr_enabled, Some(false));
+        assert!(paths.warnings.is_empty(), "{:?}", paths.warnings);
         let error = paths.missing("environment knowledge base", "--kb", ENVIRONMENT_INI);
         assert!(
             error.contains("--kb") && error.contains("config"),

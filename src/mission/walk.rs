@@ -13,7 +13,7 @@ use serde::Serialize;
 use super::culture::{Held, PhraseBook};
 use super::tree::{self, Mission};
 use super::xml::Element;
-use crate::model::{Arm, KnowledgeBase, Phase};
+use crate::model::{Arm, KnowledgeBase, Language, Phase};
 use crate::source::LineIndex;
 use crate::syntax::Span;
 
@@ -64,8 +64,9 @@ pub enum Step {
     Gesture { gesture: String },
     /// `PressYesNoDialogue`.
     AskOnTablet,
-    /// `GetVisitorResponse`.
-    Listen,
+    /// `GetVisitorResponse`: the visitor answers yes, and the robot understands it if it
+    /// knows the yes-words of the mission's language.
+    Listen { understood: bool },
     /// `Navigate`.
     GoTo { place: Option<Place>, home: bool },
     /// `PerformDeicticGesture`.
@@ -88,6 +89,12 @@ pub enum Outcome {
     Failed,
     /// Still running after [`MAX_TICKS`] nodes.
     NeverEnds { node: String, line: u32 },
+    /// The robot crashes at a node (it throws, or reads memory it must not).
+    Crashes {
+        node: String,
+        line: u32,
+        reason: String,
+    },
     /// A node the walk cannot run (or the robot cannot build).
     Stopped {
         node: String,
@@ -133,6 +140,11 @@ pub fn walk(mission: &Mission, text: &str, world: &World<'_>) -> Walk {
                         node: halt.node,
                         line,
                     },
+                    Some(reason) if halt.crash => Outcome::Crashes {
+                        node: halt.node,
+                        line,
+                        reason,
+                    },
                     Some(reason) => Outcome::Stopped {
                         node: halt.node,
                         line,
@@ -171,6 +183,8 @@ struct Halt {
     node: String,
     at: Span,
     reason: Option<String>,
+    /// The robot itself crashes there.
+    crash: bool,
 }
 
 /// The blackboard entries the robot's nodes share.
@@ -210,6 +224,7 @@ impl Walker<'_, '_> {
                 node: node_name(node),
                 at: node.name_span,
                 reason: None,
+                crash: false,
             });
         }
         if depth > MAX_DEPTH {
@@ -222,7 +237,7 @@ impl Walker<'_, '_> {
             return Err(halt(node, "the robot does not know this node"));
         };
         if model.robot {
-            return Ok(self.robot_node(node, model.id));
+            return self.robot_node(node, model.id);
         }
         let child = |i: usize| node.children.get(i);
         let depth = depth + 1;
@@ -312,10 +327,21 @@ impl Walker<'_, '_> {
     }
 
     /// A robot node, on the happy path.
-    fn robot_node(&mut self, node: &Element, id: &str) -> Status {
+    fn robot_node(&mut self, node: &Element, id: &str) -> Result<Status, Halt> {
         let name = tree::robot_name(node).unwrap_or(id);
         let stops: Vec<u32> = self.world.kb.tour_stops().collect();
-        match id {
+        if id == "DescribeExhibitSpeechAsync" {
+            // v1.1: both messages, whatever the node's name.
+            let pre = self.describe_exhibit("1");
+            return Ok(Status::of(
+                pre == Status::Success && self.describe_exhibit("2") == Status::Success,
+            ));
+        }
+        let id = super::catalogue::synchronous(id);
+        if id == "SayText" {
+            return self.say_phrase(node, name).map(|()| Status::Success);
+        }
+        Ok(match id {
             "IsVisitorDiscovered" => {
                 self.steps.push(Step::WaitForVisitor);
                 Status::Success
@@ -339,11 +365,11 @@ impl Walker<'_, '_> {
             }
             "SelectExhibit" => {
                 let Some(visits) = self.board.visits else {
-                    return Status::Failure;
+                    return Ok(Status::Failure);
                 };
                 if self.world.phrases.language.is_none() {
                     // "Unknown language set": nothing is selected, nothing counted.
-                    return Status::Failure;
+                    return Ok(Status::Failure);
                 }
                 let exhibit = stops.get(visits).copied();
                 self.board.exhibit = exhibit;
@@ -363,10 +389,6 @@ impl Walker<'_, '_> {
             },
             "DescribeExhibitSpeech" => self.describe_exhibit(name),
             "PerformDeicticGesture" => self.point(),
-            "SayText" => {
-                self.say_phrase(name);
-                Status::Success
-            }
             "PerformIconicGesture" => match name {
                 "welcome" | "goodbye" => {
                     self.steps.push(Step::Gesture {
@@ -381,8 +403,15 @@ impl Walker<'_, '_> {
                 Status::Success
             }
             "GetVisitorResponse" => {
-                self.steps.push(Step::Listen);
-                self.board.visitor_response = Some("yes".to_string());
+                // The robot knows yes-words in English and Kinyarwanda only: an answer in
+                // another language is no answer after its 10 seconds.
+                let understood = matches!(
+                    self.world.phrases.language,
+                    Some(Language::English | Language::Kinyarwanda)
+                );
+                self.steps.push(Step::Listen { understood });
+                let response = if understood { "yes" } else { "" };
+                self.board.visitor_response = Some(response.to_string());
                 Status::Success
             }
             "HasVisitorResponded" => Status::of(
@@ -402,7 +431,7 @@ impl Walker<'_, '_> {
             "SetSpeechEvent" => Status::of(["true", "false"].contains(&name)),
             // StartOfTree, HandleFallBack, IsMutualGazeDiscovered, IsVisitorPresent.
             _ => Status::Success,
-        }
+        })
     }
 
     fn place(&self, id: u32) -> Option<Place> {
@@ -417,15 +446,17 @@ impl Walker<'_, '_> {
         })
     }
 
-    /// `SayText name="N"`: the phrase in the mission's language.
-    fn say_phrase(&mut self, number: &str) {
+    /// `SayText name="N"`: the phrase in the mission's language. A phrase the robot
+    /// declares but holds no text for is a null pointer, which the robot turns into a
+    /// `std::string`: it throws, and the robot stops.
+    fn say_phrase(&mut self, node: &Element, number: &str) -> Result<(), Halt> {
         let Some(language) = self.world.phrases.language else {
             self.steps.push(Step::Say {
                 text: self.last_phrase.clone(),
                 source: format!("utilityPhrase?{number}"),
                 problem: Some("the mission has no language the robot accepts".to_string()),
             });
-            return;
+            return Ok(());
         };
         let key = super::phrase_key(number, language);
         let step = match (
@@ -448,15 +479,23 @@ impl Walker<'_, '_> {
                 )),
                 source: key,
             },
-            (Err(problem), _) => Step::Say {
+            (Err(problem), Some(_)) => {
+                return Err(crash(
+                    node,
+                    &format!(
+                        "{key} {problem}: the robot holds no text for it, makes the phrase \
+                         from a null pointer and stops with an error (logic_error)"
+                    ),
+                ))
+            }
+            (Err(problem), None) => Step::Say {
                 text: None,
-                problem: Some(format!(
-                    "{key} {problem}: the robot says an undefined value"
-                )),
+                problem: Some(format!("{key} {problem}")),
                 source: key,
             },
         };
         self.steps.push(step);
+        Ok(())
     }
 
     /// `DescribeExhibitSpeech name="1"` (before the gesture) or `"2"` (after).
@@ -524,6 +563,15 @@ fn halt(node: &Element, reason: &str) -> Halt {
         node: node_name(node),
         at: node.name_span,
         reason: Some(reason.to_string()),
+        crash: false,
+    }
+}
+
+/// The robot crashes at `node`.
+fn crash(node: &Element, reason: &str) -> Halt {
+    Halt {
+        crash: true,
+        ..halt(node, reason)
     }
 }
 
@@ -543,6 +591,9 @@ pub fn render_text(walk: &Walk) -> String {
              {line})",
             walk.ticks - 1
         ),
+        Outcome::Crashes { node, line, reason } => {
+            format!("end: the robot crashes at `{node}` (line {line}): {reason}")
+        }
         Outcome::Stopped { node, line, reason } => {
             format!("end: the walk stops at `{node}` (line {line}): {reason}")
         }
@@ -577,7 +628,11 @@ fn describe(step: &Step) -> String {
         }
         Step::Gesture { gesture } => format!("make the {gesture} gesture"),
         Step::AskOnTablet => "ask on the tablet: Yes or No".to_string(),
-        Step::Listen => "listen to the visitor, who answers yes".to_string(),
+        Step::Listen { understood: true } => "listen to the visitor, who answers yes".to_string(),
+        Step::Listen { understood: false } => "listen to the visitor, who answers yes, and hear \
+                                               no answer: the robot knows no yes-word in this \
+                                               language"
+            .to_string(),
         Step::GoTo { place, home } => format!(
             "go {}to {}",
             if *home { "home " } else { "" },

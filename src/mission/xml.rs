@@ -60,8 +60,69 @@ pub struct XmlError {
     pub span: Span,
 }
 
+/// More `&` than this that start no entity are not escaped one by one (each costs a
+/// parse): the next is reported as an error.
+const MAX_BARE_AMPERSANDS: usize = 16;
+
 /// Parses `text` (a byte-order mark is allowed) and gives its root element.
+///
+/// tinyxml2, which BehaviorTree.CPP reads the mission with, keeps a `&` that starts no
+/// entity it knows as it is (`_description="Fish & Chips"`), where roxmltree refuses the
+/// document: each such `&` is escaped and the document parsed again, and every place
+/// mapped back to `text`.
 pub fn parse(text: &str) -> Result<Element, XmlError> {
+    let mut patched = std::borrow::Cow::Borrowed(text);
+    // Where each escaped `&` is in `patched`, in increasing order.
+    let mut escaped: Vec<usize> = Vec::new();
+    loop {
+        let bare = match parse_once(&patched) {
+            Ok(mut root) => {
+                map_spans(&mut root, &escaped);
+                return Ok(root);
+            }
+            Err((error, bare)) => match bare {
+                Some(at) if escaped.len() < MAX_BARE_AMPERSANDS => at,
+                _ => {
+                    let span = error.span;
+                    return Err(XmlError {
+                        span: Span::empty_at(original(&escaped, span.start as usize)),
+                        ..error
+                    });
+                }
+            },
+        };
+        patched.to_mut().insert_str(bare + 1, "amp;");
+        escaped.push(bare);
+    }
+}
+
+/// The offset in the original text of `at` in the text with `escaped` escaped.
+fn original(escaped: &[usize], at: usize) -> usize {
+    at - 4 * escaped.iter().filter(|&&amp| amp < at).count()
+}
+
+fn map_spans(element: &mut Element, escaped: &[usize]) {
+    if escaped.is_empty() {
+        return;
+    }
+    let map = |span: &mut Span| {
+        *span = Span::new(
+            original(escaped, span.start as usize),
+            original(escaped, span.end as usize),
+        )
+    };
+    map(&mut element.name_span);
+    for attribute in &mut element.attributes {
+        map(&mut attribute.name_span);
+        map(&mut attribute.value_span);
+    }
+    for child in &mut element.children {
+        map_spans(child, escaped);
+    }
+}
+
+/// One parse; on an error, also where the `&` is if it is one that starts no entity.
+fn parse_once(text: &str) -> Result<Element, (XmlError, Option<usize>)> {
     let options = roxmltree::ParsingOptions {
         // tinyxml2, which BehaviorTree.CPP uses, skips a DOCTYPE; entities stay bounded.
         allow_dtd: true,
@@ -70,20 +131,30 @@ pub fn parse(text: &str) -> Result<Element, XmlError> {
     };
     let document = roxmltree::Document::parse_with_options(text, options).map_err(|error| {
         let position = error.pos();
-        XmlError {
+        let at = offset_of(text, position.row, position.col);
+        let bare = matches!(
+            error,
+            roxmltree::Error::MalformedEntityReference(_)
+                | roxmltree::Error::UnknownEntityReference(..)
+        ) && text[at..].starts_with('&');
+        let error = XmlError {
             message: describe(&error),
-            span: Span::empty_at(offset_of(text, position.row, position.col)),
-        }
+            span: Span::empty_at(at),
+        };
+        (error, bare.then_some(at))
     })?;
     let root = document.root_element();
     if let Some(node) = first_too_deep(root) {
-        return Err(XmlError {
-            message: format!(
-                "elements are nested more than {MAX_DEPTH} deep: no behaviour tree is, and \
-                 ekb does not read further"
-            ),
-            span: name_span(node),
-        });
+        return Err((
+            XmlError {
+                message: format!(
+                    "elements are nested more than {MAX_DEPTH} deep: no behaviour tree is, \
+                     and ekb does not read further"
+                ),
+                span: name_span(node),
+            },
+            None,
+        ));
     }
     Ok(convert(root))
 }
@@ -187,6 +258,22 @@ mod tests {
         assert!(error.message.contains("Sequence"), "{}", error.message);
         assert!(parse("").is_err());
         assert!(parse("\u{feff}<root/>").is_ok());
+    }
+
+    #[test]
+    fn a_bare_ampersand_is_kept_as_behaviortree_cpp_keeps_it() {
+        let text = "<root>\n  <A _d=\"Fish & Chips\" name=\"a&b;\"/>\n  <B x=\"&amp;\"/>\n</root>";
+        let root = parse(text).unwrap();
+        let a = &root.children[0];
+        assert_eq!(a.value("_d"), Some("Fish & Chips"));
+        assert_eq!(a.value("name"), Some("a&b;"));
+        let name = a.attribute("name").unwrap();
+        assert_eq!(name.value_span.text(text), "a&b;");
+        assert_eq!(root.children[1].name_span.text(text), "B");
+        // Other errors keep their place in the text as written.
+        let broken = "<root a=\"&\">\n</rot>";
+        let error = parse(broken).unwrap_err();
+        assert_eq!(&broken[..error.span.start as usize], "<root a=\"&\">\n");
     }
 
     #[test]

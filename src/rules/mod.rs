@@ -191,6 +191,7 @@ pub static ALL: &[&Rule] = &[
     &culture::culture_line_too_long::CULTURE_LINE_TOO_LONG,
     &culture::culture_no_final_newline::CULTURE_NO_FINAL_NEWLINE,
     &culture::culture_crlf::CULTURE_CRLF,
+    &culture::culture_word_too_long::CULTURE_WORD_TOO_LONG,
     &translation::same_as_source::SAME_AS_SOURCE,
     &translation::end_punctuation_mismatch::END_PUNCTUATION_MISMATCH,
     &translation::double_space::DOUBLE_SPACE,

@@ -206,28 +206,36 @@ fn the_walk_visits_the_tour_in_order_and_ends() {
 }
 
 #[test]
-fn a_walk_in_isizulu_says_undefined_phrases_and_placeholders() {
+fn a_walk_in_isizulu_crashes_at_the_welcome_whose_phrase_is_undefined() {
+    // The robot holds a null pointer for an UNDEFINED phrase and makes a string of it:
+    // it throws, and the robot stops at the first SayText.
     let walked = run(&["mission", "walk", "--config-dir", CONFIG, "--lang", "zu"]);
-    assert_eq!(walked.code, 0);
+    assert_eq!(walked.code, 1);
     assert!(
-        walked
-            .stdout
-            .contains("utilityPhraseIsiZulu4 is typed UNDEFINED"),
+        walked.stdout.contains(
+            "end: the robot crashes at `SayText` (line 55): utilityPhraseIsiZulu4 is typed \
+             UNDEFINED"
+        ),
         "{}",
         walked.stdout
     );
-    assert!(walked
-        .stdout
-        .contains("say \"No message in isiZulu\" — a placeholder, said aloud"));
+    assert!(walked.stdout.contains("logic_error"), "{}", walked.stdout);
 }
 
 #[test]
-fn a_mission_with_no_language_the_robot_accepts_never_ends() {
+fn a_mission_with_no_language_the_robot_accepts_hears_no_answer_and_fails() {
+    // The robot knows no yes-word of `isiZulu`: it asks three times, says "maybe another
+    // time", and the main tree fails.
     let root = in_language("isiZulu");
     let walked = run(&["mission", "walk", "--config-dir", &config_of(&root)]);
     assert_eq!(walked.code, 1);
     assert!(
-        walked.stdout.contains("end: the mission never ends"),
+        walked.stdout.contains("hear no answer"),
+        "{}",
+        walked.stdout
+    );
+    assert!(
+        walked.stdout.contains("end: the mission fails"),
         "{}",
         walked.stdout
     );
@@ -403,4 +411,68 @@ fn a_phrase_the_types_file_does_not_declare_repeats_the_last_one_said() {
              declared in the types file: the robot says the phrase it looked up last"
         )
     );
+}
+
+#[test]
+fn the_configuration_folder_is_read_as_the_robot_reads_it() {
+    // The behaviour controller takes the rest of the line as the value: `= labTour`.
+    let root = edited_set_up("behaviorControllerConfiguration.ini", |text| {
+        text.replace(
+            "scenarioSpecification labTour",
+            "scenarioSpecification = labTour",
+        )
+    });
+    let checked = run(&["mission", "check", "--config-dir", &config_of(&root)]);
+    assert_eq!(checked.code, 2, "{}", checked.stderr);
+    assert!(
+        checked
+            .stderr
+            .contains("with the value `= labTour`, not `labTour`"),
+        "{}",
+        checked.stderr
+    );
+    assert!(
+        checked.stderr.contains("= labTour.xml"),
+        "{}",
+        checked.stderr
+    );
+    // The corpus's own files draw no warning.
+    let corpus = run(&["mission", "check", "--config-dir", CONFIG]);
+    assert!(!corpus.stderr.contains("warning"), "{}", corpus.stderr);
+}
+
+#[test]
+fn an_isizulu_answer_is_never_understood_and_the_tour_never_starts() {
+    // With every isiZulu phrase typed PHRASE, the welcome is said; then the robot listens,
+    // knows no isiZulu yes-word, and the visitor never answers.
+    let root = edited_set_up("cultureKnowledgeValueTypesInput.dat", |text| {
+        text.lines()
+            .map(|line| match line.starts_with("utilityPhraseIsiZulu") {
+                true => line.replace("UNDEFINED", "PHRASE"),
+                false => line.to_string(),
+            })
+            .collect::<Vec<_>>()
+            .join("\n")
+            + "\n"
+    });
+    let culture = root.path().join("data/cultureKnowledgeBaseInput.dat");
+    let mut text = std::fs::read_to_string(&culture).unwrap();
+    for number in 1..=7 {
+        text.push_str(&format!("\nutilityPhraseIsiZulu{number} Sawubona {number}"));
+    }
+    std::fs::write(&culture, text + "\n").unwrap();
+    let walked = run(&[
+        "mission",
+        "walk",
+        "--config-dir",
+        &config_of(&root),
+        "--lang",
+        "zu",
+    ]);
+    assert!(
+        walked.stdout.contains("hear no answer"),
+        "{}",
+        walked.stdout
+    );
+    assert!(!walked.stdout.contains("go to"), "{}", walked.stdout);
 }

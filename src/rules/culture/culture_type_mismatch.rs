@@ -1,18 +1,24 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::mission::culture::{is_integer, CultureKnowledgeBase, ValueType, ValueTypes};
+use crate::mission::culture::{c_integer, is_integer, CultureKnowledgeBase, ValueType, ValueTypes};
 use crate::rules::declare_rule;
 
 declare_rule! {
     /// ## What it does
     /// Flags a value that does not read as its key's type: a `NUMBER` that is not an
-    /// integer, a `WORD` of several words (or none), and a value for a key typed
-    /// `UNDEFINED`.
+    /// integer or does not fit in a C `int`, a `WORD` of several words (or none), a
+    /// `PHRASE` with no letter or digit, or on an indented line, and a value for a key
+    /// typed `UNDEFINED`.
     ///
     /// ## Why it matters
-    /// The robot reads a `NUMBER` with `%d` (`2.5` loads as 2, `two` not at all) and a
-    /// `WORD` with `%s` (`FACE AND OBJECT` loads as `FACE`), and ignores the value of an
-    /// `UNDEFINED` key: the robot behaves on something other than what the file says.
+    /// The robot reads a `NUMBER` with `%d` (`2.5` loads as 2, `two` not at all and the
+    /// value before stays, `4294967297` as 1) and a `WORD` with `%s` (`FACE AND OBJECT`
+    /// loads as `FACE`; a line with no value reads the value word of a line before). It
+    /// copies a `PHRASE` from the first letter or digit at the key's length from the
+    /// start of the line: an indented line loses or gains letters, and a line with no
+    /// letter or digit after its key is copied from what earlier lines left in the line
+    /// buffer. It ignores the value of an `UNDEFINED` key: the robot behaves on something
+    /// other than what the file says.
     ///
     /// ## Example
     /// ```text
@@ -30,7 +36,7 @@ declare_rule! {
 
 pub fn check(culture: &CultureKnowledgeBase<'_>, types: &ValueTypes<'_>, out: &mut Diagnostics) {
     for entry in culture.entries.iter().filter(|e| !e.continuation) {
-        let Some(value_type) = types.type_of(entry.key) else {
+        let Some(value_type) = culture.value_type(types, entry.key) else {
             continue;
         };
         let key = entry.key;
@@ -40,10 +46,25 @@ pub fn check(culture: &CultureKnowledgeBase<'_>, types: &ValueTypes<'_>, out: &m
                 format!("`{key}` is a NUMBER, and `{word}` is not an integer: the robot reads only its leading digits, if any"),
                 "write a whole number, such as `2`".to_string(),
             ),
+            (ValueType::Number, Some((word, span))) if word.parse::<i32>().is_err() => (
+                span,
+                format!("`{key}` is a NUMBER, and `{word}` does not fit in a C int: the robot holds {}", c_integer(word).unwrap_or_default()),
+                "write a whole number between -2147483648 and 2147483647".to_string(),
+            ),
             (ValueType::Number | ValueType::Word, None) => (
                 entry.key_span,
-                format!("`{key}` has no value: the robot keeps the value of the line before"),
+                format!("`{key}` has no value: the robot reads the value word of a line before in its place"),
                 format!("give `{key}` a value"),
+            ),
+            (ValueType::Phrase, _) if culture.phrase_start(entry).is_none() => (
+                entry.key_span,
+                format!("`{key}` is a PHRASE with no letter or digit after its key: the robot copies what earlier lines left in its line buffer instead"),
+                format!("give `{key}` its phrase"),
+            ),
+            (ValueType::Phrase, _) if entry.key_span.start != entry.span.start => (
+                entry.key_span,
+                format!("the line of `{key}` is indented: the robot counts the key's length from the start of the line and holds \"{}\"", culture.phrase(entry)),
+                "start the line with its key".to_string(),
             ),
             (ValueType::Word, Some((word, _))) if entry.words.len() > 1 => (
                 entry.rest_span,

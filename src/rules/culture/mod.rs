@@ -9,3 +9,4 @@ pub mod culture_no_final_newline;
 pub mod culture_type_mismatch;
 pub mod culture_unknown_key;
 pub mod culture_unknown_type;
+pub mod culture_word_too_long;

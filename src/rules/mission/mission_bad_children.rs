@@ -10,7 +10,8 @@ declare_rule! {
     /// Flags a node with a number of children its kind does not allow: a decorator
     /// (`Inverter`, `RetryUntilSuccessful`, …) without exactly one child, a control node
     /// (`Sequence`, `Fallback`, …) without children, an action, a condition or a
-    /// `<SubTree>` with children, and a `<BehaviorTree>` without exactly one child.
+    /// `<SubTree>` with children, a `<BehaviorTree>` without exactly one child, and a
+    /// second `<TreeNodesModel>` in `<root>`.
     ///
     /// ## Why it matters
     /// BehaviorTree.CPP refuses the whole file: the robot stops before the tour begins.
@@ -29,6 +30,26 @@ declare_rule! {
         fixable: false,
         summary: "a node with children its kind does not allow (a decorator without exactly one, …)",
     };
+}
+
+/// `<root>` may hold one `<TreeNodesModel>` at most.
+pub fn check_root(mission: &crate::mission::tree::Mission, out: &mut Diagnostics) {
+    let models = mission
+        .root
+        .children
+        .iter()
+        .filter(|c| c.name == "TreeNodesModel");
+    for extra in models.skip(1) {
+        out.push(
+            Diagnostic::new(
+                &MISSION_BAD_CHILDREN,
+                extra.name_span,
+                "a second <TreeNodesModel>: BehaviorTree.CPP takes only one, and the robot \
+                 cannot load the mission",
+            )
+            .with_help("merge the node models into the first <TreeNodesModel>"),
+        );
+    }
 }
 
 /// A `<BehaviorTree>` must have exactly one child.

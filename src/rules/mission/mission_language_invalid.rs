@@ -71,10 +71,17 @@ pub fn check(
         Diagnostic::new(
             &MISSION_LANGUAGE_INVALID,
             span,
-            format!(
-                "{problem}: the robot accepts only English, Kinyarwanda or IsiZulu; with any \
-                 other language it logs \"Unknown language set\" and skips every exhibit"
-            ),
+            match held {
+                Held::Text(..) => format!(
+                    "{problem}: the robot accepts only English, Kinyarwanda or IsiZulu; with \
+                     any other language it logs \"Unknown language set\" and skips every \
+                     exhibit"
+                ),
+                _ => format!(
+                    "{problem}: the robot holds no language, makes its language from a null \
+                     pointer and stops with an error (logic_error) as it starts"
+                ),
+            },
         )
         .with_help(help),
     );

@@ -32,6 +32,10 @@ declare_rule! {
     };
 }
 
+/// What the robot does when it says a phrase it declares but holds no text for.
+const NULL_TEXT: &str = "make the phrase from a null pointer and stop with an error \
+                         (logic_error) when the node runs";
+
 pub fn check(
     mission: &Mission,
     culture: &CultureKnowledgeBase<'_>,
@@ -41,20 +45,21 @@ pub fn check(
 ) {
     for SaidPhrase { node, key, span } in said_phrases(mission, language) {
         let held = culture.held(types, &key);
-        let (why, says) = match held {
-            Held::Text(..) | Held::Number(..) => continue,
+        let (why, outcome) = match held {
+            Held::Text(..) => continue,
             Held::NotDeclared => (
                 "the types file does not declare it",
-                "whatever phrase it looked up last",
+                "say whatever phrase it looked up last instead",
             ),
-            Held::Undefined => ("the types file types it UNDEFINED", "an undefined value"),
-            Held::Missing => (
-                "the culture knowledge base gives it no value",
-                "an undefined value",
-            ),
+            Held::Undefined => ("the types file types it UNDEFINED", NULL_TEXT),
+            Held::Missing => ("the culture knowledge base gives it no value", NULL_TEXT),
             Held::Unreadable(_) => (
-                "its line gives no value that can be read",
-                "an undefined value",
+                "its lines give no value that can be read",
+                "hold no text it can say: it stops with an error or says garbage",
+            ),
+            Held::Number(..) => (
+                "the types file types it NUMBER",
+                "take the number for the address of a text, and crash",
             ),
         };
         let help = match held {
@@ -69,7 +74,7 @@ pub fn check(
                 &MISSION_MISSING_PHRASE,
                 span,
                 format!(
-                    "`{}` says `{key}`, but {why}: the robot would say {says} instead",
+                    "`{}` says `{key}`, but {why}: the robot would {outcome}",
                     node.name
                 ),
             )

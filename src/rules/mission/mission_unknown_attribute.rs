@@ -8,7 +8,8 @@ use crate::rules::declare_rule;
 declare_rule! {
     /// ## What it does
     /// Flags an attribute that is not a port of its node. Every node takes `name`, and
-    /// attributes starting with `_` (such as `_description`) are notes, not ports; the
+    /// attributes that do not start with a letter (such as `_description`) are notes, not
+    /// ports; the
     /// robot's 23 nodes have no port at all (their parameter is their `name`), and the
     /// built-in nodes have their own (`num_attempts`, `delay_msec`, …). A `<SubTree>`'s
     /// attributes are passed to the tree it calls, and are not checked.
@@ -37,9 +38,10 @@ pub fn check(node: &Element, model: &NodeModel, out: &mut Diagnostics) {
         return;
     }
     let explicit = EXPLICIT_FORMS.contains(&node.name.as_str());
+    // BehaviorTree.CPP checks only names that start with a letter against the ports.
     let allowed = |name: &str| {
         name == "name"
-            || name.starts_with('_')
+            || !name.starts_with(|c: char| c.is_ascii_alphabetic())
             || model.ports.contains(&name)
             || (explicit && name == "ID")
     };

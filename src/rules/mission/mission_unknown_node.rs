@@ -1,6 +1,6 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::mission::catalogue;
+use crate::mission::catalogue::{self, NodeModel};
 use crate::mission::tree::{self, Mission};
 use crate::mission::xml::Element;
 use crate::rules::declare_rule;
@@ -17,7 +17,11 @@ declare_rule! {
     /// `IsVisitorResponseYes`, `Navigate`, `PerformDeicticGesture`, `PerformIconicGesture`,
     /// `PressYesNoDialogue`, `RetrieveInitialLocation`, `RetrieveListOfExhibits`, `SayText`,
     /// `SelectExhibit`, `SetAnimateBehavior`, `SetOvertAttentionMode`, `SetRobotPose`,
-    /// `SetSpeechEvent`. The built-in ones include `Sequence`, `Fallback`, `Inverter`,
+    /// `SetSpeechEvent`; and, registered only by behaviorController v1.1 (April 2026),
+    /// `DescribeExhibitSpeechAsync`, `GetVisitorResponseAsync`, `NavigateAsync`,
+    /// `PerformDeicticGestureAsync`, `PerformIconicGestureAsync` and `SayTextAsync`, which
+    /// are a warning (a robot before v1.1 refuses them). The built-in ones include
+    /// `Sequence`, `Fallback`, `Inverter`,
     /// `KeepRunningUntilFailure`, `ForceFailure`, `RetryUntilSuccessful`, `Delay` and
     /// `SubTree`.
     ///
@@ -37,6 +41,30 @@ declare_rule! {
         fixable: false,
         summary: "a node that is neither built in nor registered by the robot (did-you-mean)",
     };
+}
+
+/// A node that only behaviorController v1.1 registers: a warning, for the robots before.
+pub fn check_v1_1_only(node: &Element, model: &NodeModel, out: &mut Diagnostics) {
+    if !model.v1_1_only {
+        return;
+    }
+    let id = model.id;
+    let synchronous = catalogue::synchronous(id);
+    out.push(
+        Diagnostic::new(
+            &MISSION_UNKNOWN_NODE,
+            node.name_span,
+            format!(
+                "`{id}` is registered only by behaviorController v1.1 (April 2026): a robot \
+                 that runs an earlier version does not know it (\"Node not recognized\") and \
+                 cannot load the mission"
+            ),
+        )
+        .with_severity(crate::Severity::Warning)
+        .with_help(format!(
+            "use `{synchronous}` for a robot before v1.1, or make sure the robot runs v1.1"
+        )),
+    );
 }
 
 pub fn check(mission: &Mission, node: &Element, out: &mut Diagnostics) {

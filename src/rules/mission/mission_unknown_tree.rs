@@ -1,6 +1,6 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::mission::catalogue::nearest_of;
+use crate::mission::catalogue::{self, nearest_of};
 use crate::mission::tree::{self, Mission};
 use crate::rules::declare_rule;
 
@@ -8,7 +8,10 @@ declare_rule! {
     /// ## What it does
     /// Flags a call to a tree that the file does not have: a `<SubTree ID=…>` or
     /// `main_tree_to_execute` naming no `<BehaviorTree ID=…>` (with the nearest ID), a
-    /// `<SubTree>` without an `ID`, and a file that does not say which of its trees to run.
+    /// `<SubTree>` without an `ID`, a file that does not say which of its trees to run, a
+    /// `<BehaviorTree>` without an `ID` beside any other element of `<root>`, and a
+    /// `<BehaviorTree>` or `<SubTree>` whose ID is the name of a node (`Navigate`,
+    /// `Sequence`, …).
     ///
     /// ## Why it matters
     /// BehaviorTree.CPP refuses the whole file: the robot stops before the tour begins.
@@ -68,7 +71,9 @@ pub fn check(mission: &Mission, out: &mut Diagnostics) {
         ),
         _ => {}
     }
-    if mission.trees().count() > 1 {
+    // BehaviorTree.CPP counts every element of <root>, a <TreeNodesModel> or an
+    // <include> too, when it asks a tree for its ID.
+    if mission.root.children.len() > 1 {
         for nameless in mission.trees().filter(|t| t.value("ID").is_none()) {
             out.push(
                 Diagnostic::new(
@@ -78,6 +83,27 @@ pub fn check(mission: &Mission, out: &mut Diagnostics) {
                      never runs it",
                 )
                 .with_help("give it an ID: <BehaviorTree ID=\"…\">"),
+            );
+        }
+    }
+    let named_trees = mission.trees().filter_map(|t| t.attribute("ID"));
+    let calls = mission.trees().flat_map(tree::nodes);
+    let call_ids = calls
+        .filter(|n| n.name == "SubTree")
+        .filter_map(|n| n.attribute("ID"));
+    for id in named_trees.chain(call_ids) {
+        if catalogue::lookup(&id.value).is_some() {
+            out.push(
+                Diagnostic::new(
+                    &MISSION_UNKNOWN_TREE,
+                    id.value_span,
+                    format!(
+                        "`{}` is the name of a node, and BehaviorTree.CPP refuses it as a tree's \
+                         ID: the robot cannot load the mission",
+                        id.value
+                    ),
+                )
+                .with_help("rename the tree, here and where it is called"),
             );
         }
     }

@@ -23,12 +23,14 @@ pub fn check_tree(mission: &Mission, out: &mut Diagnostics) {
     mission_missing_format::check(mission, out);
     mission_unknown_tree::check(mission, out);
     mission_unreachable_tree::check(mission, out);
+    mission_bad_children::check_root(mission, out);
     for behavior_tree in mission.trees() {
         mission_bad_children::check_tree(behavior_tree, out);
         for node in tree::nodes(behavior_tree) {
             match tree::model(node) {
                 None => mission_unknown_node::check(mission, node, out),
                 Some(model) => {
+                    mission_unknown_node::check_v1_1_only(node, model, out);
                     mission_bad_children::check(node, model, out);
                     mission_unknown_attribute::check(node, model, out);
                     mission_invalid_name::check(node, model, out);
