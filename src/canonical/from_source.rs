@@ -67,6 +67,7 @@ impl<'a> Document<'a> {
 
     /// The document of `text`, whose first reading found `layout`.
     fn laid_out(text: Cow<'a, str>, layout: Layout) -> Document<'a> {
+        let block_ids = layout.blocks.ids();
         let (order, block_ends) = arrange(&text, layout.blocks, layout.located, layout.placed);
         Document {
             text,
@@ -75,6 +76,7 @@ impl<'a> Document<'a> {
             unplaced: layout.unplaced,
             order,
             block_ends,
+            block_ids,
             tour: layout.tour,
         }
     }
@@ -285,6 +287,16 @@ impl Blocks {
             false => slot,
         };
         block
+    }
+
+    /// The id of each block.
+    fn ids(&self) -> Vec<u32> {
+        let mut ids = self.ascending.clone();
+        ids.resize(self.lines.len(), 0);
+        for (&id, &block) in &self.others {
+            ids[block as usize] = id;
+        }
+        ids
     }
 
     /// Whether the lines of `block` are in key order.

@@ -111,6 +111,8 @@ pub struct Document<'a> {
     order: Vec<u32>,
     /// Where each block ends in `order`.
     block_ends: Vec<u32>,
+    /// The id of each block, in the order of `block_ends`.
+    block_ids: Vec<u32>,
     /// Where each `tourSpecification` line starts, in file order (the last wins on the
     /// robot).
     tour: Vec<u32>,
