@@ -2,7 +2,6 @@
 //! a balanced tree in the robot's reader (SPEC §2.10), each block with its comments.
 
 use super::Document;
-use crate::model::build::parse_id;
 use crate::reader::tree::balanced_order;
 
 impl Document<'_> {
@@ -12,10 +11,8 @@ impl Document<'_> {
         let mut blocks: Vec<(i32, std::ops::Range<usize>)> =
             Vec::with_capacity(self.block_ends.len());
         let mut start = 0;
-        for &end in &self.block_ends {
-            let first = self.entry_at(self.order[start as usize], false);
-            let id = first.id.and_then(parse_id).map_or(0, |id| id as i32);
-            blocks.push((id, start as usize..end as usize));
+        for (&end, &id) in self.block_ends.iter().zip(&self.block_ids) {
+            blocks.push((id as i32, start as usize..end as usize));
             start = end;
         }
         blocks.sort_by_key(|(id, _)| *id);
@@ -23,13 +20,16 @@ impl Document<'_> {
         let position = |id: i32| ids.binary_search(&id).expect("an id of a block");
         let mut order = Vec::with_capacity(self.order.len());
         let mut block_ends = Vec::with_capacity(self.block_ends.len());
+        let mut block_ids = Vec::with_capacity(self.block_ids.len());
         for id in balanced_order(&ids) {
             let (_, range) = &blocks[position(id)];
             order.extend_from_slice(&self.order[range.clone()]);
             block_ends.push(order.len() as u32);
+            block_ids.push(id as u32);
         }
         self.order = order;
         self.block_ends = block_ends;
+        self.block_ids = block_ids;
     }
 }
 

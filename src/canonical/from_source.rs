@@ -67,6 +67,7 @@ impl<'a> Document<'a> {
 
     /// The document of `text`, whose first reading found `layout`.
     fn laid_out(text: Cow<'a, str>, layout: Layout) -> Document<'a> {
+        let block_ids = layout.blocks.ids();
         let (order, block_ends) = arrange(&text, layout.blocks, layout.located, layout.placed);
         Document {
             text,
@@ -75,6 +76,7 @@ impl<'a> Document<'a> {
             unplaced: layout.unplaced,
             order,
             block_ends,
+            block_ids,
             tour: layout.tour,
         }
     }
@@ -287,6 +289,16 @@ impl Blocks {
         block
     }
 
+    /// The id of each block.
+    fn ids(&self) -> Vec<u32> {
+        let mut ids = self.ascending.clone();
+        ids.resize(self.lines.len(), 0);
+        for (&id, &block) in &self.others {
+            ids[block as usize] = id;
+        }
+        ids
+    }
+
     /// Whether the lines of `block` are in key order.
     fn in_order(&self, block: usize) -> bool {
         self.last_slots[block] & IN_ORDER != 0
@@ -343,26 +355,54 @@ const READ_AT_A_TIME: usize = 8 << 20;
 
 /// What `part` makes of each range of lines of `text` (a starting offset and an end), given
 /// to `each` in order: the lines read in parts on the cores, [`READ_AT_A_TIME`] bytes at a
-/// time (what `part` makes of them is held meanwhile).
+/// time, given to `each` as the next ones are read (what `part` makes of them is held
+/// meanwhile).
 fn read_in_parts<T: Send>(
     text: &str,
+    part: impl Fn(syntax::Lines<'_>, usize) -> Vec<T> + Sync,
+    each: impl FnMut(T),
+) {
+    read_in_parts_of(text, READ_AT_A_TIME, part, each);
+}
+
+/// [`read_in_parts`], `at_a_time` bytes at a time.
+fn read_in_parts_of<T: Send>(
+    text: &str,
+    at_a_time: usize,
     part: impl Fn(syntax::Lines<'_>, usize) -> Vec<T> + Sync,
     mut each: impl FnMut(T),
 ) {
     let bytes = text.as_bytes();
+    let read = |at: usize, end: usize| {
+        let ranges = parallel::line_ranges(&bytes[at..end], parallel::parts_for_text(end - at));
+        parallel::map_ranges(ranges, |range| {
+            part(syntax::lines_from(text, at + range.start), at + range.end)
+        })
+    };
     let mut at = 0;
+    let mut read_before: Option<Vec<Vec<T>>> = None;
     while at < bytes.len() {
         let newline = bytes
-            .get(at + READ_AT_A_TIME..)
+            .get(at + at_a_time..)
             .and_then(|rest| memchr::memchr(b'\n', rest));
-        let end = newline.map_or(bytes.len(), |newline| at + READ_AT_A_TIME + newline + 1);
-        let ranges = parallel::line_ranges(&bytes[at..end], parallel::parts_for_text(end - at));
-        let parts = parallel::map_ranges(ranges, |range| {
-            part(syntax::lines_from(text, at + range.start), at + range.end)
+        let end = newline.map_or(bytes.len(), |newline| at + at_a_time + newline + 1);
+        read_before = Some(match read_before.take() {
+            None => read(at, end),
+            // The lines read before are given to `each` here as these are read.
+            Some(before) => std::thread::scope(|scope| {
+                let reading = std::thread::Builder::new().spawn_scoped(scope, || read(at, end));
+                before.into_iter().flatten().for_each(&mut each);
+                match reading {
+                    Ok(reading) => reading
+                        .join()
+                        .unwrap_or_else(|panic| std::panic::resume_unwind(panic)),
+                    Err(_) => read(at, end),
+                }
+            }),
         });
-        parts.into_iter().flatten().for_each(&mut each);
         at = end;
     }
+    read_before.into_iter().flatten().flatten().for_each(each);
 }
 
 /// Where each located entry line of `text` starts, and its id, given to `each` in order
@@ -615,6 +655,21 @@ mod tests {
                 .contains("ends in a stray carriage return"));
         }
         assert!(Document::parse("key 1 a\rb\r\n").is_ok());
+    }
+
+    #[test]
+    fn lines_read_a_few_bytes_at_a_time_come_in_order() {
+        let text: String = (0..200).map(|n| format!("k {n}\n")).collect();
+        let starts = |lines: syntax::Lines<'_>, end: usize| -> Vec<u32> {
+            let lines = lines.take_while(|line| (line.span.start as usize) < end);
+            lines.map(|line| line.span.start).collect()
+        };
+        let expected: Vec<u32> = syntax::lines(&text).map(|line| line.span.start).collect();
+        for at_a_time in [1, 10, 100, 10_000] {
+            let mut seen = Vec::new();
+            read_in_parts_of(&text, at_a_time, starts, |start| seen.push(start));
+            assert_eq!(seen, expected, "{at_a_time}");
+        }
     }
 
     #[test]

@@ -59,9 +59,12 @@ const UNKNOWN_SLOT: u8 = Key::CulturalKnowledge as u8 + 1;
 /// How many lines [`Document::write_checked`] lays out before it writes them.
 const LINES_AT_A_TIME: usize = 1 << 17;
 
-/// How many lines [`Document::record`](NewLines::record) lays out at a time (72 bytes each
-/// before they are laid out).
-const LINES_RECORDED_AT_A_TIME: usize = 1 << 15;
+/// How many blocks [`Document::record`](NewLines::record) lays out at a time (what is
+/// recorded of them in parts is held until it is put together).
+const BLOCKS_RECORDED_AT_A_TIME: usize = 1 << 12;
+
+/// The fewest blocks a core is given to lay out.
+const MIN_BLOCKS_PER_PART: usize = 1 << 9;
 
 /// The fewest lines a core is given to lay out: fewer are not worth starting a thread.
 const MIN_LINES_PER_PART: usize = 1 << 13;
@@ -111,6 +114,8 @@ pub struct Document<'a> {
     order: Vec<u32>,
     /// Where each block ends in `order`.
     block_ends: Vec<u32>,
+    /// The id of each block, in the order of `block_ends`.
+    block_ids: Vec<u32>,
     /// Where each `tourSpecification` line starts, in file order (the last wins on the
     /// robot).
     tour: Vec<u32>,
@@ -390,53 +395,109 @@ impl<'a> Document<'a> {
     /// [`Document::walk`], each entry line given unread: read it only if it is wanted.
     fn walk_unread<'d>(
         &'d self,
-        mut visit: impl FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>,
+        visit: impl FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
-        let mut sections = 0;
-        let mut visit = |line: Unread<'d>, origin: u32, new_section: bool| {
-            if new_section {
-                // Sections are apart; and a first line starting with U+FEFF would be read as a
-                // byte-order mark.
-                if sections > 0 || line.clone().read(self).starts_with_byte_order_mark() {
-                    visit(Unread::Item(Item::Blank), None)?;
-                }
-                sections += 1;
-            }
-            visit(line, Some(origin))
+        let mut walk = Walk {
+            document: self,
+            sections: 0,
+            visit,
         };
-        for (n, (start, comment)) in self.comments_between(0, self.header_end).enumerate() {
-            visit(Unread::Item(Item::Comment(comment)), start, n == 0)?;
+        walk.head()?;
+        for block in 0..self.block_ends.len() {
+            walk.block(block)?;
         }
-        let mut entry = |start: u32, new_section: bool, tour: bool| {
-            let mut first = new_section;
-            let comments = self.comments_start(start);
-            // (Without comments above it, the line is not lexed once more to find none.)
-            if comments < start {
-                for (line, comment) in self.comments_between(comments, start) {
-                    let comment = Unread::Item(Item::Comment(comment));
-                    visit(comment, line, std::mem::take(&mut first))?;
-                }
-            }
-            visit(Unread::Entry { start, tour }, start, first)
-        };
-        for (n, &start) in self.unplaced.iter().enumerate() {
-            entry(start, n == 0, false)?;
+        walk.tail()
+    }
+}
+
+/// A walk through the lines of the canonical text, or some of them: each line given to
+/// `visit` unread, with where the line of the text it was made from starts, the blank line
+/// between two sections put in.
+struct Walk<'d, 'a, V> {
+    document: &'d Document<'a>,
+    /// How many sections came before (the header, the lines without a valid id, each
+    /// block, the tour and the footer are each one, if they have lines).
+    sections: usize,
+    visit: V,
+}
+
+impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
+    /// The lines before the blocks: the header's comments, the entries without a valid id.
+    fn head(&mut self) -> ControlFlow<()> {
+        let document = self.document;
+        for (n, (start, comment)) in document
+            .comments_between(0, document.header_end)
+            .enumerate()
+        {
+            self.line(Unread::Item(Item::Comment(comment)), start, n == 0)?;
         }
-        let mut start = 0;
-        for &end in &self.block_ends {
-            for (n, &line) in self.order[start as usize..end as usize].iter().enumerate() {
-                entry(line, n == 0, false)?;
-            }
-            start = end;
-        }
-        for (n, &start) in self.tour.iter().enumerate() {
-            entry(start, n == 0, true)?;
-        }
-        let footer = self.comments_between(self.footer_start, self.text.len() as u32);
-        for (n, (start, comment)) in footer.enumerate() {
-            visit(Unread::Item(Item::Comment(comment)), start, n == 0)?;
+        for (n, &start) in document.unplaced.iter().enumerate() {
+            self.entry(start, n == 0, false)?;
         }
         ControlFlow::Continue(())
+    }
+
+    /// The lines of block `block` (by number).
+    fn block(&mut self, block: usize) -> ControlFlow<()> {
+        let document = self.document;
+        let start = block
+            .checked_sub(1)
+            .map_or(0, |before| document.block_ends[before]);
+        let lines = &document.order[start as usize..document.block_ends[block] as usize];
+        for (n, &line) in lines.iter().enumerate() {
+            self.entry(line, n == 0, false)?;
+        }
+        ControlFlow::Continue(())
+    }
+
+    /// The lines after the blocks: the tour, the footer's comments.
+    fn tail(&mut self) -> ControlFlow<()> {
+        let document = self.document;
+        for (n, &start) in document.tour.iter().enumerate() {
+            self.entry(start, n == 0, true)?;
+        }
+        let end = document.text.len() as u32;
+        for (n, (start, comment)) in document
+            .comments_between(document.footer_start, end)
+            .enumerate()
+        {
+            self.line(Unread::Item(Item::Comment(comment)), start, n == 0)?;
+        }
+        ControlFlow::Continue(())
+    }
+
+    /// The entry line at `start`, after the comments above it.
+    fn entry(&mut self, start: u32, new_section: bool, tour: bool) -> ControlFlow<()> {
+        let document = self.document;
+        let mut first = new_section;
+        let comments = document.comments_start(start);
+        // (Without comments above it, the line is not lexed once more to find none.)
+        if comments < start {
+            for (line, comment) in document.comments_between(comments, start) {
+                let comment = Unread::Item(Item::Comment(comment));
+                self.line(comment, line, std::mem::take(&mut first))?;
+            }
+        }
+        self.line(Unread::Entry { start, tour }, start, first)
+    }
+
+    /// A line made from the line of the text at `origin`, the first of a section if
+    /// `new_section`.
+    fn line(&mut self, line: Unread<'d>, origin: u32, new_section: bool) -> ControlFlow<()> {
+        if new_section {
+            // Sections are apart; and a first line starting with U+FEFF would be read as a
+            // byte-order mark.
+            if self.sections > 0
+                || line
+                    .clone()
+                    .read(self.document)
+                    .starts_with_byte_order_mark()
+            {
+                (self.visit)(Unread::Item(Item::Blank), None)?;
+            }
+            self.sections += 1;
+        }
+        (self.visit)(line, Some(origin))
     }
 }
 
@@ -473,39 +534,51 @@ impl NewLines for Document<'_> {
             .all(|(before, after)| before < after)
     }
 
-    /// Laid out [`LINES_RECORDED_AT_A_TIME`] lines at a time, in parts on the cores.
+    /// The blocks laid out [`BLOCKS_RECORDED_AT_A_TIME`] at a time, in parts on the cores.
     fn record<'o>(&self, old: &'o str) -> Recorded<'o> {
         let mut recorded = Recorded::none(old);
-        let mut lines = Vec::new();
-        let mut record = |lines: &mut Vec<(Unread<'_>, Option<u32>)>| {
-            let ranges = parallel::item_ranges(lines.len(), MIN_LINES_PER_PART);
-            let parts = parallel::map_ranges(ranges, |range| {
+        let mut head = Walk {
+            document: self,
+            sections: 0,
+            visit: recording(self, &mut recorded),
+        };
+        let _ = head.head();
+        let sections = head.sections;
+        drop(head);
+        let blocks = self.block_ends.len();
+        for batch in (0..blocks).step_by(BLOCKS_RECORDED_AT_A_TIME) {
+            let batch = batch..(batch + BLOCKS_RECORDED_AT_A_TIME).min(blocks);
+            let ranges = parallel::item_ranges(batch.len(), MIN_BLOCKS_PER_PART);
+            let ranges = ranges
+                .into_iter()
+                .map(|range| range.start + batch.start..range.end + batch.start);
+            let cut = |rest| parallel::cut_in_middle(rest, MIN_BLOCKS_PER_PART);
+            let parts = parallel::map_shared(ranges.collect(), cut, |share| {
                 let mut part = Recorded::none(old);
-                let mut text = String::new();
-                for (line, origin) in &lines[range] {
-                    text.clear();
-                    push_item(&mut text, &line.clone().read(self));
-                    let origin = *origin;
-                    part.push(NewLine {
-                        text: &text,
-                        origin,
-                    });
+                let mut walk = Walk {
+                    document: self,
+                    sections: sections + share.start(),
+                    visit: recording(self, &mut part),
+                };
+                let mut block = share.start();
+                while block < share.end(block) {
+                    let _ = walk.block(block);
+                    block += 1;
                 }
+                drop(walk);
                 part
             });
             for part in parts {
                 recorded.append(part);
             }
-            lines.clear();
+        }
+        let mut tail = Walk {
+            document: self,
+            sections: sections + blocks,
+            visit: recording(self, &mut recorded),
         };
-        let _ = self.walk_unread(|line, origin| {
-            lines.push((line, origin));
-            if lines.len() == LINES_RECORDED_AT_A_TIME {
-                record(&mut lines);
-            }
-            ControlFlow::Continue(())
-        });
-        record(&mut lines);
+        let _ = tail.tail();
+        drop(tail);
         recorded
     }
 
@@ -531,6 +604,23 @@ impl NewLines for Document<'_> {
                 },
             )
         })
+    }
+}
+
+/// A visit of a [`Walk`] that lays out each line, and records it in `recorded`.
+fn recording<'d, 'r, 'o>(
+    document: &'d Document<'_>,
+    recorded: &'r mut Recorded<'o>,
+) -> impl FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()> + use<'d, 'r, 'o> {
+    let mut text = String::new();
+    move |line, origin| {
+        text.clear();
+        push_item(&mut text, &line.read(document));
+        recorded.push(NewLine {
+            text: &text,
+            origin,
+        });
+        ControlFlow::Continue(())
     }
 }
 
@@ -654,16 +744,18 @@ mod tests {
 
     #[test]
     fn a_large_file_is_recorded_in_parts_as_in_one() {
-        // Blocks out of order, with comments and lines the layout changes, in more lines
-        // than are recorded at a time.
-        let blocks = 2 * LINES_RECORDED_AT_A_TIME / 3;
+        // Blocks out of order, with comments and lines the layout changes, in more blocks
+        // than are recorded at a time; a header, a line without an id, a tour and a footer
+        // around them.
+        let blocks = 2 * BLOCKS_RECORDED_AT_A_TIME + 100;
         let text: String = (0..blocks)
             .map(|n| format!("# {n}\nb {} x\na   {} y\n", blocks - n, blocks - n))
             .collect();
+        let text = format!("# header\n\nhello\n{text}tourSpecification 1 2\n# end\n");
         let document = Document::parse(&text).unwrap();
         let in_parts = document.record(&text);
         let in_one = crate::unified::lines_of(&document);
-        assert!(in_one.len() > 2 * LINES_RECORDED_AT_A_TIME);
+        assert!(in_one.len() > 3 * blocks);
         assert_eq!(crate::unified::lines_of(&in_parts), in_one);
     }
 

@@ -10,7 +10,7 @@ use crate::canonical::Document;
 use crate::check::{check_with, Checked};
 use crate::fixing::{self, Fixes, Outcome};
 use crate::model::build::Options;
-use crate::model::{Dialect, Key};
+use crate::model::{Dialect, Key, KnowledgeBase};
 use crate::reader::Reader;
 use crate::render::escape::escape;
 use crate::rewrite::{self, DiffStyle, Mode};
@@ -101,7 +101,6 @@ fn fix_file(
         };
         match (outcome, mode) {
             (Outcome::Balanced { file, document }, Mode::Diff) => {
-                let changed = print_balanced(&read, &document, style)?;
                 // What is left to correct is what the text before the balance has but for
                 // the order of its ids, which the balanced order mends (its tree is log2(n)
                 // deep): checked without the rules of that order, the balanced text is
@@ -112,7 +111,15 @@ fn fix_file(
                 ];
                 let mut rules = choice.rules.clone();
                 rules.ignore(&order);
-                let checked = last_check.and_then(|checked| checked.ignoring(&order));
+                // Its findings tell it; the model of the file is let go before the diff.
+                let checked =
+                    last_check
+                        .and_then(|checked| checked.ignoring(&order))
+                        .map(|mut checked| {
+                            checked.kb = KnowledgeBase::default();
+                            checked
+                        });
+                let changed = print_balanced(&read, &document, style)?;
                 Ok((changed, report(file, checked, &rules)?))
             }
             (Outcome::Balanced { document, .. }, Mode::Write) => {

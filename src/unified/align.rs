@@ -26,6 +26,18 @@ struct Run {
 #[derive(Debug, PartialEq, Eq)]
 pub(super) struct Kept(Vec<Range<u32>>);
 
+impl Kept {
+    /// The ranges, ascending.
+    pub(super) fn ranges(&self) -> &[Range<u32>] {
+        &self.0
+    }
+
+    /// The ranges from the one that holds new line `index`, or the next.
+    fn from(&self, index: u32) -> &[Range<u32>] {
+        &self.0[self.0.partition_point(|range| range.end <= index)..]
+    }
+}
+
 /// What the first reading of the new lines finds.
 #[derive(Debug, PartialEq, Eq)]
 pub(super) enum FirstReading {
@@ -42,7 +54,7 @@ pub(super) enum FirstReading {
 /// moved nothing), the chain is every run, and the changes are found in the same reading.
 pub(super) fn first_reading(old: &str, new: &impl NewLines) -> FirstReading {
     let mut runs = Runs::default();
-    let mut pairing = Pairing::new(old);
+    let mut pairing = Pairing::new(old, Start::TEXT);
     let mut index = 0u32;
     let _ = new.each_line(&mut |line| {
         if let Some(origin) = line.origin {
@@ -141,7 +153,7 @@ impl Runs {
     /// ascend, the changes are found in a second reading (the runs were read apart).
     pub(super) fn reading(&self, old: &str, new: &impl NewLines) -> FirstReading {
         match self.in_order {
-            true => FirstReading::InOrder(pair(old, new, None, |_| {})),
+            true => FirstReading::InOrder(pair(old, new, None, Start::TEXT, |_| {}).finish()),
             false => FirstReading::Moved(self.kept()),
         }
     }
@@ -168,7 +180,7 @@ pub(super) fn find(
     mut finder: Finder<'_>,
     hand_over_every: u32,
 ) {
-    let changes = pair(old, new, kept, |pairing| {
+    let changes = pair(old, new, kept, Start::TEXT, |pairing| {
         if pairing.index % hand_over_every == 0 {
             // Every change not found yet starts at the one open, or at the lines to come.
             let settled = match pairing.open {
@@ -178,7 +190,7 @@ pub(super) fn find(
             finder.hand_over(&mut pairing.changes.regions, settled);
         }
     });
-    finder.finish(changes);
+    finder.finish(changes.finish());
 }
 
 /// Whether the old line at `origin` follows the one that ends at `next`: nothing but blank
@@ -247,7 +259,7 @@ pub(super) struct Region {
 
 /// Every change, in order, and how many lines the old text has. Between two changes, and
 /// before the first and after the last, the lines are equal.
-#[derive(Debug, Default, PartialEq, Eq)]
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub(super) struct Changes {
     pub regions: Vec<Region>,
     pub old_lines: u32,
@@ -256,19 +268,54 @@ pub(super) struct Changes {
 /// The changes when lines moved: a second reading, which pairs the lines that `kept` says
 /// keep their place.
 pub(super) fn changes(old: &str, new: &impl NewLines, kept: &Kept) -> Changes {
-    pair(old, new, Some(kept), |_| {})
+    pair(old, new, Some(kept), Start::TEXT, |_| {}).finish()
 }
 
-/// Pairs every new line ([`Pairing`]), each kept if `kept` says so (every one if there is
-/// no `kept`: nothing moved), `after_line` called after each.
-fn pair(
+/// Where a reading of some of the new lines starts: at new line `index`, whose origin
+/// starts at byte `at` of the old text, the lines before it paired up to there with nothing
+/// left open (the line before it kept its place, equal to the old line before `at`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Start {
+    pub index: u32,
+    pub at: usize,
+}
+
+impl Start {
+    /// The start of the texts.
+    pub(super) const TEXT: Start = Start { index: 0, at: 0 };
+}
+
+/// The changes of the new lines `new`, some of the lines that `kept` is of, read from
+/// `start` and made from the old lines from there up to the end of `old` (a text cut at a
+/// line start where the next part starts, or the whole), their old lines counted from
+/// `start` (new lines by index, as in the whole). `None` if the lines did not end paired up
+/// to the end of `old` with nothing open, as a reading of all of them would have come to
+/// the next part's start: then the parts cannot be read apart. (When `old` is whole, the
+/// old lines left are taken out, as they are at the end.)
+pub(super) fn changes_of_part(
     old: &str,
     new: &impl NewLines,
+    kept: &Kept,
+    start: Start,
+    whole: bool,
+) -> Option<Changes> {
+    let pairing = pair(old, new, Some(kept), start, |_| {});
+    let paired_to_the_end = pairing.at == old.len() && pairing.open.is_none();
+    (whole || paired_to_the_end).then(|| pairing.finish())
+}
+
+/// Pairs every new line ([`Pairing`]) from `start`, each kept if `kept` says so (every one
+/// if there is no `kept`: nothing moved), `after_line` called after each; the pairing is
+/// left to be finished.
+fn pair<'o>(
+    old: &'o str,
+    new: &impl NewLines,
     kept: Option<&Kept>,
+    start: Start,
     mut after_line: impl FnMut(&mut Pairing<'_>),
-) -> Changes {
-    let mut pairing = Pairing::new(old);
-    let mut kept_ranges = kept.map(|kept| kept.0.iter().peekable());
+) -> Pairing<'o> {
+    let mut pairing = Pairing::new(old, start);
+    let mut kept_ranges = kept.map(|kept| kept.from(start.index).iter().peekable());
     let _ = new.each_line(&mut |line| {
         let index = pairing.index;
         let is_kept = kept_ranges.as_mut().is_none_or(|ranges| {
@@ -279,7 +326,7 @@ fn pair(
         after_line(&mut pairing);
         ControlFlow::Continue(())
     });
-    pairing.finish()
+    pairing
 }
 
 /// Pairs the new lines with old ones, in order: a kept line with its origin (equal, or
@@ -300,13 +347,14 @@ struct Pairing<'o> {
 }
 
 impl<'o> Pairing<'o> {
-    fn new(old: &'o str) -> Pairing<'o> {
+    /// Pairs from `start`, counting the old lines from there.
+    fn new(old: &'o str, start: Start) -> Pairing<'o> {
         Pairing {
             old,
             changes: Changes::default(),
-            at: 0,
+            at: start.at,
             line: 0,
-            index: 0,
+            index: start.index,
             open: None,
             blank_put_in: false,
         }

@@ -15,7 +15,8 @@
 //!    on the cores;
 //! 2. [`align::changes`]: the changes, each a range of old lines replaced by a range of new
 //!    ones, with what is equal between them; in a large text, found on another thread as
-//!    the hunks are printed ([`follow`]);
+//!    the hunks are printed ([`follow`]), or, of lines read once, found and printed in
+//!    parts on the cores ([`in_parts`]);
 //! 3. [`print`]: the hunks, with three lines of context, written as they come (old lines
 //!    from the old text, new ones as the third reading reaches them).
 //!
@@ -26,6 +27,7 @@
 mod align;
 mod follow;
 mod in_order;
+mod in_parts;
 mod print;
 mod recorded;
 
@@ -119,7 +121,12 @@ pub fn write_diff(
     let changes = match reading {
         align::FirstReading::InOrder(changes) => changes,
         align::FirstReading::Moved(kept) if large => {
-            return write_as_found(out, old, new, Some(&kept), style, HAND_OVER_EVERY);
+            let in_parts = new.as_recorded().and_then(|recorded| {
+                in_parts::write_diff(out, old, recorded, &kept, style, in_parts::SIZES)
+            });
+            return in_parts.unwrap_or_else(|| {
+                write_as_found(out, old, new, Some(&kept), style, HAND_OVER_EVERY)
+            });
         }
         align::FirstReading::Moved(kept) => align::changes(old, new, &kept),
     };
@@ -241,6 +248,84 @@ mod tests {
         let mut out = Vec::new();
         write_as_found(&mut out, old, new, Some(&kept), STYLE, every).unwrap();
         Some(String::from_utf8(out).unwrap())
+    }
+
+    /// The diff of the lines of `new`, recorded, that moved, found and printed in parts of
+    /// `sizes`; none if nothing moved, or the parts cannot be read apart.
+    fn diff_in_parts(old: &str, new: &impl NewLines, sizes: in_parts::Sizes) -> Option<String> {
+        let recorded = Recorded::new(old, new);
+        let align::FirstReading::Moved(kept) = recorded.first_reading() else {
+            return None;
+        };
+        let mut out = Vec::new();
+        in_parts::write_diff(&mut out, old, &recorded, &kept, STYLE, sizes)?.unwrap();
+        Some(String::from_utf8(out).unwrap())
+    }
+
+    /// `blocks` blocks of lines (block `n` has `1 + n % 9` of them, one of which is
+    /// blank), and the blocks in the `order` given, the lines that `edits` picks edited
+    /// (when the pick is 1), or with a new blank line before them (2).
+    fn moved_blocks(order: &[usize], edits: &[u8]) -> (String, Vec<(String, Option<usize>)>) {
+        let lines_of = |block: usize| -> Vec<String> {
+            (0..1 + block % 9)
+                .map(|line| match line {
+                    4 => String::new(),
+                    line => format!("b{block} l{line}"),
+                })
+                .collect()
+        };
+        let mut starts = Vec::new();
+        let mut old = String::new();
+        for block in 0..order.len() {
+            starts.push(old.lines().count());
+            for line in lines_of(block) {
+                old.push_str(&line);
+                old.push('\n');
+            }
+        }
+        let mut new = Vec::new();
+        for &block in order {
+            for (n, line) in lines_of(block).into_iter().enumerate() {
+                let origin = Some(starts[block] + n);
+                match edits[new.len() % edits.len()] {
+                    1 => new.push((format!("{line} edited\n"), origin)),
+                    2 => {
+                        new.push(("\n".to_string(), None));
+                        new.push((format!("{line}\n"), origin));
+                    }
+                    _ => new.push((format!("{line}\n"), origin)),
+                }
+            }
+        }
+        (old, new)
+    }
+
+    #[test]
+    fn blocks_moved_in_a_large_text_are_diffed_in_parts_and_pieces() {
+        // Half the blocks moved ahead of the others, as a balanced order moves them.
+        let blocks = 400;
+        let order: Vec<usize> = (0..blocks)
+            .filter(|block| block % 2 == 1)
+            .chain((0..blocks).filter(|block| block % 2 == 0))
+            .collect();
+        let (old, lines) = moved_blocks(&order, &[0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1]);
+        let lines: Vec<(&str, Option<usize>)> = lines
+            .iter()
+            .map(|(text, origin)| (text.as_str(), *origin))
+            .collect();
+        let given = Given { lines, old: &old };
+        let sizes = in_parts::Sizes {
+            lines_per_part: 100,
+            lines_per_piece: 50,
+        };
+        let in_parts = diff_in_parts(&old, &given, sizes).expect("read in parts");
+        assert_eq!(in_parts, diff(&old, &given));
+        let recorded = Recorded::new(&old, &given);
+        let align::FirstReading::Moved(kept) = recorded.first_reading() else {
+            panic!("the blocks moved");
+        };
+        let cuts = recorded.cuts(&kept, sizes.lines_per_part).len();
+        assert!(cuts > 5, "{cuts} parts");
     }
 
     fn in_order(old: &str, new: &str) -> String {
@@ -455,6 +540,22 @@ mod tests {
         }
 
         #[test]
+        fn blocks_moved_are_diffed_in_parts_as_in_one(
+            order in Just((0..30).collect::<Vec<usize>>()).prop_shuffle(),
+            edits in proptest::collection::vec(0..8u8, 1..20),
+            lines_per_part in 1..40u32,
+            lines_per_piece in 1..10u32,
+        ) {
+            let (old, lines) = moved_blocks(&order, &edits);
+            let lines: Vec<(&str, Option<usize>)> =
+                lines.iter().map(|(text, origin)| (text.as_str(), *origin)).collect();
+            let given = Given { lines, old: &old };
+            let sizes = in_parts::Sizes { lines_per_part, lines_per_piece };
+            let in_parts = diff_in_parts(&old, &given, sizes);
+            prop_assert!(in_parts.is_none_or(|in_parts| in_parts == diff(&old, &given)));
+        }
+
+        #[test]
         fn any_origins_give_a_diff_that_gives_the_new_text(
             old in text(),
             new in text(),
@@ -465,6 +566,12 @@ mod tests {
             let diff = diff(&old, &given);
             let as_found = diff_moved_as_found(&old, &given, 1 + picks[0].unwrap_or(0) as u32 % 4);
             prop_assert!(as_found.is_none_or(|as_found| as_found == diff));
+            let sizes = in_parts::Sizes {
+                lines_per_part: 1 + picks[1].unwrap_or(0) as u32 % 8,
+                lines_per_piece: 1 + picks[2].unwrap_or(0) as u32 % 4,
+            };
+            let in_parts = diff_in_parts(&old, &given, sizes);
+            prop_assert!(in_parts.is_none_or(|in_parts| in_parts == diff));
             prop_assert_eq!(apply(&old, &diff), new);
         }
     }

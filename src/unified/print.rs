@@ -4,12 +4,13 @@ use std::cell::RefCell;
 use std::io::{self, BufWriter, Write};
 use std::ops::ControlFlow;
 
+use super::align::Start;
 use super::follow::Known;
 use super::{old_line, NewLines, Style};
 use crate::render::escape::{escape, is_plain_line};
 
 /// Lines of context around a change.
-const CONTEXT: u32 = 3;
+pub(super) const CONTEXT: u32 = 3;
 
 /// Writes the headers and every hunk of the changes `known` knows or comes to know, if
 /// there are any; returns whether there are.
@@ -24,20 +25,59 @@ pub(super) fn print(
         return Ok(false);
     }
     // A line at a time through a buffer: standard output alone is flushed at every line.
-    let mut printer = Printer {
-        out: BufWriter::with_capacity(1 << 16, out),
-        old,
-        at: 0,
-        line: 0,
-        color: style.color,
-        buffer: String::new(),
-    };
+    let mut out = BufWriter::with_capacity(1 << 16, out);
+    write_headers(&mut out, style)?;
+    let mut printer = Printer::new(&mut out, old, Start::TEXT, 0, style.color);
+    print_hunks(&mut printer, new, known, false)?;
+    out.flush()?;
+    Ok(true)
+}
+
+/// Writes the headers of the diff (`---` and `+++`).
+pub(super) fn write_headers(out: &mut impl Write, style: Style<'_>) -> io::Result<()> {
+    let mut printer = Printer::new(out, "", Start::TEXT, 0, style.color);
     printer.write(&format!("--- {}", style.name))?;
-    printer.write(&format!("+++ {}", style.name))?;
+    printer.write(&format!("+++ {}", style.name))
+}
+
+/// Writes to `out` the hunks of the changes `known` knows (every one of them), of the new
+/// lines `new`, numbered from `start.index` as in the whole new text, whose old lines are
+/// read from `start.at`, old line `line`: a part of the diff, printed on its own. If
+/// `continued_at` is an old line, the first change goes on with the hunk of the change
+/// before it (the part before ended amid its new lines), the old lines printed up to
+/// that one.
+pub(super) fn print_part(
+    out: &mut impl Write,
+    old: &str,
+    new: &impl NewLines,
+    mut known: Known<'_>,
+    (start, line): (Start, u32),
+    continued_at: Option<u32>,
+    color: bool,
+) -> io::Result<()> {
+    if known.region(0).is_none() {
+        return Ok(());
+    }
+    let mut printer = Printer::new(out, old, start, line, color);
+    if let Some(line) = continued_at {
+        printer.skip_to(line);
+    }
+    print_hunks(&mut printer, new, known, continued_at.is_some())
+}
+
+/// Writes the hunks of the changes `known` knows or comes to know, of the new lines `new`
+/// (the first going on with a hunk begun before if `continued`).
+fn print_hunks(
+    printer: &mut Printer<'_, impl Write>,
+    new: &impl NewLines,
+    known: Known<'_>,
+    continued: bool,
+) -> io::Result<()> {
     let known = RefCell::new(known);
     let mut hunks = Hunks {
         next: 0,
         last_of_hunk: 0,
+        continued,
     };
     let mut failed = None;
     // Only the lines of the changes are read again (the context comes from the old text),
@@ -59,7 +99,7 @@ pub(super) fn print(
     let mut broke_at = None;
     let _ = new.each_wanted_line(&mut wanted, &mut |index, line| {
         let known = &mut *known.borrow_mut();
-        let printed = hunks.step(&mut printer, known, index).and_then(|()| {
+        let printed = hunks.step(printer, known, index).and_then(|()| {
             match hunks.next.checked_sub(1).and_then(|at| known.get(at)) {
                 Some(region) if region.new.contains(&index) => printer.line('+', line.text),
                 _ => Ok(()),
@@ -86,9 +126,8 @@ pub(super) fn print(
         return Err(error);
     }
     let after = broke_at.unwrap_or(after);
-    hunks.step(&mut printer, &mut known.borrow_mut(), after)?;
-    printer.out.flush()?;
-    Ok(true)
+    let finished = hunks.step(printer, &mut known.borrow_mut(), after);
+    finished
 }
 
 /// Where the printing is in the changes.
@@ -97,6 +136,9 @@ struct Hunks {
     next: usize,
     /// The last change of the hunk being printed.
     last_of_hunk: usize,
+    /// Whether the first change goes on with a hunk whose header and first lines were
+    /// printed before.
+    continued: bool,
 }
 
 impl Hunks {
@@ -152,6 +194,9 @@ impl Hunks {
             }
         }
         self.last_of_hunk = last;
+        if std::mem::take(&mut self.continued) {
+            return Ok(());
+        }
         let before = CONTEXT.min(first.old.start);
         let after = known.old_lines_after(last_region.old.end, CONTEXT);
         let old = (first.old.start - before, last_region.old.end + after);
@@ -193,7 +238,7 @@ fn write_range(out: &mut impl Write, (start, end): (u32, u32)) -> io::Result<()>
 
 /// Writes the lines of the diff, and walks the old text.
 struct Printer<'o, W: Write> {
-    out: BufWriter<W>,
+    out: W,
     old: &'o str,
     /// The next old line: its start and number.
     at: usize,
@@ -203,7 +248,19 @@ struct Printer<'o, W: Write> {
     buffer: String,
 }
 
-impl<W: Write> Printer<'_, W> {
+impl<'o, W: Write> Printer<'o, W> {
+    /// A printer of lines to `out`, at the old line `line` that starts at `start.at`.
+    fn new(out: W, old: &'o str, start: Start, line: u32, color: bool) -> Printer<'o, W> {
+        Printer {
+            out,
+            old,
+            at: start.at,
+            line,
+            color,
+            buffer: String::new(),
+        }
+    }
+
     /// Passes over the old lines up to line `to`.
     fn skip_to(&mut self, to: u32) {
         while self.line < to {

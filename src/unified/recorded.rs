@@ -2,9 +2,9 @@
 //! make than to keep: `ekb fix --diff` lays out a whole file, which the diff reads up to
 //! three times ([`super::write_diff`]).
 
-use std::ops::ControlFlow;
+use std::ops::{ControlFlow, Range};
 
-use super::align::{FirstReading, Runs};
+use super::align::{FirstReading, Kept, Runs, Start};
 use super::{old_line, NewLine, NewLines};
 
 /// A line's origin when it has none.
@@ -81,22 +81,108 @@ impl<'o> Recorded<'o> {
     }
 }
 
+/// The fewest lines in a row, equal to their origins' and from old lines in a row, that
+/// keep their place, around where the lines are cut into parts: seven, so that the hunks
+/// of a diff (three lines of context, and one hunk for changes up to six lines apart) never
+/// span two parts.
+const EQUAL_AROUND_A_CUT: u32 = 7;
+
+/// Where a part of the lines starts: its first line, which keeps its place and is equal to
+/// its origin, as the three before it, and where the text of its first changed line is in
+/// [`Recorded::changed`].
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Cut {
+    pub start: Start,
+    changed_at: usize,
+}
+
 impl Recorded<'_> {
     /// What the diff's first reading of these lines finds, from the runs found as they were
     /// recorded.
     pub(super) fn first_reading(&self) -> FirstReading {
         self.runs.reading(self.old, self)
     }
-}
 
-impl NewLines for Recorded<'_> {
-    fn as_recorded(&self) -> Option<&Recorded<'_>> {
-        Some(self)
+    /// Where to cut these lines, of which `kept` keep their place, into parts of about
+    /// `lines` lines (at least) that a diff can read apart: each part starts amid
+    /// [`EQUAL_AROUND_A_CUT`] lines in a row that keep their place, equal to their origins,
+    /// which follow one another. The first part starts at the start.
+    pub(super) fn cuts(&self, kept: &Kept, lines: u32) -> Vec<Cut> {
+        let mut cuts = vec![Cut {
+            start: Start::TEXT,
+            changed_at: 0,
+        }];
+        let mut kept = kept.ranges().iter().peekable();
+        let mut changed_at = 0;
+        // The lines in a row so far, and where the old line after the last one starts.
+        let (mut in_a_row, mut next) = (0, 0);
+        // The origins of the last four lines, by index modulo 4.
+        let mut origins = [0; 4];
+        for (index, &(origin, length)) in (0u32..).zip(&self.lines) {
+            while kept.next_if(|range| range.end <= index).is_some() {}
+            let same = length & AS_ITS_ORIGIN != 0;
+            let length = length & !AS_ITS_ORIGIN;
+            if !same {
+                changed_at += length as usize;
+            }
+            let in_place = same && kept.peek().is_some_and(|range| range.contains(&index));
+            in_a_row = match in_place {
+                true if in_a_row > 0 && origin == next => in_a_row + 1,
+                true => 1,
+                false => 0,
+            };
+            next = origin.wrapping_add(length);
+            origins[index as usize % 4] = origin;
+            let middle = index.wrapping_sub(EQUAL_AROUND_A_CUT / 2);
+            let last = cuts[cuts.len() - 1].start.index;
+            if in_a_row >= EQUAL_AROUND_A_CUT && middle >= last + lines {
+                // The lines from the middle on are equal to their origins: none changed.
+                cuts.push(Cut {
+                    start: Start {
+                        index: middle,
+                        at: origins[middle as usize % 4] as usize,
+                    },
+                    changed_at,
+                });
+            }
+        }
+        cuts
     }
 
-    fn each_line(&self, visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>) -> ControlFlow<()> {
-        let mut changed_at = 0;
-        for &(origin, length) in &self.lines {
+    /// The lines from cut `from` to cut `to` (the end if none).
+    pub(super) fn part<'r>(&'r self, from: Cut, to: Option<Cut>) -> Part<'r, 'r> {
+        let end = to.map_or(self.len(), |to| to.start.index);
+        Part {
+            recorded: self,
+            lines: from.start.index..end,
+            changed_at: from.changed_at,
+        }
+    }
+
+    /// The lines up to `end`.
+    pub(super) fn first_lines<'r>(&'r self, end: u32) -> Part<'r, 'r> {
+        Part {
+            recorded: self,
+            lines: 0..end,
+            changed_at: 0,
+        }
+    }
+
+    /// How many lines there are.
+    pub(super) fn len(&self) -> u32 {
+        self.lines.len() as u32
+    }
+
+    /// Visits the lines `range`, the first changed one's text at `changed_at` in
+    /// [`Recorded::changed`], each with its index, until `visit` breaks.
+    fn each_line_in(
+        &self,
+        range: Range<u32>,
+        mut changed_at: usize,
+        visit: &mut dyn FnMut(u32, NewLine<'_>) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
+        let lines = &self.lines[range.start as usize..range.end as usize];
+        for (index, &(origin, length)) in range.zip(lines) {
             let text = match length & AS_ITS_ORIGIN != 0 {
                 true => {
                     let start = origin as usize;
@@ -109,9 +195,67 @@ impl NewLines for Recorded<'_> {
                 }
             };
             let origin = (origin != NO_ORIGIN).then_some(origin);
-            visit(NewLine { text, origin })?;
+            visit(index, NewLine { text, origin })?;
         }
         ControlFlow::Continue(())
+    }
+}
+
+impl NewLines for Recorded<'_> {
+    fn as_recorded(&self) -> Option<&Recorded<'_>> {
+        Some(self)
+    }
+
+    fn each_line(&self, visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>) -> ControlFlow<()> {
+        self.each_line_in(0..self.lines.len() as u32, 0, &mut |_, line| visit(line))
+    }
+}
+
+/// Some of the lines of a [`Recorded`], from one cut to the next, numbered as in the whole
+/// (their first one is not line 0).
+#[derive(Clone)]
+pub(super) struct Part<'r, 'o> {
+    recorded: &'r Recorded<'o>,
+    lines: Range<u32>,
+    changed_at: usize,
+}
+
+impl<'r, 'o> Part<'r, 'o> {
+    /// The lines after these, up to `end`.
+    pub(super) fn next_lines(&self, end: u32) -> Part<'r, 'o> {
+        let lines = &self.recorded.lines[self.lines.start as usize..self.lines.end as usize];
+        let changed: usize = lines
+            .iter()
+            .filter(|(_, length)| length & AS_ITS_ORIGIN == 0)
+            .map(|&(_, length)| length as usize)
+            .sum();
+        Part {
+            recorded: self.recorded,
+            lines: self.lines.end..end,
+            changed_at: self.changed_at + changed,
+        }
+    }
+}
+
+impl NewLines for Part<'_, '_> {
+    fn each_line(&self, visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>) -> ControlFlow<()> {
+        self.each_wanted_line(&mut |_| true, &mut |_, line| visit(line))
+    }
+
+    fn each_wanted_line(
+        &self,
+        wanted: &mut dyn FnMut(u32) -> bool,
+        visit: &mut dyn FnMut(u32, NewLine<'_>) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
+        let lines = self.lines.clone();
+        self.recorded.each_line_in(
+            lines,
+            self.changed_at,
+            &mut |index, line| match wanted(index) {
+                true => visit(index, line),
+                false => ControlFlow::Continue(()),
+            },
+        )
     }
 }
 
