@@ -432,27 +432,18 @@ fn numbers_as_the_real_reader_scans_them() {
 /// stop it: the stops after it keep what they held.
 #[test]
 fn tour_stops_past_the_end_of_the_line_are_undefined() {
+    let cases = [
+        ("tour-past-the-line.dat", "tour-count-mismatch", 4),
+        ("tour-stops-at-a-letter.dat", "invalid-id", 2),
+    ];
     for version in Reader::ALL {
-        let (loaded, findings) = loaded_fixture("tour-past-the-line.dat", version);
-        assert_eq!(
-            loaded["tour"],
-            serde_json::json!([2, null, null]),
-            "{version}"
-        );
-        assert!(
-            has(&findings, "tour-count-mismatch", 4, Severity::Error),
-            "{findings:?}"
-        );
-        let (loaded, findings) = loaded_fixture("tour-stops-at-a-letter.dat", version);
-        assert_eq!(
-            loaded["tour"],
-            serde_json::json!([2, null, null]),
-            "{version}"
-        );
-        assert!(
-            has(&findings, "invalid-id", 2, Severity::Error),
-            "{findings:?}"
-        );
+        for (fixture, rule, line) in cases {
+            let (loaded, findings) = loaded_fixture(fixture, version);
+            let tour = serde_json::json!([2, null, null]);
+            assert_eq!(loaded["tour"], tour, "{fixture} {version}");
+            let reported = has(&findings, rule, line, Severity::Error);
+            assert!(reported, "{fixture} {version}: {findings:?}");
+        }
     }
 }
 
