@@ -467,3 +467,17 @@ fn a_huge_tour_count_is_a_slow_load() {
     let (_, findings) = loaded_fixture("tour-past-the-line.dat", Reader::V2025_06);
     assert!(!findings.iter().any(|(rule, ..)| rule == "compat-slow-load"));
 }
+
+/// Found against the real readers: `culturalKnowledge` with no word after its id loads no
+/// word (the reader's loop runs only within the line), where `ekb` showed it undefined.
+#[test]
+fn cultural_knowledge_without_words_loads_none() {
+    for version in &Reader::ALL[1..] {
+        let name = "cultural-knowledge-without-words.dat";
+        let (loaded, findings) = loaded_fixture(name, *version);
+        let words = &loaded["locations"][0]["culturalKnowledge"];
+        assert_eq!(*words, serde_json::json!([]), "{version}");
+        let reported = has(&findings, "empty-value", 3, Severity::Error);
+        assert!(reported, "{version}: {findings:?}");
+    }
+}

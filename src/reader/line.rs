@@ -94,7 +94,7 @@ pub fn read_c_string(line: &[u8], offset: usize, reader: Reader) -> LineRead {
             key,
             key_span,
             id,
-            value: LoadedValue::Undefined,
+            value: past_the_line(key),
             value_start: None,
         };
     };
@@ -121,6 +121,16 @@ pub fn value(key: Key, line: &[u8], start: usize, offset: usize) -> Option<Loade
         ValueKind::Text | ValueKind::Arm => LoadedValue::Text(at(start..line.len() - 1)),
         ValueKind::Tour => unreachable!("the tour is not a location's value"),
     })
+}
+
+/// What a value of `key` that starts past the end of its line loads: no culturalKnowledge
+/// word (the reader's loop runs while it is within the line, so not once), and for any
+/// other key whatever its buffer held before, undefined.
+pub fn past_the_line(key: Key) -> LoadedValue {
+    match key.value_kind() {
+        ValueKind::Words => LoadedValue::Words(Vec::new()),
+        _ => LoadedValue::Undefined,
+    }
 }
 
 /// Where a location key's value starts: past `strlen(key)` bytes, then past non-alphanumerics,
@@ -361,6 +371,14 @@ mod tests {
                 value: LoadedValue::Undefined,
                 ..
             }
+        ));
+        // Measured with the real reader: culturalKnowledge alone loads no word.
+        assert!(matches!(
+            read_str("culturalKnowledge 4 \n", NOW),
+            LineRead::Value {
+                value: LoadedValue::Words(words),
+                ..
+            } if words.is_empty()
         ));
         assert_eq!(
             read_str("gestureTarget 4 8,1 2 3\n", NOW),

@@ -130,7 +130,7 @@ impl<'a> Loaded<'a> {
         let (_, chunk) = chunks(&self.text[start..], self.reader.line_buffer()).next()?;
         let line = Span::new(start, start + chunk.len());
         let value = match location.fields.values[slot] {
-            UNDEFINED => LoadedValue::Undefined,
+            UNDEFINED => line::past_the_line(key),
             // Read again from where it starts: a C string ends at its first NUL.
             value_start => {
                 let text = &chunk[..memchr::memchr(0, chunk).unwrap_or(chunk.len())];
