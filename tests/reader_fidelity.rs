@@ -481,3 +481,27 @@ fn cultural_knowledge_without_words_loads_none() {
         assert!(reported, "{version}: {findings:?}");
     }
 }
+
+/// Found against the real readers: a culturalKnowledge line of three words that a later
+/// line of its location overwrites still crashes the reader, which reads it first; the check
+/// reported only `duplicate-key`, a warning.
+#[test]
+fn an_overwritten_cultural_knowledge_line_still_crashes_the_reader() {
+    let name = "cultural-knowledge-overwritten.dat";
+    for version in &Reader::ALL[1..] {
+        let (_, findings) = loaded_fixture(name, *version);
+        let rule = "compat-too-many-cultural-keys";
+        assert!(
+            has(&findings, rule, 2, Severity::Error),
+            "{version}: {findings:?}"
+        );
+        assert!(
+            !has(&findings, rule, 4, Severity::Error),
+            "{version}: {findings:?}"
+        );
+    }
+    let (_, findings) = loaded_fixture(name, Reader::D542);
+    assert!(!findings
+        .iter()
+        .any(|(rule, ..)| rule == "compat-too-many-cultural-keys"));
+}
