@@ -354,3 +354,154 @@ fn the_seed_and_the_corpus() {
         assert_differences_are_reported(&std::fs::read_to_string(path).unwrap());
     }
 }
+
+/// What `reader` loads from the fixture `name` (under `tests/fixtures/reader/`), as
+/// `export --as-loaded` prints it, and the check's findings as (rule, line, severity).
+fn loaded_fixture(
+    name: &str,
+    version: Reader,
+) -> (serde_json::Value, Vec<(String, u32, Severity)>) {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/reader")
+        .join(name);
+    let source = SourceFile::from_bytes(name, std::fs::read(path).unwrap());
+    let loaded = reader::load(source.text().as_bytes(), version);
+    let export = serde_json::to_value(reader::export::LoadedExport::new(&loaded)).unwrap();
+    let options = Options {
+        reader: Some(version),
+        ..Options::default()
+    };
+    let index = LineIndex::new(source.text());
+    let findings = ekb::check(&source, &options)
+        .diagnostics
+        .iter()
+        .map(|d| {
+            (
+                d.rule.name.to_string(),
+                index.line(d.span.start),
+                d.severity(),
+            )
+        })
+        .collect();
+    (export, findings)
+}
+
+fn has(findings: &[(String, u32, Severity)], rule: &str, line: u32, severity: Severity) -> bool {
+    findings
+        .iter()
+        .any(|(name, at, level)| name == rule && *at == line && *level == severity)
+}
+
+/// Found against the real readers: glibc's `scanf("%f")` reads on past an exponent without
+/// digits (`1e+` is 1, and the next number follows), and reads hexadecimal floats (`0x1p3`
+/// is 8). `ekb` took both lines as unreadable, so it showed their locations' old values.
+#[test]
+fn numbers_as_the_real_reader_scans_them() {
+    for version in Reader::ALL {
+        let (loaded, findings) = loaded_fixture("scanf-numbers.dat", version);
+        let location = |id: usize| &loaded["locations"][id - 1];
+        assert_eq!(
+            location(1)["gestureTarget"],
+            serde_json::json!({ "x": 1.5, "y": 1.0, "z": 0.5 }),
+            "{version}"
+        );
+        assert_eq!(
+            location(2)["gestureTarget"],
+            serde_json::json!({ "x": 1.0, "y": 2.0, "z": 3.0 }),
+            "{version}"
+        );
+        if version != Reader::D542 {
+            assert_eq!(
+                location(2)["pose"],
+                serde_json::json!({ "x": 8.0, "y": 1.0, "theta": 16.0 }),
+                "{version}"
+            );
+        }
+        for line in [3, 5, 6] {
+            assert!(
+                has(&findings, "invalid-number", line, Severity::Error),
+                "{version} line {line}: {findings:?}"
+            );
+        }
+    }
+}
+
+/// Found against the real readers: a tour line with fewer ids than its count does not
+/// stop at its end; the reader reads on into the bytes its buffer held before (here the
+/// earlier tour's `1`), so those stops are undefined, not the earlier tour's. A letter does
+/// stop it: the stops after it keep what they held.
+#[test]
+fn tour_stops_past_the_end_of_the_line_are_undefined() {
+    let cases = [
+        ("tour-past-the-line.dat", "tour-count-mismatch", 4),
+        ("tour-stops-at-a-letter.dat", "invalid-id", 2),
+    ];
+    for version in Reader::ALL {
+        for (fixture, rule, line) in cases {
+            let (loaded, findings) = loaded_fixture(fixture, version);
+            let tour = serde_json::json!([2, null, null]);
+            assert_eq!(loaded["tour"], tour, "{fixture} {version}");
+            let reported = has(&findings, rule, line, Severity::Error);
+            assert!(reported, "{fixture} {version}: {findings:?}");
+        }
+    }
+}
+
+/// Found against the real readers: `tourSpecification 2147483647 1` keeps every version
+/// busy for about four minutes (it tries to read an id for each declared stop); the check
+/// says so, besides the errors about the count.
+#[test]
+fn a_huge_tour_count_is_a_slow_load() {
+    for version in Reader::ALL {
+        let (loaded, findings) = loaded_fixture("tour-huge-count.dat", version);
+        assert_eq!(loaded["tour"][0], 1, "{version}");
+        assert!(
+            has(&findings, "compat-slow-load", 2, Severity::Warning),
+            "{findings:?}"
+        );
+        assert!(
+            has(&findings, "tour-too-long", 2, Severity::Error),
+            "{findings:?}"
+        );
+    }
+    let (_, findings) = loaded_fixture("tour-past-the-line.dat", Reader::V2025_06);
+    assert!(!findings.iter().any(|(rule, ..)| rule == "compat-slow-load"));
+}
+
+/// Found against the real readers: `culturalKnowledge` with no word after its id loads no
+/// word (the reader's loop runs only within the line), where `ekb` showed it undefined.
+#[test]
+fn cultural_knowledge_without_words_loads_none() {
+    for version in &Reader::ALL[1..] {
+        let name = "cultural-knowledge-without-words.dat";
+        let (loaded, findings) = loaded_fixture(name, *version);
+        let words = &loaded["locations"][0]["culturalKnowledge"];
+        assert_eq!(*words, serde_json::json!([]), "{version}");
+        let reported = has(&findings, "empty-value", 3, Severity::Error);
+        assert!(reported, "{version}: {findings:?}");
+    }
+}
+
+/// Found against the real readers: a culturalKnowledge line of three words that a later
+/// line of its location overwrites still crashes the reader, which reads it first; the check
+/// reported only `duplicate-key`, a warning.
+#[test]
+fn an_overwritten_cultural_knowledge_line_still_crashes_the_reader() {
+    let name = "cultural-knowledge-overwritten.dat";
+    for version in &Reader::ALL[1..] {
+        let (_, findings) = loaded_fixture(name, *version);
+        let rule = "compat-too-many-cultural-keys";
+        assert!(
+            has(&findings, rule, 2, Severity::Error),
+            "{version}: {findings:?}"
+        );
+        assert!(
+            !has(&findings, rule, 4, Severity::Error),
+            "{version}: {findings:?}"
+        );
+    }
+    let (_, findings) = loaded_fixture(name, Reader::D542);
+    assert!(!findings
+        .iter()
+        .any(|(rule, ..)| rule == "compat-too-many-cultural-keys"));
+}

@@ -322,6 +322,11 @@ impl LineFacts {
         self.key_lines[key as usize] > 0
     }
 
+    /// How many lines of `key` the file has.
+    pub fn count(&self, key: Key) -> usize {
+        self.key_lines[key as usize] as usize
+    }
+
     /// Adds the facts of the lines after these.
     pub fn append(&mut self, later: LineFacts) {
         for (count, more) in self.key_lines.iter_mut().zip(later.key_lines) {

@@ -6,6 +6,7 @@
 //! and past everything that is not a letter or digit again. Numbers are read from there with
 //! `%f`; a text is the rest of the line less its last byte (taken to be the newline).
 
+use super::load::TOUR_BUFFER;
 use super::scan::{self, is_alnum};
 use super::Reader;
 use crate::model::{Key, ValueKind};
@@ -32,7 +33,8 @@ pub enum LineRead {
     /// changes nothing.
     Failed { key: Key, id: i32 },
     /// The tour: its declared count, and the ids read into its first slots, in order;
-    /// `None` where a slot keeps whatever it held before.
+    /// `None` where a slot is read from past the end of the line (undefined). Slots after
+    /// the last one given keep what they held before.
     Tour { count: i32, stops: Vec<Option<i32>> },
     /// A tour whose count could not be read: nothing changes.
     TourFailed,
@@ -92,7 +94,7 @@ pub fn read_c_string(line: &[u8], offset: usize, reader: Reader) -> LineRead {
             key,
             key_span,
             id,
-            value: LoadedValue::Undefined,
+            value: past_the_line(key),
             value_start: None,
         };
     };
@@ -119,6 +121,16 @@ pub fn value(key: Key, line: &[u8], start: usize, offset: usize) -> Option<Loade
         ValueKind::Text | ValueKind::Arm => LoadedValue::Text(at(start..line.len() - 1)),
         ValueKind::Tour => unreachable!("the tour is not a location's value"),
     })
+}
+
+/// What a value of `key` that starts past the end of its line loads: no culturalKnowledge
+/// word (the reader's loop runs while it is within the line, so not once), and for any
+/// other key whatever its buffer held before, undefined.
+pub fn past_the_line(key: Key) -> LoadedValue {
+    match key.value_kind() {
+        ValueKind::Words => LoadedValue::Words(Vec::new()),
+        _ => LoadedValue::Undefined,
+    }
 }
 
 /// Where a location key's value starts: past `strlen(key)` bytes, then past non-alphanumerics,
@@ -170,7 +182,8 @@ pub fn word_pieces(word: &str) -> Vec<&str> {
 }
 
 /// The tour's line: the count after the key, then one id after each run of letters and
-/// digits; an id that cannot be read leaves its slot, and every later one, as it was.
+/// digits; an id that cannot be read leaves its slot, and every later one, as it was; the
+/// slots after the line's last id are read from past its end, undefined.
 fn tour(line: &[u8], key_length: usize) -> LineRead {
     let Some(at) = scan::skip_while(line, key_length, |b| !is_alnum(b)) else {
         return LineRead::TourFailed;
@@ -182,7 +195,14 @@ fn tour(line: &[u8], key_length: usize) -> LineRead {
     let mut at = scan::skip_while(line, at, is_alnum)
         .and_then(|after_count| scan::skip_while(line, after_count, |b| !is_alnum(b)));
     for _ in 0..count.max(0) {
-        let Some((id, _)) = at.and_then(|start| scan::int(line, start)) else {
+        let Some(start) = at else {
+            // Past the end of the line the reader reads on into what its buffer held
+            // before: the slots it has room for are undefined.
+            let room = usize::try_from(count).map_or(TOUR_BUFFER, |count| count.min(TOUR_BUFFER));
+            stops.resize(stops.len().max(room), None);
+            break;
+        };
+        let Some((id, _)) = scan::int(line, start) else {
             break;
         };
         stops.push(Some(id));
@@ -329,8 +349,10 @@ mod tests {
         );
         assert_eq!(
             stops("tourSpecification 3 1 4\n"),
-            (3, vec![Some(1), Some(4)])
+            (3, vec![Some(1), Some(4), None])
         );
+        assert_eq!(stops("tourSpecification 3 1 x 4\n"), (3, vec![Some(1)]));
+        assert_eq!(stops("tourSpecification 2147483647\n").1, vec![None; 20]);
         assert_eq!(
             stops("tourSpecification 2 1 4 5\n"),
             (2, vec![Some(1), Some(4)])
@@ -349,6 +371,14 @@ mod tests {
                 value: LoadedValue::Undefined,
                 ..
             }
+        ));
+        // Measured with the real reader: culturalKnowledge alone loads no word.
+        assert!(matches!(
+            read_str("culturalKnowledge 4 \n", NOW),
+            LineRead::Value {
+                value: LoadedValue::Words(words),
+                ..
+            } if words.is_empty()
         ));
         assert_eq!(
             read_str("gestureTarget 4 8,1 2 3\n", NOW),

@@ -130,7 +130,7 @@ impl<'a> Loaded<'a> {
         let (_, chunk) = chunks(&self.text[start..], self.reader.line_buffer()).next()?;
         let line = Span::new(start, start + chunk.len());
         let value = match location.fields.values[slot] {
-            UNDEFINED => LoadedValue::Undefined,
+            UNDEFINED => line::past_the_line(key),
             // Read again from where it starts: a C string ends at its first NUL.
             value_start => {
                 let text = &chunk[..memchr::memchr(0, chunk).unwrap_or(chunk.len())];
@@ -155,7 +155,7 @@ pub struct LoadedTour {
 }
 
 /// The stops of the robot's tour buffer.
-const TOUR_BUFFER: usize = 20;
+pub(super) const TOUR_BUFFER: usize = 20;
 
 /// Loads `text` as `reader` does. A large file is read in parts, one per core (lines are
 /// read one at a time, so a part may start at any line), and the parts joined in order.
@@ -410,17 +410,18 @@ mod tests {
     }
 
     #[test]
-    fn the_last_tour_wins_and_keeps_the_slots_it_does_not_write() {
-        let text = "tourSpecification 3 1 2 3\ntourSpecification 3 7\n";
+    fn the_last_tour_wins_and_keeps_the_slots_it_does_not_read() {
+        // A letter stops the reading of ids: the later slots keep the earlier tour's.
+        let text = "tourSpecification 3 1 2 3\ntourSpecification 3 7 x\n";
         let tour = load(text.as_bytes(), Reader::V2025_06).tour.unwrap();
         assert_eq!(
             (tour.count, tour.stops),
             (3, vec![Some(7), Some(2), Some(3)])
         );
-        let fresh = load(b"tourSpecification 3 7\n", Reader::V2025_06)
-            .tour
-            .unwrap();
-        assert_eq!(fresh.stops, vec![Some(7), None, None]);
+        // The end of the line does not: the reader reads on into its buffer's old bytes.
+        let text = "tourSpecification 3 1 2 3\ntourSpecification 3 7\n";
+        let tour = load(text.as_bytes(), Reader::V2025_06).tour.unwrap();
+        assert_eq!(tour.stops, vec![Some(7), None, None]);
         assert_eq!(load(b"", Reader::V2025_06).tour, None);
     }
 

@@ -16,17 +16,17 @@ pub struct TreeShape {
     pub deepest: Option<i32>,
 }
 
-/// About how long the reader takes per node it visits, with a 200-byte line buffer: it
-/// copies each location's record (seven texts of a line buffer each) at every level of its
-/// recursion. Measured on files of ascending ids with `2025-06`: 2,000 locations took
-/// 0.87 s, 1,000 took 0.16 s and 4,000 took 5.5 s (SPEC §2.10), ten lines each.
+/// About how long the reader takes per node it visits, with a record of 1,400 bytes (seven
+/// texts of 200): it copies each location's record at every level of its recursion.
+/// Measured on files of ascending ids with `2025-06`: 2,000 locations took 0.87 s, 1,000
+/// took 0.16 s and 4,000 took 5.5 s (SPEC §2.10), ten lines each.
 const SECONDS_PER_VISIT: f64 = 45e-9;
 
 impl TreeShape {
-    /// About how many seconds loading takes with a line buffer of `buffer` bytes (a larger
-    /// buffer makes each record, and each copy, larger).
-    pub fn load_seconds(&self, buffer: usize) -> f64 {
-        self.visits as f64 * SECONDS_PER_VISIT * buffer as f64 / 200.0
+    /// About how many seconds loading takes with records of `record_bytes` bytes (see
+    /// [`crate::reader::Reader::record_bytes`]): a larger record makes each copy longer.
+    pub fn load_seconds(&self, record_bytes: usize) -> f64 {
+        self.visits as f64 * SECONDS_PER_VISIT * record_bytes as f64 / 1_400.0
     }
 }
 

@@ -72,6 +72,16 @@ impl Reader {
         }
     }
 
+    /// The size of its word buffers (`Keyword`, `KEY_LENGTH`), which `%s` fills with the
+    /// first word of each line and each culturalKnowledge word: 200 in `2026-03`'s header,
+    /// 100 in the others'.
+    pub fn key_buffer(self) -> usize {
+        match self {
+            Reader::V2026_03 => 200,
+            _ => super::key_buffer::KEY_BUFFER,
+        }
+    }
+
     /// The key it reads a location's pose from.
     pub fn pose_key(self) -> Key {
         match self {
@@ -90,14 +100,24 @@ impl Reader {
         }
     }
 
+    /// The bytes of one location's record, which the reader copies at every level of its
+    /// recursion: a text of a line buffer for each of its text fields (seven, and the arm
+    /// on `2026-03`, whose record holds `gestureArm` too).
+    pub fn record_bytes(self) -> usize {
+        let texts = if self.reads(Key::GestureArm) { 8 } else { 7 };
+        texts * self.line_buffer()
+    }
+
     /// The depth of the tree of locations at which loading overflows its 8 MB stack, as
     /// measured on files of ascending ids (SPEC §2.10). The document's class is taken to
-    /// behave as `2025-06`.
+    /// behave as `2025-06`. `2026-03`'s larger record (its `gestureArm`) crashes it sooner
+    /// than `2026-04`: from 1,695, measured with its source built as the others were.
     pub fn crash_depth(self) -> usize {
         match self {
             Reader::D542 | Reader::V2025_06 => 5_570,
             Reader::V2026_02 => 3_750,
-            Reader::V2026_03 | Reader::V2026_04 => 1_950,
+            Reader::V2026_03 => 1_695,
+            Reader::V2026_04 => 1_950,
         }
     }
 
@@ -140,6 +160,9 @@ mod tests {
         }
         assert_eq!(Reader::default_for(Some(Dialect::Seed)), Reader::D542);
         assert_eq!(Reader::default_for(None), Reader::V2025_06);
-        assert_eq!(Reader::V2026_03.reported_crash_depth(), 1_755);
+        assert_eq!(Reader::V2026_03.reported_crash_depth(), 1_525);
+        assert_eq!(Reader::V2026_04.reported_crash_depth(), 1_755);
+        assert_eq!(Reader::V2025_06.record_bytes(), 1_400);
+        assert_eq!(Reader::V2026_03.record_bytes(), 4_800);
     }
 }

@@ -2,7 +2,7 @@ use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::build::leading_id;
 use crate::model::{Key, KnowledgeBase};
-use crate::reader::key_buffer::{self, KEY_BUFFER};
+use crate::reader::key_buffer;
 use crate::reader::{chunks, Reader};
 use crate::render::clip;
 use crate::rules::declare_rule;
@@ -11,8 +11,8 @@ use crate::syntax::{self, Body, Span};
 declare_rule! {
     /// ## What it does
     /// Flags a word of 100 bytes or more where the robot's reader copies a word into a
-    /// 100-byte buffer: the first word of every line it reads (a comment's too, and the
-    /// rest of a line it cut), and each `culturalKnowledge` word.
+    /// 100-byte buffer (200 bytes on `2026-03`): the first word of every line it reads (a
+    /// comment's too, and the rest of a line it cut), and each `culturalKnowledge` word.
     ///
     /// ## Why it matters
     /// The reader copies the word with no bound (`sscanf("%s")`), so a longer one is written
@@ -29,19 +29,20 @@ declare_rule! {
         category: Compat,
         severity: Error,
         fixable: false,
-        summary: "a first word of a line, or a culturalKnowledge word, of 100 bytes or more: it overflows the reader's word buffer",
+        summary: "a first word of a line, or a culturalKnowledge word, of 100 bytes or more (200 on 2026-03): it overflows the reader's word buffer",
     };
 }
 
 /// Checks the words of `kb`'s lines, as `reader` cuts them, and its culturalKnowledge words.
 pub fn check(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagnostics) {
+    let buffer = reader.key_buffer();
     let mut lines: Vec<Span> = kb.lines.long_first_words.clone();
     lines.extend(&kb.lines.long_lines);
     lines.sort_unstable_by_key(|span| span.start);
     for span in lines {
         let line = &text.as_bytes()[span.range()];
         for (offset, piece) in chunks(line, reader.line_buffer()) {
-            let Some(word) = key_buffer::first_word(piece).filter(|w| w.len() >= KEY_BUFFER) else {
+            let Some(word) = key_buffer::first_word(piece).filter(|w| w.len() >= buffer) else {
                 continue;
             };
             // The reader cuts bytes: a word may start or end inside a character.
@@ -53,7 +54,8 @@ pub fn check(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagn
                 "the first word of the rest of this line, which the reader reads as a line of its own,"
             };
             let bytes = word.len();
-            report(word_span, bytes, text, what, location_of(span, text), out);
+            let location = location_of(span, text);
+            report(word_span, bytes, buffer, text, what, location, out);
         }
     }
     if !reader.reads(Key::CulturalKnowledge) {
@@ -64,9 +66,10 @@ pub fn check(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagn
             continue;
         };
         for (word_span, word) in syntax::tokens(words.value, words.span.start as usize) {
-            if word.len() >= KEY_BUFFER {
+            if word.len() >= buffer {
                 let what = "this culturalKnowledge word";
-                report(word_span, word.len(), text, what, Some(location.id), out);
+                let id = Some(location.id);
+                report(word_span, word.len(), buffer, text, what, id, out);
             }
         }
     }
@@ -87,6 +90,7 @@ fn location_of(line: Span, text: &str) -> Option<u32> {
 fn report(
     span: Span,
     bytes: usize,
+    buffer: usize,
     text: &str,
     what: &str,
     location: Option<u32>,
@@ -98,11 +102,11 @@ fn report(
             &COMPAT_KEY_TOO_LONG,
             span,
             format!(
-                "{what} is {bytes} bytes long (`{}`): the robot's reader copies it into a buffer of {KEY_BUFFER} bytes and writes past its end, so what it loads is undefined and it may crash",
+                "{what} is {bytes} bytes long (`{}`): the robot's reader copies it into a buffer of {buffer} bytes and writes past its end, so what it loads is undefined and it may crash",
                 clip::shown(word),
             ),
         )
         .at_location(location)
-        .with_help(format!("put a blank within its first {} bytes, or shorten it", KEY_BUFFER - 1))
+        .with_help(format!("put a blank within its first {} bytes, or shorten it", buffer - 1))
     });
 }

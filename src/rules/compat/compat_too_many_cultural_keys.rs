@@ -1,8 +1,8 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::model::{Key, Location};
-use crate::reader::line::word_pieces;
-use crate::reader::Reader;
+use crate::model::{Key, KnowledgeBase, Location};
+use crate::reader::line::{self, word_pieces, LineRead, LoadedValue};
+use crate::reader::{chunks, Reader};
 use crate::render::clip;
 use crate::rules::declare_rule;
 use crate::syntax::{self, Span};
@@ -85,4 +85,62 @@ pub fn check(location: &Location<'_>, reader: Reader, out: &mut Diagnostics) {
         .at_location(Some(location.id))
         .with_help("keep the two that matter most"),
     );
+}
+
+/// Checks the culturalKnowledge lines that a later line of their location overwrites: the
+/// reader still reads each, and one of more words than its buffer holds writes past it
+/// before the later line is read (measured: `culturalKnowledge 1 A B C`, then the robot's
+/// file, crashes `2025-06`). Looked for only in a file with such lines.
+pub fn check_overwritten(
+    kb: &KnowledgeBase<'_>,
+    text: &str,
+    reader: Reader,
+    out: &mut Diagnostics,
+) {
+    if !reader.reads(Key::CulturalKnowledge) {
+        return;
+    }
+    let mut kept: Vec<u32> = kb
+        .locations()
+        .iter()
+        .filter_map(|location| location.cultural_knowledge().map(|words| words.span.start))
+        .collect();
+    if kb.lines.count(Key::CulturalKnowledge) <= kept.len() {
+        return;
+    }
+    kept.sort_unstable();
+    for (key, args) in super::lines_of_key(text, Key::CulturalKnowledge) {
+        let first_kept = kept.partition_point(|&start| start < key.start);
+        if kept.get(first_kept).is_some_and(|&start| start <= args.end) {
+            continue;
+        }
+        let start = memchr::memrchr(b'\n', &text.as_bytes()[..key.start as usize])
+            .map_or(0, |newline| newline + 1);
+        let Some((_, piece)) = chunks(&text.as_bytes()[start..], reader.line_buffer()).next()
+        else {
+            continue;
+        };
+        let LineRead::Value {
+            id,
+            value: LoadedValue::Words(words),
+            ..
+        } = line::read(piece, start, reader)
+        else {
+            continue;
+        };
+        if words.len() > MAX_CULTURAL_KEYS {
+            out.push_with(&COMPAT_TOO_MANY_CULTURAL_KEYS, || {
+                Diagnostic::new(
+                    &COMPAT_TOO_MANY_CULTURAL_KEYS,
+                    args,
+                    format!(
+                        "the robot's reader loads {} culturalKnowledge words from this line, which a later line of location {id} overwrites, but it has room for {MAX_CULTURAL_KEYS}: it writes past the end of its buffer first, and crashes while the robot starts",
+                        words.len()
+                    ),
+                )
+                .at_location(u32::try_from(id).ok())
+                .with_help("delete this line, or keep two words on it")
+            });
+        }
+    }
 }

@@ -31,6 +31,8 @@ pub fn check_file(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut 
     compat_key_too_long::check(kb, text, reader, out);
     legacy_key::check(kb, text, reader, out);
     compat_ignored_key::check(kb, text, reader, out);
+    compat_slow_load::check_tours(kb, text, reader, out);
+    compat_too_many_cultural_keys::check_overwritten(kb, text, reader, out);
     arm_blanks_are_errors(kb, text, reader, out);
 }
 
