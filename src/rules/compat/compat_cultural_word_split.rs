@@ -72,11 +72,11 @@ pub fn check(location: &Location<'_>, reader: Reader, out: &mut Diagnostics) {
         if pieces == [*word] || (index == 0 && pieces.len() == 1) {
             continue;
         }
-        let consequence = if split >= CRASHING_SPLIT_WORDS {
+        let consequence = if crashes(location, reader) && split >= CRASHING_SPLIT_WORDS {
             " Two such words overflow its buffer of two words: the reader crashes while the robot starts.".to_string()
         } else if crashes(location, reader) {
             format!(
-                " With the others that makes {loaded} words, twice what its buffer holds ({WORD_BUFFER}) or more: the reader crashes while the robot starts."
+                " With the others that makes {loaded} words, more than its buffer holds ({WORD_BUFFER}): the reader crashes while the robot starts."
             )
         } else if loaded > WORD_BUFFER {
             format!(

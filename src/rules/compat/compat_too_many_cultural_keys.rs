@@ -10,10 +10,6 @@ use crate::syntax::{self, Span};
 /// The robot's buffer holds this many culturalKnowledge words per location.
 pub const MAX_CULTURAL_KEYS: usize = 2;
 
-/// From this many words loaded, the ones written past the buffer reach far enough to crash
-/// the reader (SPEC §2.12: two words that it splits in two, four words in all).
-const CRASHING_WORDS: usize = 2 * MAX_CULTURAL_KEYS;
-
 /// How many words the reader loads from a culturalKnowledge value: one at each run of
 /// letters and digits, so `Bow's` counts twice.
 pub fn loaded_words(value: &str) -> usize {
@@ -22,13 +18,18 @@ pub fn loaded_words(value: &str) -> usize {
         .sum()
 }
 
-/// Whether `reader` crashes on `location`'s culturalKnowledge words (the same number of
-/// words crashes it, written apart or split by the reader).
+/// Whether `reader` crashes on `location`'s culturalKnowledge words (written apart or
+/// split by the reader). A word past the buffer's two is written over what follows it,
+/// and the reader crashes the next time it updates the location, which each of its other
+/// lines makes it do, before or after (measured on the real readers: a location of that
+/// one line alone loads, its memory corrupt).
 pub fn crashes(location: &Location<'_>, reader: Reader) -> bool {
+    let other_lines = location.given & !(1 << Key::CulturalKnowledge.order()) != 0;
     reader.reads(Key::CulturalKnowledge)
+        && other_lines
         && location
             .cultural_knowledge()
-            .is_some_and(|words| loaded_words(words.value) >= CRASHING_WORDS)
+            .is_some_and(|words| loaded_words(words.value) > MAX_CULTURAL_KEYS)
 }
 
 declare_rule! {
@@ -38,8 +39,9 @@ declare_rule! {
     /// ## Why it matters
     /// The robot's reader has room for 2 culture-knowledge keys per location and writes
     /// the rest past the end of that buffer, over the memory that follows: a third word
-    /// corrupts the location's count of words, and from four words (counted as the reader
-    /// counts them, `compat-cultural-word-split`) the reader crashes while the robot starts.
+    /// (counted as the reader counts them, `compat-cultural-word-split`) corrupts the
+    /// location's words, and the reader crashes while the robot starts as soon as another
+    /// line of the location, before or after, makes it update the location.
     ///
     /// ## Example
     /// ```text
