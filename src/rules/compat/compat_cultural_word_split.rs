@@ -66,15 +66,16 @@ pub fn check(location: &Location<'_>, reader: Reader, out: &mut Diagnostics) {
     let tokens: Vec<_> = syntax::tokens(words.value, words.span.start as usize).collect();
     let loaded = loaded_words(words.value);
     let split = split_words(words.value);
+    let crashing = crashes(location, reader);
     for (index, (span, word)) in tokens.iter().enumerate() {
         let pieces = word_pieces(word);
         // A first word that only loses leading symbols is `compat-leading-symbol`'s.
         if pieces == [*word] || (index == 0 && pieces.len() == 1) {
             continue;
         }
-        let consequence = if crashes(location, reader) && split >= CRASHING_SPLIT_WORDS {
+        let consequence = if crashing && split >= CRASHING_SPLIT_WORDS {
             " Two such words overflow its buffer of two words: the reader crashes while the robot starts.".to_string()
-        } else if crashes(location, reader) {
+        } else if crashing {
             format!(
                 " With the others that makes {loaded} words, more than its buffer holds ({WORD_BUFFER}): the reader crashes while the robot starts."
             )

@@ -12,8 +12,8 @@ declare_rule! {
     /// chosen version of the robot's reader: from 90% of the depth at which it was measured
     /// to crash (about 5,570 for `2025-06` and `d5.4.2`, 3,750 for `2026-02`, 1,695 for
     /// `2026-03`, whose records also hold the arm, and 1,950 for `2026-04`), since the exact
-    /// point depends on the build. `ekb fix`
-    /// writes the locations in an order that builds a balanced tree.
+    /// point depends on the build. `ekb fix` writes the locations in an order that builds a
+    /// balanced tree.
     ///
     /// ## Why it matters
     /// The reader keeps locations in an unbalanced binary search tree and recurses on it.
