@@ -147,12 +147,13 @@ impl Checked<'_> {
         sort_by_position(&mut self.diagnostics);
     }
 
-    /// The findings that say the reader crashes on the file (a tree too deep, four or more
-    /// culturalKnowledge words in one location as the reader counts them).
+    /// The findings that say the reader crashes on the file (a tree too deep, more
+    /// culturalKnowledge words in one location than the reader holds, as it counts them,
+    /// with another line of that location).
     pub fn reader_crashes(&self) -> Vec<Diagnostic> {
         use rules::compat::{
-            compat_cultural_word_split as split, compat_reader_crash as crash,
-            compat_too_many_cultural_keys as too_many,
+            compat_cultural_word_split as split, compat_indented_line as indented,
+            compat_reader_crash as crash, compat_too_many_cultural_keys as too_many,
         };
         let crashes_at = |id: Option<u32>| {
             id.and_then(|id| self.kb.location(id))
@@ -167,6 +168,13 @@ impl Checked<'_> {
             .filter(|d| {
                 std::ptr::eq(d.rule, &crash::COMPAT_READER_CRASH)
                     || (about_words(d.rule) && crashes_at(d.location_id))
+                    || (std::ptr::eq(d.rule, &indented::COMPAT_INDENTED_LINE)
+                        && indented::crashes_on_words_of(
+                            &self.kb,
+                            d.location_id,
+                            d.span.start as usize,
+                            self.reader,
+                        ))
             })
             .cloned()
             .collect()

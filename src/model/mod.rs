@@ -128,6 +128,11 @@ impl<'a> Location<'a> {
         }
     }
 
+    /// The file's text, which this location's values are spans of.
+    pub fn file_text(&self) -> &'a str {
+        self.text.0
+    }
+
     /// Whether the file has a line with this key for this location (even a malformed one).
     pub fn has_line(&self, key: Key) -> bool {
         self.given & (1 << key.order()) != 0

@@ -318,3 +318,64 @@ fn culture_words_past_two_crash_the_reader_when_the_location_has_another_line() 
         check.stdout
     );
 }
+
+#[test]
+fn an_indented_culture_line_of_two_words_crashes_the_reader_with_another_line() {
+    let dir = tempfile::tempdir().unwrap();
+    // Indented, the reader counts the key's length from the line's start and reads the id
+    // as a word: `1 Bow Nod`, three words for its buffer of two (measured on the real
+    // readers: with the pose line it crashes, alone it loads the three).
+    let path = dir.path().join("indented.dat");
+    std::fs::write(
+        &path,
+        "robotLocationPose 1 1.0 2.0 90\n  culturalKnowledge 1 Bow Nod\ntourSpecification 1 1\n",
+    )
+    .unwrap();
+    let path = path.to_str().unwrap();
+    let out = run(&["export", "--as-loaded", "--reader", "2025-06", path]);
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    assert!(
+        out.stderr.contains(":2:1: error[compat-indented-line]")
+            && out.stderr.contains("loads the words `1 Bow Nod`")
+            && out.stderr.contains("and crashes while the robot starts")
+            && out.stderr.contains("reader 2025-06 crashes on"),
+        "{}",
+        out.stderr
+    );
+    let alone = dir.path().join("alone.dat");
+    std::fs::write(
+        &alone,
+        "  culturalKnowledge 1 Bow Nod\ntourSpecification 1 1\n",
+    )
+    .unwrap();
+    let alone = alone.to_str().unwrap();
+    let out = run(&["export", "--as-loaded", "--reader", "2025-06", alone]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert_eq!(
+        json(&out.stdout)["locations"][0]["culturalKnowledge"],
+        serde_json::json!(["1", "Bow", "Nod"])
+    );
+    let check = run(&["check", "--reader", "2025-06", "--format", "concise", alone]);
+    assert!(
+        check.stdout.contains(":1:1: error[compat-indented-line]")
+            && check.stdout.contains("it writes past its end")
+            && !check.stdout.contains("crashes"),
+        "{}",
+        check.stdout
+    );
+    // One word indented loads two, which the buffer holds: no crash.
+    let one_word = dir.path().join("one.dat");
+    std::fs::write(
+        &one_word,
+        "robotLocationPose 1 1.0 2.0 90\n  culturalKnowledge 1 Bow\ntourSpecification 1 1\n",
+    )
+    .unwrap();
+    let out = run(&[
+        "export",
+        "--as-loaded",
+        "--reader",
+        "2025-06",
+        one_word.to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+}

@@ -1,9 +1,10 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::model::build::leading_id;
-use crate::model::{Key, KnowledgeBase};
+use crate::model::{Key, KnowledgeBase, Value};
 use crate::reader::line::{LineRead, LoadedValue};
 use crate::reader::{self, Reader};
+use crate::rules::compat::compat_too_many_cultural_keys::{crashes, MAX_CULTURAL_KEYS};
 use crate::rules::{declare_rule, excerpt};
 use crate::syntax::{self, Body, Span, BOM};
 
@@ -14,7 +15,9 @@ declare_rule! {
     /// ## Why it matters
     /// The robot's reader finds a value by counting from the start of the line as if the key
     /// stood there. Indented, it reads from the wrong place: the id becomes the first number
-    /// or the first word of the text, and an indented tour is not read at all.
+    /// or the first word of the text, and an indented tour is not read at all. On an indented
+    /// `culturalKnowledge` line the id is a third word for a buffer of two: with another line
+    /// of that location, the reader crashes.
     ///
     /// ## Example
     /// ```text
@@ -60,12 +63,17 @@ pub fn check(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagn
             0
         };
         let indentation = Span::new(span.start as usize + bom, key_span.start as usize);
+        let crash = if crashes_on_words_of(kb, id, span.start as usize, reader) {
+            ", and crashes while the robot starts"
+        } else {
+            ""
+        };
         out.push_with(&COMPAT_INDENTED_LINE, || {
             Diagnostic::new(
                 &COMPAT_INDENTED_LINE,
                 indentation,
                 format!(
-                    "`{}` is indented: the robot's reader counts from the start of the line and {}",
+                    "`{}` is indented: the robot's reader counts from the start of the line and {}{crash}",
                     key.name(),
                     what_loads(text, span, reader)
                 ),
@@ -75,6 +83,27 @@ pub fn check(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagn
             .with_fix("remove the indentation", vec![Edit::delete(indentation)])
         });
     }
+}
+
+/// Whether the indented line whose indentation starts at `indentation` holds location
+/// `id`'s culturalKnowledge words (not overwritten by a later line) and `reader` crashes on
+/// them: the line's id counts as a word.
+pub fn crashes_on_words_of(
+    kb: &KnowledgeBase<'_>,
+    id: Option<u32>,
+    indentation: usize,
+    reader: Reader,
+) -> bool {
+    id.and_then(|id| kb.location(id)).is_some_and(|location| {
+        let on_this_line = |words: Value<&str>| {
+            let before = location
+                .file_text()
+                .as_bytes()
+                .get(indentation..words.span.start as usize);
+            before.is_some_and(|before| memchr::memchr(b'\n', before).is_none())
+        };
+        location.cultural_knowledge().is_some_and(on_this_line) && crashes(location, reader)
+    })
 }
 
 /// What `reader` loads from the line at `span`, in words.
@@ -91,8 +120,13 @@ fn what_loads(text: &str, span: Span, reader: Reader) -> String {
             LoadedValue::Numbers([a, b, c]) => format!("loads the numbers `{a} {b} {c}`"),
             LoadedValue::Text(span) => format!("loads the text \"{}\"", loaded(&span)),
             LoadedValue::Words(words) => {
+                let overflow = if words.len() > MAX_CULTURAL_KEYS {
+                    format!(", more than its buffer of {MAX_CULTURAL_KEYS} holds: it writes past its end")
+                } else {
+                    String::new()
+                };
                 let words: Vec<String> = words.iter().map(loaded).collect();
-                format!("loads the words `{}`", words.join(" "))
+                format!("loads the words `{}`{overflow}", words.join(" "))
             }
             LoadedValue::Undefined => "loads whatever its buffer held before".to_string(),
         },

@@ -18,18 +18,35 @@ pub fn loaded_words(value: &str) -> usize {
         .sum()
 }
 
-/// Whether `reader` crashes on `location`'s culturalKnowledge words (written apart or
-/// split by the reader). A word past the buffer's two is written over what follows it,
-/// and the reader crashes the next time it updates the location, which each of its other
-/// lines makes it do, before or after (measured on the real readers: a location of that
-/// one line alone loads, its memory corrupt).
+/// Whether `reader` crashes on `location`'s culturalKnowledge words, counted as the reader
+/// reads their line (written apart, split by the reader, or an indented line's id). A word
+/// past the buffer's two is written over what follows it, and the reader crashes the next
+/// time it updates the location, which each of its other lines makes it do, before or after
+/// (measured on the real readers: a location of that one line alone loads, its memory
+/// corrupt).
 pub fn crashes(location: &Location<'_>, reader: Reader) -> bool {
     let other_lines = location.given & !(1 << Key::CulturalKnowledge.order()) != 0;
     reader.reads(Key::CulturalKnowledge)
         && other_lines
-        && location
-            .cultural_knowledge()
-            .is_some_and(|words| loaded_words(words.value) > MAX_CULTURAL_KEYS)
+        && location.cultural_knowledge().is_some_and(|words| {
+            let loaded = match read_line_at(location.file_text(), words.span.start, reader) {
+                Some(LineRead::Value {
+                    value: LoadedValue::Words(loaded),
+                    ..
+                }) => loaded.len(),
+                _ => 0,
+            };
+            loaded > MAX_CULTURAL_KEYS
+        })
+}
+
+/// What `reader` reads from the line of `text` that holds byte `at` (its first `fgets`
+/// call's worth).
+fn read_line_at(text: &str, at: u32, reader: Reader) -> Option<LineRead> {
+    let start =
+        memchr::memrchr(b'\n', &text.as_bytes()[..at as usize]).map_or(0, |newline| newline + 1);
+    let (_, piece) = chunks(&text.as_bytes()[start..], reader.line_buffer()).next()?;
+    Some(line::read(piece, start, reader))
 }
 
 declare_rule! {
@@ -116,17 +133,11 @@ pub fn check_overwritten(
         if kept.get(first_kept).is_some_and(|&start| start <= args.end) {
             continue;
         }
-        let start = memchr::memrchr(b'\n', &text.as_bytes()[..key.start as usize])
-            .map_or(0, |newline| newline + 1);
-        let Some((_, piece)) = chunks(&text.as_bytes()[start..], reader.line_buffer()).next()
-        else {
-            continue;
-        };
-        let LineRead::Value {
+        let Some(LineRead::Value {
             id,
             value: LoadedValue::Words(words),
             ..
-        } = line::read(piece, start, reader)
+        }) = read_line_at(text, key.start, reader)
         else {
             continue;
         };
