@@ -144,6 +144,9 @@ rule_tests! {
     mission_unknown_attribute: "mission-unknown-attribute" => [
         (MISSION, 5, 16), (MISSION, 6, 14), (MISSION, 9, 46)
     ];
+    mission_bad_port_value: "mission-bad-port-value" => [
+        (MISSION, 5, 43), (MISSION, 8, 26), (MISSION, 11, 27), (MISSION, 12, 27), (MISSION, 13, 22)
+    ];
     mission_unknown_tree: "mission-unknown-tree" => [(MISSION, 2, 46), (MISSION, 5, 20), (MISSION, 6, 8)];
     mission_missing_format: "mission-missing-format" => [(MISSION, 2, 2)];
     mission_unreachable_tree: "mission-unreachable-tree" => [(MISSION, 6, 21)];
@@ -367,6 +370,7 @@ fn each_kind_of_tree_that_behaviortree_cpp_refuses_is_an_error() {
         ("<BehaviorTree ID=\"A\"><SubTree ID=\"B\"/></BehaviorTree>", "mission-unknown-tree"),
         ("<BehaviorTree ID=\"A\"><Navigate goal=\"4\"/></BehaviorTree>", "mission-unknown-attribute"),
         ("<BehaviorTree ID=\"A\"><Delay msec=\"4\"><Navigate/></Delay></BehaviorTree>", "mission-unknown-attribute"),
+        ("<BehaviorTree ID=\"A\"><RetryUntilSuccessful num_attempts=\"three\"><Navigate/></RetryUntilSuccessful></BehaviorTree>", "mission-bad-port-value"),
     ];
     for (xml, rule) in cases {
         let text = if xml.starts_with("<BehaviorTree") {

@@ -394,6 +394,7 @@ fn the_catalogue_is_the_specified_one() {
         ("mission-unknown-node", Error, false),
         ("mission-bad-children", Error, false),
         ("mission-unknown-attribute", Error, false),
+        ("mission-bad-port-value", Error, false),
         ("mission-unknown-tree", Error, false),
         ("mission-invalid-name", Error, false),
         ("mission-language-invalid", Error, false),

@@ -4,6 +4,7 @@
 //! - [`xml`]: the mission's XML, with the place of every element and attribute;
 //! - [`tree`]: its behaviour trees, which one runs, what each node element is;
 //! - [`catalogue`]: the nodes BehaviorTree.CPP and the robot know;
+//! - [`ports`]: the built-in nodes' typed ports, as BehaviorTree.CPP converts them;
 //! - [`culture`]: the culture knowledge base and its types file, as the robot reads them;
 //! - [`setup`]: where the robot's configuration folder says the files are;
 //! - [`mod@check`]: the files checked together (and each alone, for `ekb check`);
@@ -13,6 +14,7 @@ pub mod catalogue;
 pub mod check;
 pub mod culture;
 pub mod outline;
+pub mod ports;
 pub mod setup;
 pub mod tree;
 pub mod walk;

@@ -11,6 +11,7 @@
 use serde::Serialize;
 
 use super::culture::{Held, PhraseBook};
+use super::ports;
 use super::tree::{self, Mission};
 use super::xml::Element;
 use crate::model::{Arm, KnowledgeBase, Language, Phase};
@@ -293,8 +294,8 @@ impl Walker<'_, '_> {
                 };
                 let times = node
                     .value(port)
-                    .map_or(Ok(1), |v| v.trim().parse::<i64>())
-                    .map_err(|_| halt(node, &format!("its {port} is not a number")))?;
+                    .map_or(Some(1), ports::integer)
+                    .ok_or_else(|| halt(node, &format!("its {port} is not a number")))?;
                 let until = if model.id == "Repeat" {
                     Status::Failure
                 } else {

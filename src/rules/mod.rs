@@ -176,6 +176,7 @@ pub static ALL: &[&Rule] = &[
     &mission::mission_unknown_node::MISSION_UNKNOWN_NODE,
     &mission::mission_bad_children::MISSION_BAD_CHILDREN,
     &mission::mission_unknown_attribute::MISSION_UNKNOWN_ATTRIBUTE,
+    &mission::mission_bad_port_value::MISSION_BAD_PORT_VALUE,
     &mission::mission_unknown_tree::MISSION_UNKNOWN_TREE,
     &mission::mission_invalid_name::MISSION_INVALID_NAME,
     &mission::mission_language_invalid::MISSION_LANGUAGE_INVALID,

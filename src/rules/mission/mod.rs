@@ -3,6 +3,7 @@
 
 pub mod cultural_knowledge_unknown_key;
 pub mod mission_bad_children;
+pub mod mission_bad_port_value;
 pub mod mission_invalid_name;
 pub mod mission_invalid_xml;
 pub mod mission_language_invalid;
@@ -33,6 +34,7 @@ pub fn check_tree(mission: &Mission, out: &mut Diagnostics) {
                     mission_unknown_node::check_v1_1_only(node, model, out);
                     mission_bad_children::check(node, model, out);
                     mission_unknown_attribute::check(node, model, out);
+                    mission_bad_port_value::check(node, model, out);
                     mission_invalid_name::check(node, model, out);
                 }
             }
