@@ -7,7 +7,7 @@
 use std::path::{Path, PathBuf};
 
 use ekb::mission::check::{check_together, MissionSources};
-use ekb::mission::culture::{CultureKnowledgeBase, Held, ValueType, ValueTypes};
+use ekb::mission::culture::{CultureKnowledgeBase, Held, ValueType, ValueTypes, LINE_BUFFER};
 use ekb::rules::selection::RuleSet;
 use ekb::source::LineIndex;
 use ekb::SourceFile;
@@ -29,8 +29,8 @@ fn read(name: &str, file: &str) -> String {
 /// What the robot holds for `key` in the case `name`: `Text`, `Number`, or the variant.
 fn held(name: &str, key: &str) -> String {
     let (types, culture) = (read(name, TYPES), read(name, CULTURE));
-    let types = ValueTypes::parse(&types);
-    let culture = CultureKnowledgeBase::parse(&culture);
+    let types = ValueTypes::parse(&types, LINE_BUFFER);
+    let culture = CultureKnowledgeBase::parse(&culture, LINE_BUFFER);
     match culture.held(&types, key) {
         Held::Text(text, _) => format!("text {text:?}"),
         Held::Number(number, _) => format!("number {number}"),
@@ -87,8 +87,14 @@ fn a_types_file_that_declares_nothing_crashes_the_robot() {
     let found = findings("empty-types", "culture-unknown-type");
     assert_eq!(places(&found), [(TYPES, 1, 1)]);
     assert!(found[0].3.contains("crashes"), "{}", found[0].3);
-    assert_eq!(ValueTypes::parse("").crash.map(|s| s.start), Some(0));
-    assert_eq!(ValueTypes::parse("phraseLanguage WORD\n").crash, None);
+    assert_eq!(
+        ValueTypes::parse("", LINE_BUFFER).crash.map(|s| s.start),
+        Some(0)
+    );
+    assert_eq!(
+        ValueTypes::parse("phraseLanguage WORD\n", LINE_BUFFER).crash,
+        None
+    );
 }
 
 #[test]
@@ -97,7 +103,7 @@ fn a_types_line_without_a_type_takes_the_type_of_the_line_before() {
         held("type-borrowed", "utilityPhraseEnglish2"),
         "text \"Goodbye for now\""
     );
-    let types = ValueTypes::parse("a WORD\nb\nc Phrase\nd\n");
+    let types = ValueTypes::parse("a WORD\nb\nc Phrase\nd\n", LINE_BUFFER);
     assert_eq!(types.type_of("b"), Some(ValueType::Word));
     // An unknown type declares nothing, and a line after it borrows nothing.
     assert_eq!(types.type_of("c"), None);
@@ -144,8 +150,8 @@ fn a_phrase_without_a_letter_is_copied_from_the_line_buffer_and_indentation_shif
     assert_eq!(places(&found), [(CULTURE, 2, 1), (CULTURE, 3, 3)]);
     assert!(found[1].3.contains("h3 Goodbye"), "{}", found[1].3);
     // A copy that starts past everything the file wrote is unknown, not empty.
-    let types = ValueTypes::parse("utilityPhraseEnglish1 PHRASE\n");
-    let culture = CultureKnowledgeBase::parse("utilityPhraseEnglish1 ...\n");
+    let types = ValueTypes::parse("utilityPhraseEnglish1 PHRASE\n", LINE_BUFFER);
+    let culture = CultureKnowledgeBase::parse("utilityPhraseEnglish1 ...\n", LINE_BUFFER);
     assert!(matches!(
         culture.held(&types, "utilityPhraseEnglish1"),
         Held::Unreadable(_)

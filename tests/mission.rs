@@ -78,6 +78,7 @@ fn check_set(files: &[SourceFile; 4]) -> Vec<Finding> {
         culture_kb: Some(&files[1]),
         culture_types: Some(&files[2]),
         kb: Some((&files[3], &options)),
+        reader: None,
     };
     locate(&check_together(&sources, &RuleSet::default()))
 }
@@ -181,6 +182,7 @@ fn a_culture_line_cut_inside_a_character_is_reported_at_that_character() {
         culture_kb: Some(&culture),
         culture_types: None,
         kb: None,
+        reader: None,
     };
     let found = locate(&check_together(&sources, &RuleSet::default()));
     let cut: Vec<(u32, u32, &str)> = found
@@ -537,8 +539,8 @@ mod any_input {
                 return Ok(());
             };
             let kb = ekb::check(&files[3], &Options::default());
-            let culture = ekb::mission::culture::CultureKnowledgeBase::parse(files[1].text());
-            let types = ekb::mission::culture::ValueTypes::parse(files[2].text());
+            let culture = ekb::mission::culture::CultureKnowledgeBase::parse(files[1].text(), ekb::mission::culture::LINE_BUFFER);
+            let types = ekb::mission::culture::ValueTypes::parse(files[2].text(), ekb::mission::culture::LINE_BUFFER);
             let phrases = PhraseBook {
                 culture: Some((&culture, &types)),
                 language: Some(ekb::model::Language::English),
@@ -549,4 +551,33 @@ mod any_input {
             prop_assert!(walked.ticks <= walk::MAX_TICKS + 1);
         }
     }
+}
+
+#[test]
+fn the_culture_reader_of_2026_02_holds_lines_of_up_to_299_bytes() {
+    // 250 bytes: cut by `2025-06`'s reader (200), whole in `2026-02`'s copy (300).
+    let culture = SourceFile::from_bytes(
+        "culture.dat",
+        format!(
+            "phraseLanguage English\nutilityPhraseEnglish1 {}\nutilityPhraseEnglish2 Hi\n",
+            "a".repeat(227)
+        )
+        .into_bytes(),
+    );
+    let too_long = |reader: Option<ekb::reader::Reader>| {
+        let options = Options {
+            reader,
+            ..Options::default()
+        };
+        let checked =
+            ekb::mission::check::check_file(&culture, &options, &RuleSet::default(), None);
+        locate(&[checked])
+            .into_iter()
+            .filter(|f| f.rule == "culture-line-too-long")
+            .map(|f| (f.line, f.column))
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(too_long(None), [(2, 200)]);
+    assert_eq!(too_long(Some(ekb::reader::Reader::V2025_06)), [(2, 200)]);
+    assert_eq!(too_long(Some(ekb::reader::Reader::V2026_02)), []);
 }

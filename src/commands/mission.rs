@@ -13,6 +13,7 @@ use crate::mission::{outline, robot_language, walk, LANGUAGE_KEY};
 use crate::model::build::Options;
 use crate::model::Language;
 use crate::present::language;
+use crate::reader::Reader;
 use crate::render::escape::{escape, escape_lines};
 use crate::render::{safe_json as json, Format};
 use crate::rules::selection::RuleSet;
@@ -132,6 +133,8 @@ struct Read {
     culture_kb: Option<SourceFile>,
     culture_types: Option<SourceFile>,
     kb: Option<(SourceFile, Options)>,
+    /// The robot's reader that the settings name for the knowledge bases, if any.
+    reader: Option<Reader>,
 }
 
 impl Read {
@@ -147,7 +150,15 @@ impl Read {
             Some(path) => Some((context.read(path)?, context.read_options(path)?)),
             None => None,
         };
+        // The culture reader is the environment reader's robot's: named by the settings
+        // that apply to the environment knowledge base, else to the culture knowledge base.
+        let reader = match (&kb, &paths.culture_kb) {
+            (Some((_, options)), _) => options.reader,
+            (None, Some(path)) => context.read_options(path)?.reader,
+            (None, None) => None,
+        };
         Ok(Read {
+            reader,
             mission: read(&paths.mission)?,
             culture_kb: read(&paths.culture_kb)?,
             culture_types: read(&paths.culture_types)?,
@@ -162,6 +173,7 @@ impl Read {
             culture_kb: self.culture_kb.as_ref(),
             culture_types: self.culture_types.as_ref(),
             kb: self.kb.as_ref().map(|(source, options)| (source, options)),
+            reader: self.reader,
         }
     }
 
@@ -215,9 +227,10 @@ struct Culture<'s> {
 
 impl<'s> Culture<'s> {
     fn of(read: &'s Read) -> Option<Culture<'s>> {
+        let line_buffer = read.sources().culture_line_buffer();
         Some(Culture {
-            kb: CultureKnowledgeBase::parse(read.culture_kb.as_ref()?.text()),
-            types: ValueTypes::parse(read.culture_types.as_ref()?.text()),
+            kb: CultureKnowledgeBase::parse(read.culture_kb.as_ref()?.text(), line_buffer),
+            types: ValueTypes::parse(read.culture_types.as_ref()?.text(), line_buffer),
         })
     }
 

@@ -7,7 +7,7 @@ use lsp_types::{InitializeParams, Uri};
 
 use crate::commands::Context;
 use crate::config::{self, Config};
-use crate::mission::culture::ValueTypes;
+use crate::mission::culture::{self, ValueTypes};
 use crate::mission::setup::{self, MissionPaths};
 use crate::model::build::Options;
 use crate::rules::selection::{Choice, RuleSet};
@@ -90,7 +90,7 @@ impl Workspace {
             .and_then(|paths| paths.culture_types)
             .and_then(|path| SourceFile::read(&path).ok());
         types.map_or_else(Vec::new, |types| {
-            ValueTypes::parse(types.text())
+            ValueTypes::parse(types.text(), culture::LINE_BUFFER)
                 .keys()
                 .map(str::to_string)
                 .collect()

@@ -24,10 +24,23 @@ pub struct MissionSources<'s> {
     pub culture_kb: Option<&'s SourceFile>,
     pub culture_types: Option<&'s SourceFile>,
     pub kb: Option<(&'s SourceFile, &'s Options)>,
+    /// The robot's reader that the settings name, if any: its culture reader's line buffer
+    /// ([`Reader::culture_line_buffer`]; `2025-06`'s when none is named).
+    pub reader: Option<Reader>,
+}
+
+impl MissionSources<'_> {
+    /// The line buffer that the robot's culture reader reads both culture files with.
+    pub fn culture_line_buffer(&self) -> usize {
+        self.reader
+            .unwrap_or(Reader::V2025_06)
+            .culture_line_buffer()
+    }
 }
 
 /// Checks the files given, each alone and against the others: one checked file each.
 pub fn check_together<'s>(sources: &MissionSources<'s>, rules: &RuleSet) -> Vec<Checked<'s>> {
+    let line_buffer = sources.culture_line_buffer();
     let mut mission_out = Diagnostics::default();
     let mission = sources.mission.and_then(|source| {
         invalid_utf8::check(source, &mut mission_out);
@@ -46,10 +59,10 @@ pub fn check_together<'s>(sources: &MissionSources<'s>, rules: &RuleSet) -> Vec<
     let mut types_out = Diagnostics::default();
     let types = sources.culture_types.map(|source| {
         invalid_utf8::check(source, &mut types_out);
-        let types = ValueTypes::parse(source.text());
+        let types = ValueTypes::parse(source.text(), line_buffer);
         culture_unknown_type::check(&types, &mut types_out);
         culture_duplicate_key::check(&types.entries, Wins::Earlier, &mut types_out);
-        culture_line_too_long::check(source.text(), &mut types_out);
+        culture_line_too_long::check(source.text(), line_buffer, &mut types_out);
         culture_word_too_long::check(&types.entries, &mut types_out);
         types
     });
@@ -57,12 +70,12 @@ pub fn check_together<'s>(sources: &MissionSources<'s>, rules: &RuleSet) -> Vec<
     let mut culture_out = Diagnostics::default();
     let culture = sources
         .culture_kb
-        .map(|source| CultureKnowledgeBase::parse(source.text()));
+        .map(|source| CultureKnowledgeBase::parse(source.text(), line_buffer));
     let mut language = None;
     if let (Some(source), Some(culture)) = (sources.culture_kb, &culture) {
         invalid_utf8::check(source, &mut culture_out);
         culture_duplicate_key::check(&culture.entries, Wins::Later, &mut culture_out);
-        culture_line_too_long::check(source.text(), &mut culture_out);
+        culture_line_too_long::check(source.text(), line_buffer, &mut culture_out);
         culture_crlf::check(source.text(), &mut culture_out);
         culture_word_too_long::check(&culture.entries, &mut culture_out);
         if let Some(types) = &types {
@@ -198,10 +211,12 @@ pub fn check_file<'s>(
         },
         FileKind::CultureKnowledgeBase => MissionSources {
             culture_kb: Some(source),
+            reader: options.reader,
             ..MissionSources::default()
         },
         FileKind::CultureValueTypes => MissionSources {
             culture_types: Some(source),
+            reader: options.reader,
             ..MissionSources::default()
         },
     };

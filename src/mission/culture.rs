@@ -3,7 +3,8 @@
 //! key, and the knowledge base (`cultureKnowledgeBaseInput.dat`, `key value` lines) gives
 //! values, each read as its key's type says.
 //!
-//! Both are read with `fgets` and a 200-byte buffer: a longer line is cut, and its rest
+//! Both are read with `fgets` and a 200-byte buffer (300 in `2026-02`'s copy,
+//! [`crate::reader::Reader::culture_line_buffer`]): a longer line is cut, and its rest
 //! read as a line of its own. Every line, blank lines and comments included, is scanned
 //! with `sscanf(" %s %s")` into a key and a second word that are not cleared between
 //! lines: a line with one word keeps the second word of an earlier line, and a blank line
@@ -26,7 +27,8 @@ use std::collections::HashMap;
 use crate::reader::chunks;
 use crate::syntax::{floor_char_boundary, Span};
 
-/// The robot reads both files with this buffer (`STRING_LENGTH`).
+/// The buffer (`STRING_LENGTH`) of `2025-06`'s culture reader, which `ekb` reads both files
+/// with unless it is told another reader's.
 pub const LINE_BUFFER: usize = 200;
 
 /// The robot copies each word into a buffer of this many bytes (`KEY_LENGTH`): a word
@@ -98,13 +100,13 @@ struct Line<'a> {
     entry: Option<usize>,
 }
 
-/// Every line of `text` as `fgets` with [`LINE_BUFFER`] returns it, and the entries: the
-/// lines with a key that is not a comment (`#`).
-fn read_lines(text: &str) -> (Vec<Line<'_>>, Vec<Entry<'_>>) {
+/// Every line of `text` as `fgets` with a buffer of `line_buffer` bytes returns it, and the
+/// entries: the lines with a key that is not a comment (`#`).
+fn read_lines(text: &str, line_buffer: usize) -> (Vec<Line<'_>>, Vec<Entry<'_>>) {
     let mut lines = Vec::new();
     let mut entries = Vec::new();
     let mut continuation = false;
-    for (start, piece) in chunks(text.as_bytes(), LINE_BUFFER) {
+    for (start, piece) in chunks(text.as_bytes(), line_buffer) {
         let is_continuation = continuation;
         continuation = !piece.ends_with(b"\n");
         // A cut may fall inside a character: take the piece's whole characters.
@@ -153,7 +155,7 @@ fn read_lines(text: &str) -> (Vec<Line<'_>>, Vec<Entry<'_>>) {
 /// The lines of a file of `key value` lines, as `fgets` with [`LINE_BUFFER`] returns them.
 /// Blank lines and comments (`#`) are left out.
 pub fn entries(text: &str) -> Vec<Entry<'_>> {
-    read_lines(text).1
+    read_lines(text, LINE_BUFFER).1
 }
 
 /// The words of `line` split at C's blanks (`isspace`), with their spans (`line` starts at
@@ -224,8 +226,9 @@ pub struct ValueTypes<'a> {
 }
 
 impl<'a> ValueTypes<'a> {
-    pub fn parse(text: &'a str) -> ValueTypes<'a> {
-        let (lines, entries) = read_lines(text);
+    /// The types file as a reader with a buffer of `line_buffer` bytes reads it.
+    pub fn parse(text: &'a str, line_buffer: usize) -> ValueTypes<'a> {
+        let (lines, entries) = read_lines(text, line_buffer);
         let mut declared = HashMap::new();
         // The robot's tree holds a node once any key is declared, a comment's included.
         let mut any_declared = false;
@@ -368,10 +371,10 @@ struct LineBuffer {
 }
 
 impl LineBuffer {
-    fn new() -> LineBuffer {
+    fn new(size: usize) -> LineBuffer {
         LineBuffer {
-            bytes: vec![0; LINE_BUFFER],
-            from: vec![0; LINE_BUFFER],
+            bytes: vec![0; size],
+            from: vec![0; size],
             written: 0,
         }
     }
@@ -399,9 +402,10 @@ impl LineBuffer {
 }
 
 impl<'a> CultureKnowledgeBase<'a> {
-    pub fn parse(text: &'a str) -> CultureKnowledgeBase<'a> {
-        let (lines, entries) = read_lines(text);
-        let mut buffer = LineBuffer::new();
+    /// The knowledge base as a reader with a buffer of `line_buffer` bytes reads it.
+    pub fn parse(text: &'a str, line_buffer: usize) -> CultureKnowledgeBase<'a> {
+        let (lines, entries) = read_lines(text, line_buffer);
+        let mut buffer = LineBuffer::new(line_buffer);
         let mut readings: HashMap<&'a str, Vec<Reading<'a>>> = HashMap::new();
         for (line, key, word) in scanned(&lines) {
             buffer.read(line);
@@ -570,10 +574,10 @@ mod tests {
 
     #[test]
     fn values_are_read_as_their_types_say() {
-        let types = ValueTypes::parse(TYPES);
+        let types = ValueTypes::parse(TYPES, LINE_BUFFER);
         let text = "phraseLanguage   English \nutilityPhraseEnglish1\t \"Hello there\" \n\
                     pauseDuration 2.5\nutilityPhraseIsiZulu1 Sawubona\nstray 1\n";
-        let kb = CultureKnowledgeBase::parse(text);
+        let kb = CultureKnowledgeBase::parse(text, LINE_BUFFER);
         assert_eq!(kb.held(&types, "phraseLanguage").text(), Some("English"));
         // The quote is skipped, the trailing blank kept, the newline dropped.
         assert_eq!(
@@ -590,13 +594,13 @@ mod tests {
 
     #[test]
     fn a_phrase_on_the_last_line_without_a_newline_loses_its_last_letter() {
-        let types = ValueTypes::parse(TYPES);
-        let kb = CultureKnowledgeBase::parse("utilityPhraseEnglish1 Goodbye");
+        let types = ValueTypes::parse(TYPES, LINE_BUFFER);
+        let kb = CultureKnowledgeBase::parse("utilityPhraseEnglish1 Goodbye", LINE_BUFFER);
         assert_eq!(
             kb.held(&types, "utilityPhraseEnglish1").text(),
             Some("Goodby")
         );
-        let crlf = CultureKnowledgeBase::parse("utilityPhraseEnglish1 Goodbye\r\n");
+        let crlf = CultureKnowledgeBase::parse("utilityPhraseEnglish1 Goodbye\r\n", LINE_BUFFER);
         assert_eq!(
             crlf.held(&types, "utilityPhraseEnglish1").text(),
             Some("Goodbye\r")
@@ -605,18 +609,20 @@ mod tests {
 
     #[test]
     fn a_phrase_copied_from_bytes_the_file_never_wrote_replaces_the_one_before() {
-        let types = ValueTypes::parse("k PHRASE\n");
-        let kb = CultureKnowledgeBase::parse("k Hi\nk \u{e9}\n");
+        let types = ValueTypes::parse("k PHRASE\n", LINE_BUFFER);
+        let kb = CultureKnowledgeBase::parse("k Hi\nk \u{e9}\n", LINE_BUFFER);
         assert!(matches!(kb.held(&types, "k"), Held::Unreadable(_)));
     }
 
     #[test]
     fn a_long_line_is_cut_into_two() {
         let line = format!("utilityPhraseEnglish1 {}\n", "a".repeat(250));
-        let kb = CultureKnowledgeBase::parse(&line);
+        let kb = CultureKnowledgeBase::parse(&line, LINE_BUFFER);
         assert_eq!(kb.entries.len(), 2);
         assert!(kb.entries[1].continuation);
         assert_eq!(kb.entries[0].span.len(), LINE_BUFFER - 1);
+        // `2026-02`'s reader holds it whole.
+        assert_eq!(CultureKnowledgeBase::parse(&line, 300).entries.len(), 1);
     }
 
     #[test]

@@ -72,6 +72,17 @@ impl Reader {
         }
     }
 
+    /// The line buffer of the same robot's culture knowledge base reader: 300 in
+    /// `2026-02`'s copy (`include/utilities`), 200 in `2025-06`'s. The document has no culture
+    /// knowledge base, and the culture readers of `2026-03` and `2026-04` are not public:
+    /// 200, the smallest, which reports every line that any of them cuts.
+    pub fn culture_line_buffer(self) -> usize {
+        match self {
+            Reader::V2026_02 => 300,
+            _ => 200,
+        }
+    }
+
     /// The size of its word buffers (`Keyword`, `KEY_LENGTH`), which `%s` fills with the
     /// first word of each line and each culturalKnowledge word: 200 in `2026-03`'s header,
     /// 100 in the others'.

@@ -1,6 +1,5 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::mission::culture::LINE_BUFFER;
 use crate::reader::chunks;
 use crate::rules::declare_rule;
 use crate::syntax::{floor_char_boundary, Span};
@@ -8,12 +7,13 @@ use crate::syntax::{floor_char_boundary, Span};
 declare_rule! {
     /// ## What it does
     /// Flags a line of the culture knowledge base or its types file of 200 bytes or more,
-    /// newline included.
+    /// newline included (300 or more with `--reader 2026-02`).
     ///
     /// ## Why it matters
-    /// The robot reads both files with a 200-byte line buffer, as it reads the environment
-    /// knowledge base (SPEC §2): it cuts the line after 199 bytes, keeps the first part as
-    /// the value, and reads the rest as a line of its own. A long phrase is said cut off.
+    /// The robot reads both files with a 200-byte line buffer (`2026-02`'s copy of the
+    /// reader: 300), as it reads the environment knowledge base (SPEC §2): it cuts the line
+    /// after 199 bytes, keeps the first part as the value, and reads the rest as a line of
+    /// its own. A long phrase is said cut off.
     ///
     /// ## Example
     /// A `utilityPhraseEnglish4` whose welcome runs past the 199th byte of its line.
@@ -26,8 +26,9 @@ declare_rule! {
     };
 }
 
-pub fn check(text: &str, out: &mut Diagnostics) {
-    let mut pieces = chunks(text.as_bytes(), LINE_BUFFER).peekable();
+/// Checks `text` as a reader with a buffer of `line_buffer` bytes reads it.
+pub fn check(text: &str, line_buffer: usize, out: &mut Diagnostics) {
+    let mut pieces = chunks(text.as_bytes(), line_buffer).peekable();
     while let Some((start, piece)) = pieces.next() {
         if piece.ends_with(b"\n") || pieces.peek().is_none() {
             continue;
@@ -57,15 +58,18 @@ pub fn check(text: &str, out: &mut Diagnostics) {
                 &CULTURE_LINE_TOO_LONG,
                 span,
                 format!(
-                    "the line of `{}` is {LINE_BUFFER} bytes or more: the robot cuts it after \
+                    "the line of `{}` is {line_buffer} bytes or more: the robot cuts it after \
                      {} bytes, reads the rest ({} bytes) as a line of its own, and a PHRASE \
                      loses its last character",
                     crate::rules::excerpt(key),
-                    LINE_BUFFER - 1,
+                    line_buffer - 1,
                     line_end + 1 - cut.min(line_end + 1),
                 ),
             )
-            .with_help("shorten the value to fit in 199 bytes with its key and newline"),
+            .with_help(format!(
+                "shorten the value to fit in {} bytes with its key and newline",
+                line_buffer - 1
+            )),
         );
     }
 }
