@@ -486,6 +486,30 @@ fn the_async_nodes_of_behavior_controller_v1_1_are_a_warning_and_say_their_phras
     );
 }
 
+#[test]
+fn the_async_nodes_are_known_to_2026_04_and_an_error_for_an_earlier_reader() {
+    use ekb::reader::Reader;
+    let xml = "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n<BehaviorTree ID=\"A\">\n\
+               <NavigateAsync/>\n</BehaviorTree></root>";
+    let source = SourceFile::from_bytes(MISSION, xml.as_bytes().to_vec());
+    let unknown = |reader: Option<Reader>| {
+        let sources = MissionSources {
+            mission: Some(&source),
+            reader,
+            ..MissionSources::default()
+        };
+        locate(&check_together(&sources, &RuleSet::default()))
+            .into_iter()
+            .filter(|f| f.rule == "mission-unknown-node")
+            .map(|f| (f.line, f.severity))
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(unknown(None), [(3, Severity::Warning)]);
+    assert_eq!(unknown(Some(Reader::V2026_04)), []);
+    assert_eq!(unknown(Some(Reader::V2025_06)), [(3, Severity::Error)]);
+    assert_eq!(unknown(Some(Reader::V2026_03)), [(3, Severity::Error)]);
+}
+
 // ---------------------------------------------------------------------------------------
 // Any input: a finding, never a panic or a hang
 

@@ -46,7 +46,7 @@ pub fn check_together<'s>(sources: &MissionSources<'s>, rules: &RuleSet) -> Vec<
         invalid_utf8::check(source, &mut mission_out);
         match mission_invalid_xml::check(source.text()) {
             Ok(mission) => {
-                check_tree(&mission, &mut mission_out);
+                check_tree(&mission, sources.reader, &mut mission_out);
                 Some(mission)
             }
             Err(finding) => {
@@ -207,6 +207,7 @@ pub fn check_file<'s>(
         }
         FileKind::Mission => MissionSources {
             mission: Some(source),
+            reader: options.reader,
             ..MissionSources::default()
         },
         FileKind::CultureKnowledgeBase => MissionSources {

@@ -113,6 +113,11 @@ pub struct Walk {
     pub outcome: Outcome,
     /// Nodes ticked.
     pub ticks: usize,
+    /// Whether the mission ran `StartOfTree`, which waits for the operator to press Enter at
+    /// the robot's console and, on every later run, asks whether to run the mission again
+    /// (any answer but `y` shuts the robot down). Without it, the robot's loop runs the
+    /// mission again at once.
+    pub operator_asked: bool,
 }
 
 /// Walks the main tree of `mission` (which has one: see `mission-unknown-tree`).
@@ -124,6 +129,7 @@ pub fn walk(mission: &Mission, text: &str, world: &World<'_>) -> Walk {
         steps: Vec::new(),
         ticks: 0,
         last_phrase: None,
+        operator_asked: false,
     };
     let outcome = match mission.main_tree() {
         None => Outcome::Stopped {
@@ -160,6 +166,7 @@ pub fn walk(mission: &Mission, text: &str, world: &World<'_>) -> Walk {
         steps: walker.steps,
         outcome,
         ticks: walker.ticks,
+        operator_asked: walker.operator_asked,
     }
 }
 
@@ -208,6 +215,7 @@ struct Walker<'w, 'a> {
     ticks: usize,
     /// What the robot last looked up in the culture knowledge base.
     last_phrase: Option<String>,
+    operator_asked: bool,
 }
 
 impl Walker<'_, '_> {
@@ -430,7 +438,11 @@ impl Walker<'_, '_> {
             ),
             "SetAnimateBehavior" => Status::of(["enabled", "disabled"].contains(&name)),
             "SetSpeechEvent" => Status::of(["true", "false"].contains(&name)),
-            // StartOfTree, HandleFallBack, IsMutualGazeDiscovered, IsVisitorPresent.
+            "StartOfTree" => {
+                self.operator_asked = true;
+                Status::Success
+            }
+            // HandleFallBack, IsMutualGazeDiscovered, IsVisitorPresent.
             _ => Status::Success,
         })
     }
@@ -582,11 +594,16 @@ pub fn render_text(walk: &Walk) -> String {
     for (number, step) in walk.steps.iter().enumerate() {
         out.push_str(&format!("{}. {}\n", number + 1, describe(step)));
     }
+    // The robot's loop ticks the tree again whenever it returns.
+    let again = if walk.operator_asked {
+        "; the robot asks its operator whether to run the mission again, and shuts down unless \
+         they type `y`"
+    } else {
+        "; the robot runs the mission again at once"
+    };
     let end = match &walk.outcome {
-        Outcome::Completed => {
-            "end: the tour is over; the robot starts again for the next visitor".to_string()
-        }
-        Outcome::Failed => "end: the mission fails: its main tree returns FAILURE".to_string(),
+        Outcome::Completed => format!("end: the tour is over{again}"),
+        Outcome::Failed => format!("end: the mission fails: its main tree returns FAILURE{again}"),
         Outcome::NeverEnds { node, line } => format!(
             "end: the mission never ends: still running after {} nodes, at `{node}` (line \
              {line})",

@@ -257,9 +257,30 @@ fn without_speech_recognition_the_tablet_answer_is_not_read_and_the_mission_fail
     assert_eq!(walked.code, 1);
     assert!(walked.stdout.contains("ask on the tablet: Yes or No"));
     assert!(walked.stdout.contains("say \"Maybe another time\""));
-    assert!(walked
-        .stdout
-        .ends_with("end: the mission fails: its main tree returns FAILURE\n"));
+    assert!(walked.stdout.ends_with(
+        "end: the mission fails: its main tree returns FAILURE; the robot asks its operator \
+         whether to run the mission again, and shuts down unless they type `y`\n"
+    ));
+}
+
+#[test]
+fn without_start_of_tree_the_robot_runs_the_mission_again_at_once() {
+    // StartOfTree is what asks the operator at the robot's console; the robot's loop ticks
+    // the tree again whenever it returns.
+    let root = edited_set_up("labTour.xml", |text| {
+        text.replace(
+            "<StartOfTree _description=\"Used for debugging and initializing values\"/>",
+            "",
+        )
+    });
+    let walked = run(&["mission", "walk", "--config-dir", &config_of(&root)]);
+    assert!(
+        walked
+            .stdout
+            .ends_with("end: the tour is over; the robot runs the mission again at once\n"),
+        "{}",
+        walked.stdout
+    );
 }
 
 #[test]

@@ -3,7 +3,9 @@ use crate::diagnostic::Diagnostic;
 use crate::mission::catalogue::{self, NodeModel};
 use crate::mission::tree::{self, Mission};
 use crate::mission::xml::Element;
+use crate::reader::Reader;
 use crate::rules::declare_rule;
+use crate::Severity;
 
 declare_rule! {
     /// ## What it does
@@ -20,7 +22,8 @@ declare_rule! {
     /// `SetSpeechEvent`; and, registered only by behaviorController v1.1 (April 2026),
     /// `DescribeExhibitSpeechAsync`, `GetVisitorResponseAsync`, `NavigateAsync`,
     /// `PerformDeicticGestureAsync`, `PerformIconicGestureAsync` and `SayTextAsync`, which
-    /// are a warning (a robot before v1.1 refuses them). The built-in ones include
+    /// are a warning (a robot before v1.1 refuses them); with `--reader 2026-04` (v1.1)
+    /// they are known, and with an earlier reader an error. The built-in ones include
     /// `Sequence`, `Fallback`, `Inverter`,
     /// `KeepRunningUntilFailure`, `ForceFailure`, `RetryUntilSuccessful`, `Delay` and
     /// `SubTree`.
@@ -43,26 +46,39 @@ declare_rule! {
     };
 }
 
-/// A node that only behaviorController v1.1 registers: a warning, for the robots before.
-pub fn check_v1_1_only(node: &Element, model: &NodeModel, out: &mut Diagnostics) {
-    if !model.v1_1_only {
+/// A node that only behaviorController v1.1 registers: known to `2026-04`'s robot, an error
+/// for an earlier one named by `reader`, a warning when none is named.
+pub fn check_v1_1_only(
+    node: &Element,
+    model: &NodeModel,
+    reader: Option<Reader>,
+    out: &mut Diagnostics,
+) {
+    if !model.v1_1_only || reader == Some(Reader::V2026_04) {
         return;
     }
     let id = model.id;
     let synchronous = catalogue::synchronous(id);
+    let (robot, severity) = match reader {
+        Some(reader) => (format!("reader {reader}'s robot"), Severity::Error),
+        None => (
+            "a robot that runs an earlier version".to_string(),
+            Severity::Warning,
+        ),
+    };
     out.push(
         Diagnostic::new(
             &MISSION_UNKNOWN_NODE,
             node.name_span,
             format!(
-                "`{id}` is registered only by behaviorController v1.1 (April 2026): a robot \
-                 that runs an earlier version does not know it (\"Node not recognized\") and \
-                 cannot load the mission"
+                "`{id}` is registered only by behaviorController v1.1 (April 2026): {robot} \
+                 does not know it (\"Node not recognized\") and cannot load the mission"
             ),
         )
-        .with_severity(crate::Severity::Warning)
+        .with_severity(severity)
         .with_help(format!(
-            "use `{synchronous}` for a robot before v1.1, or make sure the robot runs v1.1"
+            "use `{synchronous}` for a robot before v1.1, or make sure the robot runs v1.1 \
+             (`--reader 2026-04`)"
         )),
     );
 }

@@ -17,10 +17,12 @@ pub mod mission_untranslated_tour;
 
 use crate::check::Diagnostics;
 use crate::mission::tree::{self, Mission};
+use crate::reader::Reader;
 
 /// Runs the rules about the tree alone: what BehaviorTree.CPP refuses, and the robot's
 /// node parameters.
-pub fn check_tree(mission: &Mission, out: &mut Diagnostics) {
+/// `reader` is the robot's version, if the settings name one.
+pub fn check_tree(mission: &Mission, reader: Option<Reader>, out: &mut Diagnostics) {
     mission_missing_format::check(mission, out);
     mission_unknown_tree::check(mission, out);
     mission_unreachable_tree::check(mission, out);
@@ -31,7 +33,7 @@ pub fn check_tree(mission: &Mission, out: &mut Diagnostics) {
             match tree::model(node) {
                 None => mission_unknown_node::check(mission, node, out),
                 Some(model) => {
-                    mission_unknown_node::check_v1_1_only(node, model, out);
+                    mission_unknown_node::check_v1_1_only(node, model, reader, out);
                     mission_bad_children::check(node, model, out);
                     mission_unknown_attribute::check(node, model, out);
                     mission_bad_port_value::check(node, model, out);
