@@ -65,6 +65,8 @@ pub enum Step {
     Gesture { gesture: String },
     /// `PressYesNoDialogue`.
     AskOnTablet,
+    /// `Delay` before its child, or `Sleep`: a pause the visitor waits through.
+    Wait { milliseconds: u64 },
     /// `GetVisitorResponse`: the visitor answers yes, and the robot understands it if it
     /// knows the yes-words of the mission's language.
     Listen { understood: bool },
@@ -281,6 +283,9 @@ impl Walker<'_, '_> {
                 }
             }
             "Inverter" | "ForceSuccess" | "ForceFailure" | "Delay" | "Timeout" => {
+                if model.id == "Delay" {
+                    self.wait(node, "delay_msec");
+                }
                 let status = self.only_child(node, depth)?;
                 Ok(match model.id {
                     "Inverter" => Status::of(status == Status::Failure),
@@ -318,7 +323,11 @@ impl Walker<'_, '_> {
                 }
                 Ok(Status::of(until == Status::Failure))
             }
-            "AlwaysSuccess" | "Sleep" | "SetBlackboard" | "UnsetBlackboard" => Ok(Status::Success),
+            "Sleep" => {
+                self.wait(node, "msec");
+                Ok(Status::Success)
+            }
+            "AlwaysSuccess" | "SetBlackboard" | "UnsetBlackboard" => Ok(Status::Success),
             "AlwaysFailure" => Ok(Status::Failure),
             "SubTree" => match node.value("ID").and_then(|id| self.mission.tree(id)) {
                 Some(called) => self.tree(called, depth),
@@ -445,6 +454,18 @@ impl Walker<'_, '_> {
             // HandleFallBack, IsMutualGazeDiscovered, IsVisitorPresent.
             _ => Status::Success,
         })
+    }
+
+    /// The pause that `node`'s `port` asks for, as a step (none if the value does not
+    /// convert: `mission-bad-port-value` reports it).
+    fn wait(&mut self, node: &Element, port: &str) {
+        let milliseconds = node
+            .value(port)
+            .and_then(ports::integer)
+            .and_then(|ms| u64::try_from(ms).ok());
+        if let Some(milliseconds) = milliseconds {
+            self.steps.push(Step::Wait { milliseconds });
+        }
     }
 
     fn place(&self, id: u32) -> Option<Place> {
@@ -646,6 +667,7 @@ fn describe(step: &Step) -> String {
         }
         Step::Gesture { gesture } => format!("make the {gesture} gesture"),
         Step::AskOnTablet => "ask on the tablet: Yes or No".to_string(),
+        Step::Wait { milliseconds } => format!("wait {} s", *milliseconds as f64 / 1000.0),
         Step::Listen { understood: true } => "listen to the visitor, who answers yes".to_string(),
         Step::Listen { understood: false } => "listen to the visitor, who answers yes, and hear \
                                                no answer: the robot knows no yes-word in this \

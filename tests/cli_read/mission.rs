@@ -497,3 +497,23 @@ fn an_isizulu_answer_is_never_understood_and_the_tour_never_starts() {
     );
     assert!(!walked.stdout.contains("go to"), "{}", walked.stdout);
 }
+
+#[test]
+fn a_delay_and_a_sleep_are_pauses_of_the_walk() {
+    let root = edited_set_up("labTour.xml", |text| {
+        text.replace(
+            "      <Fallback>\n        <SayText name=\"2\"",
+            "      <Sleep msec=\"1500\"/>\n      <Fallback>\n        <SayText name=\"2\"",
+        )
+    });
+    let walked = run(&["mission", "walk", "--config-dir", &config_of(&root)]);
+    let lines: Vec<&str> = walked.stdout.lines().collect();
+    // The Delay of 3,000 ms before the answer is heard, then the Sleep before "follow me".
+    let wait_then_listen = lines
+        .windows(2)
+        .any(|pair| pair[0].ends_with("wait 3 s") && pair[1].contains("listen to the visitor"));
+    let sleep_then_follow = lines
+        .windows(2)
+        .any(|pair| pair[0].ends_with("wait 1.5 s") && pair[1].contains("Please follow me"));
+    assert!(wait_then_listen && sleep_then_follow, "{}", walked.stdout);
+}
