@@ -26,15 +26,15 @@ fn fixtures() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/mission")
 }
 
-/// The four files: the corpus's, each replaced by the one in `dir` if it has it.
+/// The four files: the corpus's, each replaced by the one in `dir` if it has it. Read from
+/// their paths, so that a mission's `<include>`s are found beside it.
 fn set_up(dir: Option<&Path>) -> [SourceFile; 4] {
     [MISSION, CULTURE, TYPES, KB].map(|name| {
         let path = dir
             .map(|dir| dir.join(name))
             .filter(|path| path.is_file())
             .unwrap_or_else(|| fixtures().join("corpus/data").join(name));
-        let bytes = std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        SourceFile::from_bytes(name, bytes)
+        SourceFile::read(&path).unwrap_or_else(|e| panic!("{e}"))
     })
 }
 
@@ -57,8 +57,9 @@ fn locate(checked: &[Checked<'_>]) -> Vec<Finding> {
         let index = LineIndex::new(text);
         for d in &file.diagnostics {
             let at = index.position(text, d.span.start);
+            let name = Path::new(file.source.name()).file_name();
             all.push(Finding {
-                file: file.source.name().to_string(),
+                file: name.map_or_else(String::new, |n| n.to_string_lossy().into_owned()),
                 line: at.line,
                 column: at.column,
                 rule: d.rule.name,
@@ -147,6 +148,9 @@ rule_tests! {
     ];
     mission_bad_port_value: "mission-bad-port-value" => [
         (MISSION, 5, 43), (MISSION, 8, 26), (MISSION, 11, 27), (MISSION, 12, 27), (MISSION, 13, 22)
+    ];
+    mission_bad_include: "mission-bad-include" => [
+        (MISSION, 4, 4), (MISSION, 5, 18), (MISSION, 6, 40), (MISSION, 7, 18), (MISSION, 8, 18)
     ];
     mission_unknown_tree: "mission-unknown-tree" => [(MISSION, 2, 46), (MISSION, 5, 20), (MISSION, 6, 8)];
     mission_missing_format: "mission-missing-format" => [(MISSION, 2, 2)];
@@ -559,7 +563,7 @@ mod any_input {
             for source in &files[..3] {
                 ekb::mission::check::check_file(source, &Options::default(), &RuleSet::default(), None);
             }
-            let Ok(mission) = ekb::mission::check::read_mission(files[0].text()) else {
+            let Ok(mission) = ekb::mission::check::read_mission(&files[0]) else {
                 return Ok(());
             };
             let kb = ekb::check(&files[3], &Options::default());
@@ -604,4 +608,33 @@ fn the_culture_reader_of_2026_02_holds_lines_of_up_to_299_bytes() {
     assert_eq!(too_long(None), [(2, 200)]);
     assert_eq!(too_long(Some(ekb::reader::Reader::V2025_06)), [(2, 200)]);
     assert_eq!(too_long(Some(ekb::reader::Reader::V2026_02)), []);
+}
+
+#[test]
+fn trees_of_included_files_may_be_called_and_the_walk_says_it_does_not_follow_them() {
+    let good = fixtures().join("rules/mission-bad-include/good");
+    let files = set_up(Some(&good));
+    let all = check_set(&files);
+    let mission_errors: Vec<&Finding> = errors(&all)
+        .into_iter()
+        .filter(|f| f.file == MISSION)
+        .collect();
+    assert!(mission_errors.is_empty(), "{}", show(&all));
+    // The same calls without the includes: both trees unknown.
+    let text = files[0]
+        .text()
+        .replace("<include", "<!-- include")
+        .replace("xml\"/>", "xml\"/ -->");
+    let alone = check_mission_alone(text);
+    let unknown: Vec<u32> = alone
+        .iter()
+        .filter(|f| f.rule == "mission-unknown-tree")
+        .map(|f| f.line)
+        .collect();
+    assert_eq!(unknown, [7, 8], "{}", show(&alone));
+
+    let mission = ekb::mission::check::read_mission(&files[0]).unwrap();
+    assert!(mission
+        .included_tree("Farewell")
+        .is_some_and(|file| file.ends_with("trees/farewell.xml")));
 }

@@ -396,6 +396,7 @@ fn the_catalogue_is_the_specified_one() {
         ("mission-unknown-attribute", Error, false),
         ("mission-bad-port-value", Error, false),
         ("mission-unknown-tree", Error, false),
+        ("mission-bad-include", Error, false),
         ("mission-invalid-name", Error, false),
         ("mission-language-invalid", Error, false),
         ("mission-missing-phrase", Error, false),

@@ -185,7 +185,7 @@ impl Read {
                 .missing("mission", "--mission", setup::BEHAVIOR_CONTROLLER_INI);
             CommandError::Failed(why)
         })?;
-        read_mission(source.text()).map_err(|finding| {
+        read_mission(source).map_err(|finding| {
             CommandError::Failed(format!(
                 "{} cannot be read: {} (run `ekb mission check`)",
                 source.name(),

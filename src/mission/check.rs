@@ -45,7 +45,8 @@ pub fn check_together<'s>(sources: &MissionSources<'s>, rules: &RuleSet) -> Vec<
     let mission = sources.mission.and_then(|source| {
         invalid_utf8::check(source, &mut mission_out);
         match mission_invalid_xml::check(source.text()) {
-            Ok(mission) => {
+            Ok(mut mission) => {
+                mission_bad_include::check(&mut mission, source.path(), &mut mission_out);
                 check_tree(&mission, sources.reader, &mut mission_out);
                 Some(mission)
             }
@@ -227,9 +228,12 @@ pub fn check_file<'s>(
         .unwrap_or_else(|| env::check_with(source, options, rules))
 }
 
-/// Parses a mission, or gives the finding that says why it cannot be read.
-pub fn read_mission(text: &str) -> Result<Mission, Box<crate::Diagnostic>> {
-    mission_invalid_xml::check(text)
+/// Parses a mission, with the trees of the files it includes, or gives the finding that says
+/// why it cannot be read (`ekb mission check` reports what is wrong with its includes).
+pub fn read_mission(source: &SourceFile) -> Result<Mission, Box<crate::Diagnostic>> {
+    let mut mission = mission_invalid_xml::check(source.text())?;
+    mission.included = super::include::load(&mission, source.path()).trees;
+    Ok(mission)
 }
 
 #[cfg(test)]

@@ -3,6 +3,7 @@
 //!
 //! - [`xml`]: the mission's XML, with the place of every element and attribute;
 //! - [`tree`]: its behaviour trees, which one runs, what each node element is;
+//! - [`include`]: the files it `<include>`s, whose trees it may call;
 //! - [`catalogue`]: the nodes BehaviorTree.CPP and the robot know;
 //! - [`ports`]: the built-in nodes' typed ports, as BehaviorTree.CPP converts them;
 //! - [`culture`]: the culture knowledge base and its types file, as the robot reads them;
@@ -13,6 +14,7 @@
 pub mod catalogue;
 pub mod check;
 pub mod culture;
+pub mod include;
 pub mod outline;
 pub mod ports;
 pub mod setup;

@@ -8,6 +8,9 @@ use super::xml::Element;
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Mission {
     pub root: Element,
+    /// The IDs of the trees its `<include>`d files register, each with its file
+    /// ([`super::include`]; empty until they are read).
+    pub included: Vec<(String, std::path::PathBuf)>,
 }
 
 impl Mission {
@@ -24,17 +27,36 @@ impl Mission {
         self.trees().find(|tree| tree.value("ID") == Some(id))
     }
 
+    /// The included file that registers the tree `id`, if this file does not have it
+    /// (the last registered wins, as BehaviorTree.CPP's map of trees keeps it).
+    pub fn included_tree(&self, id: &str) -> Option<&std::path::Path> {
+        self.included
+            .iter()
+            .rev()
+            .find(|(included, _)| included == id)
+            .map(|(_, file)| file.as_path())
+    }
+
+    /// Whether BehaviorTree.CPP registers a tree `id`: this file's, or an included one.
+    pub fn knows_tree(&self, id: &str) -> bool {
+        self.tree(id).is_some() || self.included_tree(id).is_some()
+    }
+
+    /// How many trees BehaviorTree.CPP registers, included ones too.
+    pub fn tree_count(&self) -> usize {
+        self.trees().count() + self.included.len()
+    }
+
     /// The ID of the tree that runs: `main_tree_to_execute`, else the only tree's.
     pub fn main_tree_id(&self) -> Option<&str> {
         match self.root.value("main_tree_to_execute") {
             Some(id) => Some(id),
-            None => {
-                let mut trees = self.trees();
-                match (trees.next(), trees.next()) {
-                    (Some(only), None) => only.value("ID"),
-                    _ => None,
-                }
-            }
+            None if self.tree_count() == 1 => self
+                .trees()
+                .next()
+                .and_then(|only| only.value("ID"))
+                .or_else(|| self.included.first().map(|(id, _)| id.as_str())),
+            None => None,
         }
     }
 
@@ -108,6 +130,7 @@ mod tests {
     fn mission(text: &str) -> Mission {
         Mission {
             root: super::super::xml::parse(text).unwrap(),
+            included: Vec::new(),
         }
     }
 

@@ -329,10 +329,21 @@ impl Walker<'_, '_> {
             }
             "AlwaysSuccess" | "SetBlackboard" | "UnsetBlackboard" => Ok(Status::Success),
             "AlwaysFailure" => Ok(Status::Failure),
-            "SubTree" => match node.value("ID").and_then(|id| self.mission.tree(id)) {
-                Some(called) => self.tree(called, depth),
-                None => Err(halt(node, "it calls no tree of the file")),
-            },
+            "SubTree" => {
+                let id = node.value("ID").unwrap_or_default();
+                match (self.mission.tree(id), self.mission.included_tree(id)) {
+                    (Some(called), _) => self.tree(called, depth),
+                    (None, Some(file)) => Err(halt(
+                        node,
+                        &format!(
+                            "it calls `{id}`, a tree of the included file {}, which the walk \
+                             does not follow",
+                            file.display()
+                        ),
+                    )),
+                    (None, None) => Err(halt(node, "it calls no tree of the file")),
+                }
+            }
             other => Err(halt(node, &format!("the walk does not simulate `{other}`"))),
         }
     }

@@ -178,6 +178,7 @@ pub static ALL: &[&Rule] = &[
     &mission::mission_unknown_attribute::MISSION_UNKNOWN_ATTRIBUTE,
     &mission::mission_bad_port_value::MISSION_BAD_PORT_VALUE,
     &mission::mission_unknown_tree::MISSION_UNKNOWN_TREE,
+    &mission::mission_bad_include::MISSION_BAD_INCLUDE,
     &mission::mission_invalid_name::MISSION_INVALID_NAME,
     &mission::mission_language_invalid::MISSION_LANGUAGE_INVALID,
     &mission::mission_missing_phrase::MISSION_MISSING_PHRASE,

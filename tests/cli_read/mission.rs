@@ -517,3 +517,42 @@ fn a_delay_and_a_sleep_are_pauses_of_the_walk() {
         .any(|pair| pair[0].ends_with("wait 1.5 s") && pair[1].contains("Please follow me"));
     assert!(wait_then_listen && sleep_then_follow, "{}", walked.stdout);
 }
+
+#[test]
+fn the_walk_stops_at_a_call_into_an_included_file() {
+    let root = edited_set_up("labTour.xml", |text| {
+        text.replace(
+            "main_tree_to_execute=\"TourGuide\">",
+            "main_tree_to_execute=\"TourGuide\">\n  <include path=\"farewell.xml\"/>",
+        )
+        .replace("<SubTree ID=\"EndTour\"/>", "<SubTree ID=\"Farewell\"/>")
+    });
+    std::fs::write(
+        root.path().join("data/farewell.xml"),
+        "<root BTCPP_format=\"4\">\n<BehaviorTree ID=\"Farewell\"><SayText name=\"7\"/></BehaviorTree>\n</root>\n",
+    )
+    .unwrap();
+    let checked = run(&[
+        "mission",
+        "check",
+        "--config-dir",
+        &config_of(&root),
+        "--format",
+        "concise",
+    ]);
+    assert!(
+        !checked.stdout.contains("mission-unknown-tree")
+            && !checked.stdout.contains("mission-bad-include"),
+        "{}",
+        checked.stdout
+    );
+    let walked = run(&["mission", "walk", "--config-dir", &config_of(&root)]);
+    let end = walked.stdout.lines().last().unwrap_or_default();
+    assert!(
+        end.starts_with("end: the walk stops at `SubTree`")
+            && end.contains("it calls `Farewell`, a tree of the included file")
+            && end.contains("farewell.xml, which the walk does not follow"),
+        "{}",
+        walked.stdout
+    );
+}

@@ -61,5 +61,8 @@ pub fn check(text: &str) -> Result<Mission, Box<Diagnostic>> {
             .with_help("wrap the trees in <root BTCPP_format=\"4\" main_tree_to_execute=\"…\">"),
         ));
     }
-    Ok(Mission { root })
+    Ok(Mission {
+        root,
+        included: Vec::new(),
+    })
 }

@@ -7,7 +7,8 @@ use crate::rules::declare_rule;
 declare_rule! {
     /// ## What it does
     /// Flags a call to a tree that the file does not have: a `<SubTree ID=…>` or
-    /// `main_tree_to_execute` naming no `<BehaviorTree ID=…>` (with the nearest ID), a
+    /// `main_tree_to_execute` naming no `<BehaviorTree ID=…>` of the file or of a file it
+    /// `<include>`s (with the nearest ID), a
     /// `<SubTree>` without an `ID`, a file that does not say which of its trees to run, a
     /// `<BehaviorTree>` without an `ID` beside any other element of `<root>`, and a
     /// `<BehaviorTree>` or `<SubTree>` whose ID is the name of a node (`Navigate`,
@@ -45,7 +46,7 @@ pub fn check(mission: &Mission, out: &mut Diagnostics) {
     };
     let root = &mission.root;
     match root.attribute("main_tree_to_execute") {
-        Some(main) if mission.tree(&main.value).is_none() => out.push(
+        Some(main) if !mission.knows_tree(&main.value) => out.push(
             Diagnostic::new(
                 &MISSION_UNKNOWN_TREE,
                 main.value_span,
@@ -57,14 +58,14 @@ pub fn check(mission: &Mission, out: &mut Diagnostics) {
             )
             .with_help(unknown(&main.value)),
         ),
-        None if mission.trees().count() != 1 => out.push(
+        None if mission.tree_count() != 1 => out.push(
             Diagnostic::new(
                 &MISSION_UNKNOWN_TREE,
                 root.name_span,
                 format!(
                     "<root> has no main_tree_to_execute and {} <BehaviorTree> elements: the \
                      robot cannot tell which to run, and does not load the mission",
-                    mission.trees().count()
+                    mission.tree_count()
                 ),
             )
             .with_help("name the tree to run: <root main_tree_to_execute=\"TourGuide\">"),
@@ -119,7 +120,7 @@ pub fn check(mission: &Mission, out: &mut Diagnostics) {
                     )
                     .with_help("name the tree it calls: <SubTree ID=\"…\"/>"),
                 ),
-                Some(id) if mission.tree(&id.value).is_none() => out.push(
+                Some(id) if !mission.knows_tree(&id.value) => out.push(
                     Diagnostic::new(
                         &MISSION_UNKNOWN_TREE,
                         id.value_span,

@@ -3,6 +3,7 @@
 
 pub mod cultural_knowledge_unknown_key;
 pub mod mission_bad_children;
+pub mod mission_bad_include;
 pub mod mission_bad_port_value;
 pub mod mission_invalid_name;
 pub mod mission_invalid_xml;
