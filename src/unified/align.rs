@@ -1,7 +1,7 @@
 //! Which new lines keep their place ([`first_reading`]), and the changes around them
 //! ([`changes`]).
 
-use std::collections::BTreeMap;
+use std::cmp::Reverse;
 use std::ops::{ControlFlow, Range};
 
 use super::follow::Finder;
@@ -204,50 +204,80 @@ fn follows(old: &str, next: u32, origin: u32) -> bool {
 }
 
 /// The indices of the runs, ascending, of the chain whose origins ascend from run to run
-/// with the most equal lines.
+/// with the most equal lines: of the chains as heavy, the one that ends at the lowest
+/// origin, and of those the one whose last run comes first; each run's chain goes on from
+/// the chain chosen so among those that end before it starts.
+///
+/// A longest increasing subsequence, weighted, in O(n log n): the runs' last origins are
+/// numbered in order, and a [`BestBefore`] tree keeps the best chain ending at or below each.
 fn heaviest_chain(runs: &[Run]) -> Vec<usize> {
     const NONE: u32 = u32::MAX;
     if runs.len() <= 1 {
         return (0..runs.len()).collect();
     }
-    // For each last origin, the heaviest chain ending there and its last run; only chains
-    // heavier than every chain ending before are kept, so the weights ascend with the keys.
-    let mut frontier: BTreeMap<u32, (u64, u32)> = BTreeMap::new();
+    let mut lasts: Vec<u32> = runs.iter().map(|run| run.last).collect();
+    // A merge sort, fast on the few long ascending stretches that lines moved in order
+    // make (blocks in a tree's order ascend level by level).
+    lasts.sort();
+    lasts.dedup();
+    let mut best = BestBefore::new(lasts.len());
     let mut previous = vec![NONE; runs.len()];
     for (index, run) in runs.iter().enumerate() {
-        let before = frontier
-            .range(..run.first)
-            .next_back()
-            .map(|(_, &chain)| chain);
-        let weight = u64::from(run.equal) + before.map_or(0, |(weight, _)| weight);
-        previous[index] = before.map_or(NONE, |(_, last)| last);
-        let beaten = frontier
-            .range(..=run.last)
-            .next_back()
-            .is_some_and(|(_, &(other, _))| other >= weight);
-        if beaten {
-            continue;
-        }
-        let lighter: Vec<u32> = frontier
-            .range(run.last..)
-            .take_while(|(_, &(other, _))| other <= weight)
-            .map(|(&last, _)| last)
-            .collect();
-        for last in lighter {
-            frontier.remove(&last);
-        }
-        frontier.insert(run.last, (weight, index as u32));
+        let before = best.before(lasts.partition_point(|&last| last < run.first));
+        previous[index] = before.map_or(NONE, |chain| chain.run.0);
+        let chain = Chain {
+            weight: u64::from(run.equal) + before.map_or(0, |chain| chain.weight),
+            last: Reverse(run.last),
+            run: Reverse(index as u32),
+        };
+        best.offer(lasts.partition_point(|&last| last < run.last), chain);
     }
     let mut chain = Vec::new();
-    let mut at = frontier
-        .last_key_value()
-        .map_or(NONE, |(_, &(_, last))| last);
+    let mut at = best.before(lasts.len()).map_or(NONE, |chain| chain.run.0);
     while at != NONE {
         chain.push(at as usize);
         at = previous[at as usize];
     }
     chain.reverse();
     chain
+}
+
+/// A chain of runs as [`heaviest_chain`] weighs them: the heavier is better, then the one
+/// that ends at the lower origin, then the one whose last run comes first.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+struct Chain {
+    weight: u64,
+    last: Reverse<u32>,
+    run: Reverse<u32>,
+}
+
+/// The best chain ending at each of `n` places (the last origins, numbered in order), asked
+/// of the places below one: a Fenwick tree of maxima.
+struct BestBefore(Vec<Option<Chain>>);
+
+impl BestBefore {
+    fn new(places: usize) -> BestBefore {
+        BestBefore(vec![None; places])
+    }
+
+    /// The best chain ending at a place below `end`, if any.
+    fn before(&self, mut end: usize) -> Option<Chain> {
+        let mut best = None;
+        while end > 0 {
+            best = best.max(self.0[end - 1]);
+            end &= end - 1;
+        }
+        best
+    }
+
+    /// A chain ending at `place`.
+    fn offer(&mut self, mut place: usize, chain: Chain) {
+        while place < self.0.len() {
+            let best = &mut self.0[place];
+            *best = (*best).max(Some(chain));
+            place |= place + 1;
+        }
+    }
 }
 
 /// A change: old lines (0-based, end excluded) replaced by new lines.
@@ -425,4 +455,53 @@ impl<'o> Pairing<'o> {
 /// at the start.
 fn ends_with_blank_line(text: &str) -> bool {
     matches!(text.as_bytes(), [b'\n'] | [.., b'\n', b'\n'])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// [`heaviest_chain`] as its doc says, run by run against every run before: O(n²).
+    fn chain_by_definition(runs: &[Run]) -> Vec<usize> {
+        let mut chains: Vec<(Chain, Option<usize>)> = Vec::new();
+        for (index, run) in runs.iter().enumerate() {
+            let before = (0..index)
+                .filter(|&other| runs[other].last < run.first)
+                .max_by_key(|&other| chains[other].0);
+            let chain = Chain {
+                weight: u64::from(run.equal) + before.map_or(0, |other| chains[other].0.weight),
+                last: Reverse(run.last),
+                run: Reverse(index as u32),
+            };
+            chains.push((chain, before));
+        }
+        let mut at = (0..runs.len()).max_by_key(|&index| chains[index].0);
+        let mut chain = Vec::new();
+        while let Some(index) = at {
+            chain.push(index);
+            at = chains[index].1;
+        }
+        chain.reverse();
+        chain
+    }
+
+    proptest! {
+        #[test]
+        fn the_heaviest_chain_is_the_one_its_doc_says(
+            runs in proptest::collection::vec((0u32..40, 0u32..6, 0u32..4), 0..60),
+        ) {
+            let runs: Vec<Run> = runs
+                .into_iter()
+                .map(|(first, length, equal)| Run {
+                    first,
+                    last: first + length,
+                    next: first + length + 1,
+                    lines: (0, 0),
+                    equal,
+                })
+                .collect();
+            prop_assert_eq!(heaviest_chain(&runs), chain_by_definition(&runs));
+        }
+    }
 }
