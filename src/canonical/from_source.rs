@@ -9,14 +9,14 @@
 use std::borrow::Cow;
 use std::fmt;
 
-use super::{known_key, slot, Document, Written, UNKNOWN_SLOT};
+use super::{entry_start, known_key, padding, slot, Document, Written, AS_WRITTEN, UNKNOWN_SLOT};
 use crate::model::build::{parse_id, tour_items};
 use crate::model::{IdMap, Key, ValueKind};
 use crate::parallel;
 use crate::render::escape::escape;
 use crate::rewrite::{name_lines, NAMED_LINES};
 use crate::suppression;
-use crate::syntax::{self, Body, Line, Span};
+use crate::syntax::{self, Body, Line, LineEnding, Span};
 
 /// Lines ending in a carriage return that is not part of a CRLF: written before the
 /// layout's LF, it would turn into a line ending and vanish from the value.
@@ -92,7 +92,8 @@ struct Layout {
     /// The located entries' blocks, and how many lines each has.
     blocks: Blocks,
     located: usize,
-    /// Each located line's start and block, in file order, kept while they take at most an
+    /// Each located line's start (with [`AS_WRITTEN`] if it is) and block, in file order,
+    /// kept while they take at most an
     /// eighth of the text's size (lines of a usual length): then the lines are not read
     /// again to be put in order.
     placed: Option<Vec<(u32, u32)>>,
@@ -144,7 +145,7 @@ fn seen_lines(text: &str, lines: syntax::Lines<'_>, end: usize) -> Vec<Seen> {
                     Some(Seen::Entry {
                         start: line.span.start,
                         end: line.span.end,
-                        placement: placement(text, key, args),
+                        placement: placement(text, &line, key, args),
                     })
                 }
             }
@@ -177,6 +178,11 @@ impl Layout {
     /// The first reading of `text`, its lines read in parts on the cores.
     fn read(text: &str) -> Result<Layout, Unformattable> {
         let most_placed = text.len() / PLACED_SHARE / std::mem::size_of::<(u32, u32)>();
+        // (Starts of a text this long would not leave the bit free.)
+        let as_written_bit = match text.len() <= AS_WRITTEN as usize {
+            true => AS_WRITTEN,
+            false => 0,
+        };
         let mut layout = Layout {
             placed: Some(Vec::with_capacity(most_placed)),
             ..Layout::default()
@@ -202,11 +208,16 @@ impl Layout {
                 match placement {
                     Placement::Tour => layout.tour.push(start),
                     Placement::Unplaced => layout.unplaced.push(start),
-                    Placement::Located { id, slot } => {
+                    Placement::Located {
+                        id,
+                        slot,
+                        as_written,
+                    } => {
                         let block = layout.blocks.count(id, slot);
                         match &mut layout.placed {
                             Some(placed) if placed.len() < most_placed => {
-                                placed.push((start, block));
+                                let bit = if as_written { as_written_bit } else { 0 };
+                                placed.push((start | bit, block));
                             }
                             _ => layout.placed = None,
                         }
@@ -412,7 +423,7 @@ fn each_located(text: &str, each: impl FnMut((u32, u32))) {
         lines
             .take_while(|line| (line.span.start as usize) < end)
             .filter_map(|line| match line.body {
-                Body::Entry { key, args } => match placement(text, key, args) {
+                Body::Entry { key, args } => match placement(text, &line, key, args) {
                     Placement::Located { id, .. } => Some((line.span.start, id)),
                     _ => None,
                 },
@@ -426,8 +437,8 @@ fn each_located(text: &str, each: impl FnMut((u32, u32))) {
 /// Puts the lines starting at `block` in key order ([`slot`]), keeping the order of lines of
 /// the same slot: a counting sort over the few slots.
 fn sort_by_slot(text: &str, block: &mut [u32]) {
-    let slot_at = |start: u32| {
-        let line = syntax::lines_from(text, start as usize).next();
+    let slot_at = |placed: u32| {
+        let line = syntax::lines_from(text, entry_start(placed).0 as usize).next();
         match line.map(|line| line.body) {
             Some(Body::Entry { key, .. }) => slot(known_key(key.text(text))),
             _ => unreachable!("an entry line starts there"),
@@ -454,22 +465,66 @@ fn sort_by_slot(text: &str, block: &mut [u32]) {
 enum Placement {
     Tour,
     Unplaced,
-    Located { id: u32, slot: u8 },
+    Located {
+        id: u32,
+        slot: u8,
+        /// Whether the line is written as the layout writes it.
+        as_written: bool,
+    },
 }
 
-/// Where the entry line `key args` of `text` goes ([`read`] without making its value).
-fn placement(text: &str, key: Span, args: Span) -> Placement {
+/// Where the entry line `line` (`key args`) of `text` goes ([`read`] without making its
+/// value).
+fn placement(text: &str, line: &Line, key: Span, args: Span) -> Placement {
     let known = known_key(key.text(text));
     if known == Some(Key::TourSpecification) {
         return Placement::Tour;
     }
     match split_id(args.text(text)) {
-        Some((id, _, _)) => Placement::Located {
+        Some((id, id_text, value)) => Placement::Located {
             id,
             slot: slot(known),
+            as_written: is_as_written(text, line, known, (key, args), id_text, value),
         },
         None => Placement::Unplaced,
     }
+}
+
+/// Whether the located entry line `line` of `text`, whose `key` and `args` [`split_id`] cut
+/// into `id_text` and `value`, is written as the layout writes it ([`read`] and
+/// [`push_entry`](super::push_entry)): the key, id and value are the line's own, so it is
+/// when what is between them is, and the value is as [`read`] makes it.
+fn is_as_written(
+    text: &str,
+    line: &Line,
+    known: Option<Key>,
+    (key, args): (Span, Span),
+    id_text: &str,
+    value: &str,
+) -> bool {
+    let bytes = text.as_bytes();
+    let id_end = args.start as usize + id_text.len();
+    let spaces = padding(key.text(text), id_text, value);
+    let gap = &bytes[key.end as usize..args.start as usize];
+    let value_is_as_read = match known.map(Key::value_kind) {
+        Some(ValueKind::Pose | ValueKind::Point) => {
+            matches!(
+                single_spaced(value, || syntax::tokens(value, 0)),
+                Cow::Borrowed(_)
+            )
+        }
+        _ => true,
+    };
+    line.indent.is_empty()
+        && line.trailing.is_empty()
+        && line.ending == LineEnding::Lf
+        && gap.len() == spaces
+        && gap.iter().all(|&byte| byte == b' ')
+        && match value.is_empty() {
+            true => id_end == args.end as usize,
+            false => bytes[id_end] == b' ' && id_end + 1 + value.len() == args.end as usize,
+        }
+        && value_is_as_read
 }
 
 /// Whether a line that is not blank ends in a carriage return that is not part of a CRLF.
