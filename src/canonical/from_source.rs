@@ -9,14 +9,16 @@
 use std::borrow::Cow;
 use std::fmt;
 
-use super::{entry_start, known_key, padding, slot, Document, Written, AS_WRITTEN, UNKNOWN_SLOT};
+use super::{
+    entry_start, known_key, padding, slot, Document, Written, AS_WRITTEN, PADDING, UNKNOWN_SLOT,
+};
 use crate::model::build::{parse_id, tour_items};
 use crate::model::{IdMap, Key, ValueKind};
 use crate::parallel;
 use crate::render::escape::escape;
 use crate::rewrite::{name_lines, NAMED_LINES};
 use crate::suppression;
-use crate::syntax::{self, Body, Line, LineEnding, Span};
+use crate::syntax::{self, is_blank, Body, Line, LineEnding, Span};
 
 /// Lines ending in a carriage return that is not part of a CRLF: written before the
 /// layout's LF, it would turn into a line ending and vanish from the value.
@@ -504,27 +506,25 @@ fn is_as_written(
 ) -> bool {
     let bytes = text.as_bytes();
     let id_end = args.start as usize + id_text.len();
-    let spaces = padding(key.text(text), id_text, value);
     let gap = &bytes[key.end as usize..args.start as usize];
-    let value_is_as_read = match known.map(Key::value_kind) {
-        Some(ValueKind::Pose | ValueKind::Point) => {
-            matches!(
-                single_spaced(value, || syntax::tokens(value, 0)),
-                Cow::Borrowed(_)
-            )
-        }
-        _ => true,
+    // A value of numbers is written single-spaced: it is so if no blank is next to another
+    // (it starts and ends with none).
+    let single_spaced = || {
+        let value = value.as_bytes();
+        !value.contains(&b'\t') && !value.windows(2).any(|pair| pair == b"  ")
     };
     line.indent.is_empty()
         && line.trailing.is_empty()
         && line.ending == LineEnding::Lf
-        && gap.len() == spaces
-        && gap.iter().all(|&byte| byte == b' ')
         && match value.is_empty() {
             true => id_end == args.end as usize,
             false => bytes[id_end] == b' ' && id_end + 1 + value.len() == args.end as usize,
         }
-        && value_is_as_read
+        && gap == &PADDING.as_bytes()[..padding(key.text(text), id_text, value)]
+        && match known.map(Key::value_kind) {
+            Some(ValueKind::Pose | ValueKind::Point) => single_spaced(),
+            _ => true,
+        }
 }
 
 /// Whether a line that is not blank ends in a carriage return that is not part of a CRLF.
@@ -581,11 +581,23 @@ pub(super) fn read(text: &str, key: Span, args: Span) -> Place<'_> {
 }
 
 /// The id of a location line's arguments, its text, and the value after it (possibly empty).
+/// (Byte by byte: an id is a few bytes, and this is done for every line.)
 fn split_id(args: &str) -> Option<(u32, &str, &str)> {
-    let (id_span, id_text) = syntax::tokens(args, 0).next()?;
+    let bytes = args.as_bytes();
+    let blanks_end = |mut at: usize| {
+        while at < bytes.len() && is_blank(bytes[at]) {
+            at += 1;
+        }
+        at
+    };
+    let start = blanks_end(0);
+    let mut end = start;
+    while end < bytes.len() && !is_blank(bytes[end]) {
+        end += 1;
+    }
+    let id_text = &args[start..end];
     let id = parse_id(id_text)?;
-    let value = args[id_span.end as usize..].trim_start_matches([' ', '\t']);
-    Some((id, id_text, value))
+    Some((id, id_text, &args[blanks_end(end)..]))
 }
 
 /// The `items` of `text` (with their spans in it) joined by single spaces; borrowed when
@@ -724,6 +736,49 @@ mod tests {
             let mut seen = Vec::new();
             read_in_parts_of(&text, at_a_time, starts, |start| seen.push(start));
             assert_eq!(seen, expected, "{at_a_time}");
+        }
+    }
+
+    proptest::proptest! {
+        /// A line is marked as written exactly when laying it out gives it back: around each
+        /// rule of the layout (the padding, the robot's line buffer, blanks in a value of
+        /// numbers and of text, the line ending, the indentation, a key of other letters).
+        #[test]
+        fn a_line_is_marked_as_written_when_the_layout_writes_it_so(
+            indent in proptest::sample::select(vec!["", "", "", " ", "\t"]),
+            key in proptest::sample::select(vec![
+                "robotLocation", "robotLocationDescription", "gestureTarget", "GESTURETARGET",
+                "zzz", "clé", "postGestureMessageKinyarwanda", "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaa",
+                "bbbbbbbbbbbbbbbbbbbbbbbbbbbbbbb",
+            ]),
+            gap in proptest::sample::select(vec![" ", "\t", "  \t", " \t "]),
+            spaces in proptest::option::of(0usize..32),
+            id in proptest::sample::select(vec!["1", "42", "+7"]),
+            separator in proptest::sample::select(vec!["", " ", " ", " ", "  ", "\t"]),
+            value in proptest::sample::select(vec!["", "1 2 3", "1  2 3", "1 2\t3", "a  b"]),
+            long in 0usize..200,
+            end in proptest::sample::select(vec!["\n", "\n", "\n", " \n", "\r\n", ""]),
+        ) {
+            let value = match (value, long) {
+                ("", 0) => String::new(),
+                _ => format!("{value}{}", "v".repeat(long)),
+            };
+            let separator = if value.is_empty() { "" } else { separator };
+            // The padding the layout writes, or another.
+            let gap = match spaces {
+                None => " ".repeat(padding(key, id, &value)),
+                Some(0) => gap.to_string(),
+                Some(spaces) => " ".repeat(spaces),
+            };
+            let text = format!("{indent}{key}{gap}{id}{separator}{value}{end}");
+            let line = syntax::lines(&text).next().unwrap();
+            let Body::Entry { key, args } = line.body else {
+                panic!("an entry: {text:?}");
+            };
+            if let Placement::Located { as_written, .. } = placement(&text, &line, key, args) {
+                let laid_out = Document::parse(&text).unwrap().render();
+                proptest::prop_assert_eq!(as_written, laid_out == text, "{:?}", text);
+            }
         }
     }
 

@@ -1,7 +1,6 @@
 //! Which new lines keep their place ([`first_reading`]), and the changes around them
 //! ([`changes`]).
 
-use std::cmp::Reverse;
 use std::ops::{ControlFlow, Range};
 
 use super::follow::Finder;
@@ -223,17 +222,23 @@ fn heaviest_chain(runs: &[Run]) -> Vec<usize> {
     let mut best = BestBefore::new(lasts.len());
     let mut previous = vec![NONE; runs.len()];
     for (index, run) in runs.iter().enumerate() {
-        let before = best.before(lasts.partition_point(|&last| last < run.first));
-        previous[index] = before.map_or(NONE, |chain| chain.run.0);
-        let chain = Chain {
-            weight: u64::from(run.equal) + before.map_or(0, |chain| chain.weight),
-            last: Reverse(run.last),
-            run: Reverse(index as u32),
+        let first = lasts.partition_point(|&last| last < run.first);
+        let before = best.before(first);
+        previous[index] = before.run().unwrap_or(NONE);
+        let chain = Chain::new(
+            u64::from(run.equal) + before.weight(),
+            run.last,
+            index as u32,
+        );
+        // The run's own last origin is next, unless another run's ends within it.
+        let place = match lasts[first] == run.last {
+            true => first,
+            false => first + lasts[first..].partition_point(|&last| last < run.last),
         };
-        best.offer(lasts.partition_point(|&last| last < run.last), chain);
+        best.offer(place, chain);
     }
     let mut chain = Vec::new();
-    let mut at = best.before(lasts.len()).map_or(NONE, |chain| chain.run.0);
+    let mut at = best.before(lasts.len()).run().unwrap_or(NONE);
     while at != NONE {
         chain.push(at as usize);
         at = previous[at as usize];
@@ -242,27 +247,42 @@ fn heaviest_chain(runs: &[Run]) -> Vec<usize> {
     chain
 }
 
-/// A chain of runs as [`heaviest_chain`] weighs them: the heavier is better, then the one
-/// that ends at the lower origin, then the one whose last run comes first.
+/// A chain of runs as [`heaviest_chain`] weighs them, in one number that orders them so:
+/// the heavier is better, then the one that ends at the lower origin, then the one whose
+/// last run comes first. 0 is no chain.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-struct Chain {
-    weight: u64,
-    last: Reverse<u32>,
-    run: Reverse<u32>,
+struct Chain(u128);
+
+impl Chain {
+    const NONE: Chain = Chain(0);
+
+    /// The chain of `weight` whose last run, `run`, ends at origin `last`.
+    fn new(weight: u64, last: u32, run: u32) -> Chain {
+        Chain(u128::from(weight) << 64 | u128::from(!last) << 32 | u128::from(!run))
+    }
+
+    fn weight(self) -> u64 {
+        (self.0 >> 64) as u64
+    }
+
+    /// The chain's last run, if it is a chain.
+    fn run(self) -> Option<u32> {
+        (self != Chain::NONE).then_some(!(self.0 as u32))
+    }
 }
 
 /// The best chain ending at each of `n` places (the last origins, numbered in order), asked
 /// of the places below one: a Fenwick tree of maxima.
-struct BestBefore(Vec<Option<Chain>>);
+struct BestBefore(Vec<Chain>);
 
 impl BestBefore {
     fn new(places: usize) -> BestBefore {
-        BestBefore(vec![None; places])
+        BestBefore(vec![Chain::NONE; places])
     }
 
-    /// The best chain ending at a place below `end`, if any.
-    fn before(&self, mut end: usize) -> Option<Chain> {
-        let mut best = None;
+    /// The best chain ending at a place below `end` ([`Chain::NONE`] if none).
+    fn before(&self, mut end: usize) -> Chain {
+        let mut best = Chain::NONE;
         while end > 0 {
             best = best.max(self.0[end - 1]);
             end &= end - 1;
@@ -274,7 +294,7 @@ impl BestBefore {
     fn offer(&mut self, mut place: usize, chain: Chain) {
         while place < self.0.len() {
             let best = &mut self.0[place];
-            *best = (*best).max(Some(chain));
+            *best = (*best).max(chain);
             place |= place + 1;
         }
     }
@@ -464,17 +484,17 @@ mod tests {
 
     /// [`heaviest_chain`] as its doc says, run by run against every run before: O(n²).
     fn chain_by_definition(runs: &[Run]) -> Vec<usize> {
-        let mut chains: Vec<(Chain, Option<usize>)> = Vec::new();
+        use std::cmp::Reverse;
+        /// A chain's weight, last origin and last run, ordered as its doc says.
+        type Weighed = (u64, Reverse<u32>, Reverse<usize>);
+        // Each run's chain, and the run before it in the chain.
+        let mut chains: Vec<(Weighed, Option<usize>)> = Vec::new();
         for (index, run) in runs.iter().enumerate() {
             let before = (0..index)
                 .filter(|&other| runs[other].last < run.first)
                 .max_by_key(|&other| chains[other].0);
-            let chain = Chain {
-                weight: u64::from(run.equal) + before.map_or(0, |other| chains[other].0.weight),
-                last: Reverse(run.last),
-                run: Reverse(index as u32),
-            };
-            chains.push((chain, before));
+            let weight = u64::from(run.equal) + before.map_or(0, |other| chains[other].0 .0);
+            chains.push(((weight, Reverse(run.last), Reverse(index)), before));
         }
         let mut at = (0..runs.len()).max_by_key(|&index| chains[index].0);
         let mut chain = Vec::new();
