@@ -434,8 +434,14 @@ impl<'o> Pairing<'o> {
         };
         self.blank_put_in = !pair && new_line.text == "\n";
         if pair {
-            let old_text = old_line(old, self.at);
-            if old_text == new_line.text {
+            let (old_text, equal) = match recorded_as(old, self.at, new_line.text) {
+                Some(old_text) => (old_text, true),
+                None => {
+                    let old_text = old_line(old, self.at);
+                    (old_text, old_text == new_line.text)
+                }
+            };
+            if equal {
                 if let Some((old_start, new_start)) = self.open.take() {
                     self.close(old_start..self.line, new_start..self.index);
                 }
@@ -469,6 +475,16 @@ impl<'o> Pairing<'o> {
         self.changes.old_lines = self.line;
         self.changes
     }
+}
+
+/// The old line that starts at `at`, if the new line `text` is that very line of `old` (a
+/// line recorded as its origin's: nearly every line of a large diff): then its end is not
+/// searched for, nor its bytes compared.
+fn recorded_as<'o>(old: &'o str, at: usize, text: &str) -> Option<&'o str> {
+    let end = at + text.len();
+    let whole_line = text.ends_with('\n') || end == old.len();
+    (std::ptr::eq(text.as_ptr(), old[at..].as_ptr()) && end <= old.len() && whole_line)
+        .then(|| &old[at..end])
 }
 
 /// Whether `text` ends with a line that is only a line ending (`\n`), after another line or
