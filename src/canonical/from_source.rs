@@ -126,6 +126,8 @@ enum Seen {
 /// What the first reading needs of the lines from `lines` up to `end` (see [`Seen`]).
 fn seen_lines(text: &str, lines: syntax::Lines<'_>, end: usize) -> Vec<Seen> {
     let mut seen_entry = false;
+    // Whether no comment line came after the last entry line read.
+    let mut no_comment_since_entry = false;
     lines
         .take_while(|line| (line.span.start as usize) < end)
         .filter_map(|line| {
@@ -141,13 +143,23 @@ fn seen_lines(text: &str, lines: syntax::Lines<'_>, end: usize) -> Vec<Seen> {
                         start: line.span.start,
                     })
                 }
-                Body::Blank | Body::Comment(_) => None,
+                Body::Blank => None,
+                Body::Comment(_) => {
+                    no_comment_since_entry = false;
+                    None
+                }
                 Body::Entry { key, args } => {
                     seen_entry = true;
+                    let mut placement = placement(text, &line, key, args);
+                    // A line with comments above it is not marked: they are found from it.
+                    if let Placement::Located { as_written, .. } = &mut placement {
+                        *as_written &= no_comment_since_entry;
+                    }
+                    no_comment_since_entry = true;
                     Some(Seen::Entry {
                         start: line.span.start,
                         end: line.span.end,
-                        placement: placement(text, &line, key, args),
+                        placement,
                     })
                 }
             }

@@ -70,9 +70,11 @@ const MIN_BLOCKS_PER_PART: usize = 1 << 9;
 const MIN_LINES_PER_PART: usize = 1 << 13;
 
 /// The bit of an entry line's start in [`Document::order`] that says the line is written
-/// as the layout writes it (the first reading found it so, as it found its id): then it is
-/// recorded as it is, without being read and laid out again (nearly every line of a file
-/// that `ekb fmt` wrote). Starts are below it: a text that is not is read without it.
+/// as the layout writes it, with no comment line between it and the entry line before it
+/// (the first reading found it so, as it found its id): then it is recorded as it is,
+/// without being read and laid out again, nor its comments looked for (nearly every line
+/// of a file that `ekb fmt` wrote). Starts are below it: a text that is not is read
+/// without it.
 const AS_WRITTEN: u32 = 1 << 31;
 
 /// An entry line's start in [`Document::order`], and whether it is [`AS_WRITTEN`].
@@ -488,7 +490,16 @@ impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
     ) -> ControlFlow<()> {
         let document = self.document;
         let mut first = new_section;
-        let comments = document.comments_start(start);
+        let comments = match as_written {
+            true => start,
+            false => document.comments_start(start),
+        };
+        debug_assert!(
+            !as_written
+                || (document.comments_between(document.comments_start(start), start))
+                    .next()
+                    .is_none()
+        );
         // (Without comments above it, the line is not lexed once more to find none.)
         if comments < start {
             for (line, comment) in document.comments_between(comments, start) {
