@@ -9,14 +9,16 @@
 use std::borrow::Cow;
 use std::fmt;
 
-use super::{known_key, slot, Document, Written, UNKNOWN_SLOT};
+use super::{
+    entry_start, known_key, padding, slot, Document, Written, AS_WRITTEN, PADDING, UNKNOWN_SLOT,
+};
 use crate::model::build::{parse_id, tour_items};
 use crate::model::{IdMap, Key, ValueKind};
 use crate::parallel;
 use crate::render::escape::escape;
 use crate::rewrite::{name_lines, NAMED_LINES};
 use crate::suppression;
-use crate::syntax::{self, Body, Line, Span};
+use crate::syntax::{self, is_blank, Body, Line, LineEnding, Span};
 
 /// Lines ending in a carriage return that is not part of a CRLF: written before the
 /// layout's LF, it would turn into a line ending and vanish from the value.
@@ -92,7 +94,8 @@ struct Layout {
     /// The located entries' blocks, and how many lines each has.
     blocks: Blocks,
     located: usize,
-    /// Each located line's start and block, in file order, kept while they take at most an
+    /// Each located line's start (with [`AS_WRITTEN`] if it is) and block, in file order,
+    /// kept while they take at most an
     /// eighth of the text's size (lines of a usual length): then the lines are not read
     /// again to be put in order.
     placed: Option<Vec<(u32, u32)>>,
@@ -123,6 +126,8 @@ enum Seen {
 /// What the first reading needs of the lines from `lines` up to `end` (see [`Seen`]).
 fn seen_lines(text: &str, lines: syntax::Lines<'_>, end: usize) -> Vec<Seen> {
     let mut seen_entry = false;
+    // Whether no comment line came after the last entry line read.
+    let mut no_comment_since_entry = false;
     lines
         .take_while(|line| (line.span.start as usize) < end)
         .filter_map(|line| {
@@ -138,13 +143,23 @@ fn seen_lines(text: &str, lines: syntax::Lines<'_>, end: usize) -> Vec<Seen> {
                         start: line.span.start,
                     })
                 }
-                Body::Blank | Body::Comment(_) => None,
+                Body::Blank => None,
+                Body::Comment(_) => {
+                    no_comment_since_entry = false;
+                    None
+                }
                 Body::Entry { key, args } => {
                     seen_entry = true;
+                    let mut placement = placement(text, &line, key, args);
+                    // A line with comments above it is not marked: they are found from it.
+                    if let Placement::Located { as_written, .. } = &mut placement {
+                        *as_written &= no_comment_since_entry;
+                    }
+                    no_comment_since_entry = true;
                     Some(Seen::Entry {
                         start: line.span.start,
                         end: line.span.end,
-                        placement: placement(text, key, args),
+                        placement,
                     })
                 }
             }
@@ -177,6 +192,11 @@ impl Layout {
     /// The first reading of `text`, its lines read in parts on the cores.
     fn read(text: &str) -> Result<Layout, Unformattable> {
         let most_placed = text.len() / PLACED_SHARE / std::mem::size_of::<(u32, u32)>();
+        // (Starts of a text this long would not leave the bit free.)
+        let as_written_bit = match text.len() <= AS_WRITTEN as usize {
+            true => AS_WRITTEN,
+            false => 0,
+        };
         let mut layout = Layout {
             placed: Some(Vec::with_capacity(most_placed)),
             ..Layout::default()
@@ -202,11 +222,16 @@ impl Layout {
                 match placement {
                     Placement::Tour => layout.tour.push(start),
                     Placement::Unplaced => layout.unplaced.push(start),
-                    Placement::Located { id, slot } => {
+                    Placement::Located {
+                        id,
+                        slot,
+                        as_written,
+                    } => {
                         let block = layout.blocks.count(id, slot);
                         match &mut layout.placed {
                             Some(placed) if placed.len() < most_placed => {
-                                placed.push((start, block));
+                                let bit = if as_written { as_written_bit } else { 0 };
+                                placed.push((start | bit, block));
                             }
                             _ => layout.placed = None,
                         }
@@ -412,7 +437,7 @@ fn each_located(text: &str, each: impl FnMut((u32, u32))) {
         lines
             .take_while(|line| (line.span.start as usize) < end)
             .filter_map(|line| match line.body {
-                Body::Entry { key, args } => match placement(text, key, args) {
+                Body::Entry { key, args } => match placement(text, &line, key, args) {
                     Placement::Located { id, .. } => Some((line.span.start, id)),
                     _ => None,
                 },
@@ -426,8 +451,8 @@ fn each_located(text: &str, each: impl FnMut((u32, u32))) {
 /// Puts the lines starting at `block` in key order ([`slot`]), keeping the order of lines of
 /// the same slot: a counting sort over the few slots.
 fn sort_by_slot(text: &str, block: &mut [u32]) {
-    let slot_at = |start: u32| {
-        let line = syntax::lines_from(text, start as usize).next();
+    let slot_at = |placed: u32| {
+        let line = syntax::lines_from(text, entry_start(placed).0 as usize).next();
         match line.map(|line| line.body) {
             Some(Body::Entry { key, .. }) => slot(known_key(key.text(text))),
             _ => unreachable!("an entry line starts there"),
@@ -454,22 +479,64 @@ fn sort_by_slot(text: &str, block: &mut [u32]) {
 enum Placement {
     Tour,
     Unplaced,
-    Located { id: u32, slot: u8 },
+    Located {
+        id: u32,
+        slot: u8,
+        /// Whether the line is written as the layout writes it.
+        as_written: bool,
+    },
 }
 
-/// Where the entry line `key args` of `text` goes ([`read`] without making its value).
-fn placement(text: &str, key: Span, args: Span) -> Placement {
+/// Where the entry line `line` (`key args`) of `text` goes ([`read`] without making its
+/// value).
+fn placement(text: &str, line: &Line, key: Span, args: Span) -> Placement {
     let known = known_key(key.text(text));
     if known == Some(Key::TourSpecification) {
         return Placement::Tour;
     }
     match split_id(args.text(text)) {
-        Some((id, _, _)) => Placement::Located {
+        Some((id, id_text, value)) => Placement::Located {
             id,
             slot: slot(known),
+            as_written: is_as_written(text, line, known, (key, args), id_text, value),
         },
         None => Placement::Unplaced,
     }
+}
+
+/// Whether the located entry line `line` of `text`, whose `key` and `args` [`split_id`] cut
+/// into `id_text` and `value`, is written as the layout writes it ([`read`] and
+/// [`push_entry`](super::push_entry)): the key, id and value are the line's own, so it is
+/// when what is between them is, and the value is as [`read`] makes it.
+fn is_as_written(
+    text: &str,
+    line: &Line,
+    known: Option<Key>,
+    (key, args): (Span, Span),
+    id_text: &str,
+    value: &str,
+) -> bool {
+    let bytes = text.as_bytes();
+    let id_end = args.start as usize + id_text.len();
+    let gap = &bytes[key.end as usize..args.start as usize];
+    // A value of numbers is written single-spaced: it is so if no blank is next to another
+    // (it starts and ends with none).
+    let single_spaced = || {
+        let value = value.as_bytes();
+        !value.contains(&b'\t') && !value.windows(2).any(|pair| pair == b"  ")
+    };
+    line.indent.is_empty()
+        && line.trailing.is_empty()
+        && line.ending == LineEnding::Lf
+        && match value.is_empty() {
+            true => id_end == args.end as usize,
+            false => bytes[id_end] == b' ' && id_end + 1 + value.len() == args.end as usize,
+        }
+        && gap == &PADDING.as_bytes()[..padding(key.text(text), id_text, value)]
+        && match known.map(Key::value_kind) {
+            Some(ValueKind::Pose | ValueKind::Point) => single_spaced(),
+            _ => true,
+        }
 }
 
 /// Whether a line that is not blank ends in a carriage return that is not part of a CRLF.
@@ -526,11 +593,23 @@ pub(super) fn read(text: &str, key: Span, args: Span) -> Place<'_> {
 }
 
 /// The id of a location line's arguments, its text, and the value after it (possibly empty).
+/// (Byte by byte: an id is a few bytes, and this is done for every line.)
 fn split_id(args: &str) -> Option<(u32, &str, &str)> {
-    let (id_span, id_text) = syntax::tokens(args, 0).next()?;
+    let bytes = args.as_bytes();
+    let blanks_end = |mut at: usize| {
+        while at < bytes.len() && is_blank(bytes[at]) {
+            at += 1;
+        }
+        at
+    };
+    let start = blanks_end(0);
+    let mut end = start;
+    while end < bytes.len() && !is_blank(bytes[end]) {
+        end += 1;
+    }
+    let id_text = &args[start..end];
     let id = parse_id(id_text)?;
-    let value = args[id_span.end as usize..].trim_start_matches([' ', '\t']);
-    Some((id, id_text, value))
+    Some((id, id_text, &args[blanks_end(end)..]))
 }
 
 /// The `items` of `text` (with their spans in it) joined by single spaces; borrowed when
@@ -669,6 +748,49 @@ mod tests {
             let mut seen = Vec::new();
             read_in_parts_of(&text, at_a_time, starts, |start| seen.push(start));
             assert_eq!(seen, expected, "{at_a_time}");
+        }
+    }
+
+    proptest::proptest! {
+        /// A line is marked as written exactly when laying it out gives it back: around each
+        /// rule of the layout (the padding, the robot's line buffer, blanks in a value of
+        /// numbers and of text, the line ending, the indentation, a key of other letters).
+        #[test]
+        fn a_line_is_marked_as_written_when_the_layout_writes_it_so(
+            indent in proptest::sample::select(vec!["", "", "", " ", "\t"]),
+            key in proptest::sample::select(vec![
+                "robotLocation", "robotLocationDescription", "gestureTarget", "GESTURETARGET",
+                "zzz", "clé", "postGestureMessageKinyarwanda", "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaa",
+                "bbbbbbbbbbbbbbbbbbbbbbbbbbbbbbb",
+            ]),
+            gap in proptest::sample::select(vec![" ", "\t", "  \t", " \t "]),
+            spaces in proptest::option::of(0usize..32),
+            id in proptest::sample::select(vec!["1", "42", "+7"]),
+            separator in proptest::sample::select(vec!["", " ", " ", " ", "  ", "\t"]),
+            value in proptest::sample::select(vec!["", "1 2 3", "1  2 3", "1 2\t3", "a  b"]),
+            long in 0usize..200,
+            end in proptest::sample::select(vec!["\n", "\n", "\n", " \n", "\r\n", ""]),
+        ) {
+            let value = match (value, long) {
+                ("", 0) => String::new(),
+                _ => format!("{value}{}", "v".repeat(long)),
+            };
+            let separator = if value.is_empty() { "" } else { separator };
+            // The padding the layout writes, or another.
+            let gap = match spaces {
+                None => " ".repeat(padding(key, id, &value)),
+                Some(0) => gap.to_string(),
+                Some(spaces) => " ".repeat(spaces),
+            };
+            let text = format!("{indent}{key}{gap}{id}{separator}{value}{end}");
+            let line = syntax::lines(&text).next().unwrap();
+            let Body::Entry { key, args } = line.body else {
+                panic!("an entry: {text:?}");
+            };
+            if let Placement::Located { as_written, .. } = placement(&text, &line, key, args) {
+                let laid_out = Document::parse(&text).unwrap().render();
+                proptest::prop_assert_eq!(as_written, laid_out == text, "{:?}", text);
+            }
         }
     }
 

@@ -69,6 +69,19 @@ const MIN_BLOCKS_PER_PART: usize = 1 << 9;
 /// The fewest lines a core is given to lay out: fewer are not worth starting a thread.
 const MIN_LINES_PER_PART: usize = 1 << 13;
 
+/// The bit of an entry line's start in [`Document::order`] that says the line is written
+/// as the layout writes it, with no comment line between it and the entry line before it
+/// (the first reading found it so, as it found its id): then it is recorded as it is,
+/// without being read and laid out again, nor its comments looked for (nearly every line
+/// of a file that `ekb fmt` wrote). Starts are below it: a text that is not is read
+/// without it.
+const AS_WRITTEN: u32 = 1 << 31;
+
+/// An entry line's start in [`Document::order`], and whether it is [`AS_WRITTEN`].
+fn entry_start(placed: u32) -> (u32, bool) {
+    (placed & !AS_WRITTEN, placed & AS_WRITTEN != 0)
+}
+
 /// The widest padding a key gets (`VALUE_COLUMN - 1` spaces, for a key of one character).
 const PADDING: &str = "                              ";
 
@@ -110,7 +123,7 @@ pub struct Document<'a> {
     /// they come first, where they are seen.
     unplaced: Vec<u32>,
     /// Where each located entry line starts, block after block (one per location, in order
-    /// of first appearance), each block in key order.
+    /// of first appearance), each block in key order; with [`AS_WRITTEN`] if it is.
     order: Vec<u32>,
     /// Where each block ends in `order`.
     block_ends: Vec<u32>,
@@ -432,7 +445,7 @@ impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
             self.line(Unread::Item(Item::Comment(comment)), start, n == 0)?;
         }
         for (n, &start) in document.unplaced.iter().enumerate() {
-            self.entry(start, n == 0, false)?;
+            self.entry(start, n == 0, false, false)?;
         }
         ControlFlow::Continue(())
     }
@@ -445,7 +458,8 @@ impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
             .map_or(0, |before| document.block_ends[before]);
         let lines = &document.order[start as usize..document.block_ends[block] as usize];
         for (n, &line) in lines.iter().enumerate() {
-            self.entry(line, n == 0, false)?;
+            let (start, as_written) = entry_start(line);
+            self.entry(start, n == 0, false, as_written)?;
         }
         ControlFlow::Continue(())
     }
@@ -454,7 +468,7 @@ impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
     fn tail(&mut self) -> ControlFlow<()> {
         let document = self.document;
         for (n, &start) in document.tour.iter().enumerate() {
-            self.entry(start, n == 0, true)?;
+            self.entry(start, n == 0, true, false)?;
         }
         let end = document.text.len() as u32;
         for (n, (start, comment)) in document
@@ -466,11 +480,26 @@ impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
         ControlFlow::Continue(())
     }
 
-    /// The entry line at `start`, after the comments above it.
-    fn entry(&mut self, start: u32, new_section: bool, tour: bool) -> ControlFlow<()> {
+    /// The entry line at `start` ([`AS_WRITTEN`] or not), after the comments above it.
+    fn entry(
+        &mut self,
+        start: u32,
+        new_section: bool,
+        tour: bool,
+        as_written: bool,
+    ) -> ControlFlow<()> {
         let document = self.document;
         let mut first = new_section;
-        let comments = document.comments_start(start);
+        let comments = match as_written {
+            true => start,
+            false => document.comments_start(start),
+        };
+        debug_assert!(
+            !as_written
+                || (document.comments_between(document.comments_start(start), start))
+                    .next()
+                    .is_none()
+        );
         // (Without comments above it, the line is not lexed once more to find none.)
         if comments < start {
             for (line, comment) in document.comments_between(comments, start) {
@@ -478,7 +507,12 @@ impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
                 self.line(comment, line, std::mem::take(&mut first))?;
             }
         }
-        self.line(Unread::Entry { start, tour }, start, first)
+        let entry = Unread::Entry {
+            start,
+            tour,
+            as_written,
+        };
+        self.line(entry, start, first)
     }
 
     /// A line made from the line of the text at `origin`, the first of a section if
@@ -506,14 +540,19 @@ impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
 #[derive(Clone)]
 enum Unread<'d> {
     Item(Item<'d>),
-    Entry { start: u32, tour: bool },
+    Entry {
+        start: u32,
+        tour: bool,
+        /// The line is written as the layout writes it ([`AS_WRITTEN`]).
+        as_written: bool,
+    },
 }
 
 impl<'d> Unread<'d> {
     fn read(self, document: &'d Document<'_>) -> Item<'d> {
         match self {
             Unread::Item(item) => item,
-            Unread::Entry { start, tour } => Item::Entry(document.entry_at(start, tour)),
+            Unread::Entry { start, tour, .. } => Item::Entry(document.entry_at(start, tour)),
         }
     }
 }
@@ -527,7 +566,13 @@ impl NewLines for Document<'_> {
     /// The entry lines in the order the layout writes them ascend in the text: then so do
     /// the comments that go with them (the header's before, the footer's after).
     fn origins_ascend(&self) -> bool {
-        let entries = self.unplaced.iter().chain(&self.order).chain(&self.tour);
+        let order = self.order.iter().map(|&placed| entry_start(placed).0);
+        let entries = self
+            .unplaced
+            .iter()
+            .copied()
+            .chain(order)
+            .chain(self.tour.iter().copied());
         entries
             .clone()
             .zip(entries.skip(1))
@@ -540,7 +585,7 @@ impl NewLines for Document<'_> {
         let mut head = Walk {
             document: self,
             sections: 0,
-            visit: recording(self, &mut recorded),
+            visit: recording(self, old, &mut recorded),
         };
         let _ = head.head();
         let sections = head.sections;
@@ -558,7 +603,7 @@ impl NewLines for Document<'_> {
                 let mut walk = Walk {
                     document: self,
                     sections: sections + share.start(),
-                    visit: recording(self, &mut part),
+                    visit: recording(self, old, &mut part),
                 };
                 let mut block = share.start();
                 while block < share.end(block) {
@@ -575,7 +620,7 @@ impl NewLines for Document<'_> {
         let mut tail = Walk {
             document: self,
             sections: sections + blocks,
-            visit: recording(self, &mut recorded),
+            visit: recording(self, old, &mut recorded),
         };
         let _ = tail.tail();
         drop(tail);
@@ -607,13 +652,35 @@ impl NewLines for Document<'_> {
     }
 }
 
-/// A visit of a [`Walk`] that lays out each line, and records it in `recorded`.
+/// A visit of a [`Walk`] that lays out each line, and records it in `recorded`, of lines
+/// made from `old`: an entry line [`AS_WRITTEN`] is recorded as its origin's line without
+/// being laid out, if `old` is the document's text.
 fn recording<'d, 'r, 'o>(
     document: &'d Document<'_>,
+    old: &'o str,
     recorded: &'r mut Recorded<'o>,
 ) -> impl FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()> + use<'d, 'r, 'o> {
     let mut text = String::new();
+    let old_is_text = std::ptr::eq(old, document.text());
     move |line, origin| {
+        if let (
+            Unread::Entry {
+                start,
+                as_written: true,
+                ..
+            },
+            true,
+        ) = (&line, old_is_text)
+        {
+            if cfg!(debug_assertions) {
+                text.clear();
+                push_item(&mut text, &line.clone().read(document));
+                let written = &document.text()[*start as usize..];
+                assert!(written.starts_with(&text), "not as written: {text:?}");
+            }
+            recorded.push_its_origin(*start);
+            return ControlFlow::Continue(());
+        }
         text.clear();
         push_item(&mut text, &line.read(document));
         recorded.push(NewLine {
@@ -637,26 +704,29 @@ fn push_item(out: &mut String, item: &Item<'_>) {
 fn push_entry(out: &mut String, key: &str, id: Option<&str>, value: &str) {
     out.push_str(key);
     if let Some(id) = id {
-        let key_width = match key.is_ascii() {
-            true => key.len(),
-            false => key.chars().count(),
-        };
-        let padded = (VALUE_COLUMN - 1).max(key_width + 1) - key_width;
-        let value_length = if value.is_empty() { 0 } else { 1 + value.len() };
-        let unpadded_length = key.len() + 1 + id.len() + value_length + "\n".len();
-        // Pad unless the padding is what would make the robot cut the line.
-        let spaces = if unpadded_length + padded - 1 < LINE_BUFFER || unpadded_length >= LINE_BUFFER
-        {
-            padded
-        } else {
-            1
-        };
-        out.push_str(&PADDING[..spaces]);
+        out.push_str(&PADDING[..padding(key, id, value)]);
         out.push_str(id);
     }
     if !value.is_empty() {
         out.push(' ');
         out.push_str(value);
+    }
+}
+
+/// How many spaces the layout writes between `key` and `id` (before `value`).
+fn padding(key: &str, id: &str, value: &str) -> usize {
+    let key_width = match key.is_ascii() {
+        true => key.len(),
+        false => key.chars().count(),
+    };
+    let padded = (VALUE_COLUMN - 1).max(key_width + 1) - key_width;
+    let value_length = if value.is_empty() { 0 } else { 1 + value.len() };
+    let unpadded_length = key.len() + 1 + id.len() + value_length + "\n".len();
+    // Pad unless the padding is what would make the robot cut the line.
+    if unpadded_length + padded - 1 < LINE_BUFFER || unpadded_length >= LINE_BUFFER {
+        padded
+    } else {
+        1
     }
 }
 

@@ -1,7 +1,6 @@
 //! Which new lines keep their place ([`first_reading`]), and the changes around them
 //! ([`changes`]).
 
-use std::collections::BTreeMap;
 use std::ops::{ControlFlow, Range};
 
 use super::follow::Finder;
@@ -204,50 +203,101 @@ fn follows(old: &str, next: u32, origin: u32) -> bool {
 }
 
 /// The indices of the runs, ascending, of the chain whose origins ascend from run to run
-/// with the most equal lines.
+/// with the most equal lines: of the chains as heavy, the one that ends at the lowest
+/// origin, and of those the one whose last run comes first; each run's chain goes on from
+/// the chain chosen so among those that end before it starts.
+///
+/// A longest increasing subsequence, weighted, in O(n log n): the runs' last origins are
+/// numbered in order, and a [`BestBefore`] tree keeps the best chain ending at or below each.
 fn heaviest_chain(runs: &[Run]) -> Vec<usize> {
     const NONE: u32 = u32::MAX;
     if runs.len() <= 1 {
         return (0..runs.len()).collect();
     }
-    // For each last origin, the heaviest chain ending there and its last run; only chains
-    // heavier than every chain ending before are kept, so the weights ascend with the keys.
-    let mut frontier: BTreeMap<u32, (u64, u32)> = BTreeMap::new();
+    let mut lasts: Vec<u32> = runs.iter().map(|run| run.last).collect();
+    // A merge sort, fast on the few long ascending stretches that lines moved in order
+    // make (blocks in a tree's order ascend level by level).
+    lasts.sort();
+    lasts.dedup();
+    let mut best = BestBefore::new(lasts.len());
     let mut previous = vec![NONE; runs.len()];
     for (index, run) in runs.iter().enumerate() {
-        let before = frontier
-            .range(..run.first)
-            .next_back()
-            .map(|(_, &chain)| chain);
-        let weight = u64::from(run.equal) + before.map_or(0, |(weight, _)| weight);
-        previous[index] = before.map_or(NONE, |(_, last)| last);
-        let beaten = frontier
-            .range(..=run.last)
-            .next_back()
-            .is_some_and(|(_, &(other, _))| other >= weight);
-        if beaten {
-            continue;
-        }
-        let lighter: Vec<u32> = frontier
-            .range(run.last..)
-            .take_while(|(_, &(other, _))| other <= weight)
-            .map(|(&last, _)| last)
-            .collect();
-        for last in lighter {
-            frontier.remove(&last);
-        }
-        frontier.insert(run.last, (weight, index as u32));
+        let first = lasts.partition_point(|&last| last < run.first);
+        let before = best.before(first);
+        previous[index] = before.run().unwrap_or(NONE);
+        let chain = Chain::new(
+            u64::from(run.equal) + before.weight(),
+            run.last,
+            index as u32,
+        );
+        // The run's own last origin is next, unless another run's ends within it.
+        let place = match lasts[first] == run.last {
+            true => first,
+            false => first + lasts[first..].partition_point(|&last| last < run.last),
+        };
+        best.offer(place, chain);
     }
     let mut chain = Vec::new();
-    let mut at = frontier
-        .last_key_value()
-        .map_or(NONE, |(_, &(_, last))| last);
+    let mut at = best.before(lasts.len()).run().unwrap_or(NONE);
     while at != NONE {
         chain.push(at as usize);
         at = previous[at as usize];
     }
     chain.reverse();
     chain
+}
+
+/// A chain of runs as [`heaviest_chain`] weighs them, in one number that orders them so:
+/// the heavier is better, then the one that ends at the lower origin, then the one whose
+/// last run comes first. 0 is no chain.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+struct Chain(u128);
+
+impl Chain {
+    const NONE: Chain = Chain(0);
+
+    /// The chain of `weight` whose last run, `run`, ends at origin `last`.
+    fn new(weight: u64, last: u32, run: u32) -> Chain {
+        Chain(u128::from(weight) << 64 | u128::from(!last) << 32 | u128::from(!run))
+    }
+
+    fn weight(self) -> u64 {
+        (self.0 >> 64) as u64
+    }
+
+    /// The chain's last run, if it is a chain.
+    fn run(self) -> Option<u32> {
+        (self != Chain::NONE).then_some(!(self.0 as u32))
+    }
+}
+
+/// The best chain ending at each of `n` places (the last origins, numbered in order), asked
+/// of the places below one: a Fenwick tree of maxima.
+struct BestBefore(Vec<Chain>);
+
+impl BestBefore {
+    fn new(places: usize) -> BestBefore {
+        BestBefore(vec![Chain::NONE; places])
+    }
+
+    /// The best chain ending at a place below `end` ([`Chain::NONE`] if none).
+    fn before(&self, mut end: usize) -> Chain {
+        let mut best = Chain::NONE;
+        while end > 0 {
+            best = best.max(self.0[end - 1]);
+            end &= end - 1;
+        }
+        best
+    }
+
+    /// A chain ending at `place`.
+    fn offer(&mut self, mut place: usize, chain: Chain) {
+        while place < self.0.len() {
+            let best = &mut self.0[place];
+            *best = (*best).max(chain);
+            place |= place + 1;
+        }
+    }
 }
 
 /// A change: old lines (0-based, end excluded) replaced by new lines.
@@ -384,8 +434,14 @@ impl<'o> Pairing<'o> {
         };
         self.blank_put_in = !pair && new_line.text == "\n";
         if pair {
-            let old_text = old_line(old, self.at);
-            if old_text == new_line.text {
+            let (old_text, equal) = match recorded_as(old, self.at, new_line.text) {
+                Some(old_text) => (old_text, true),
+                None => {
+                    let old_text = old_line(old, self.at);
+                    (old_text, old_text == new_line.text)
+                }
+            };
+            if equal {
                 if let Some((old_start, new_start)) = self.open.take() {
                     self.close(old_start..self.line, new_start..self.index);
                 }
@@ -421,8 +477,67 @@ impl<'o> Pairing<'o> {
     }
 }
 
+/// The old line that starts at `at`, if the new line `text` is that very line of `old` (a
+/// line recorded as its origin's: nearly every line of a large diff): then its end is not
+/// searched for, nor its bytes compared.
+fn recorded_as<'o>(old: &'o str, at: usize, text: &str) -> Option<&'o str> {
+    let end = at + text.len();
+    let whole_line = text.ends_with('\n') || end == old.len();
+    (std::ptr::eq(text.as_ptr(), old[at..].as_ptr()) && end <= old.len() && whole_line)
+        .then(|| &old[at..end])
+}
+
 /// Whether `text` ends with a line that is only a line ending (`\n`), after another line or
 /// at the start.
 fn ends_with_blank_line(text: &str) -> bool {
     matches!(text.as_bytes(), [b'\n'] | [.., b'\n', b'\n'])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// [`heaviest_chain`] as its doc says, run by run against every run before: O(n²).
+    fn chain_by_definition(runs: &[Run]) -> Vec<usize> {
+        use std::cmp::Reverse;
+        /// A chain's weight, last origin and last run, ordered as its doc says.
+        type Weighed = (u64, Reverse<u32>, Reverse<usize>);
+        // Each run's chain, and the run before it in the chain.
+        let mut chains: Vec<(Weighed, Option<usize>)> = Vec::new();
+        for (index, run) in runs.iter().enumerate() {
+            let before = (0..index)
+                .filter(|&other| runs[other].last < run.first)
+                .max_by_key(|&other| chains[other].0);
+            let weight = u64::from(run.equal) + before.map_or(0, |other| chains[other].0 .0);
+            chains.push(((weight, Reverse(run.last), Reverse(index)), before));
+        }
+        let mut at = (0..runs.len()).max_by_key(|&index| chains[index].0);
+        let mut chain = Vec::new();
+        while let Some(index) = at {
+            chain.push(index);
+            at = chains[index].1;
+        }
+        chain.reverse();
+        chain
+    }
+
+    proptest! {
+        #[test]
+        fn the_heaviest_chain_is_the_one_its_doc_says(
+            runs in proptest::collection::vec((0u32..40, 0u32..6, 0u32..4), 0..60),
+        ) {
+            let runs: Vec<Run> = runs
+                .into_iter()
+                .map(|(first, length, equal)| Run {
+                    first,
+                    last: first + length,
+                    next: first + length + 1,
+                    lines: (0, 0),
+                    equal,
+                })
+                .collect();
+            prop_assert_eq!(heaviest_chain(&runs), chain_by_definition(&runs));
+        }
+    }
 }

@@ -72,6 +72,15 @@ impl<'o> Recorded<'o> {
         self.lines.push((origin, length));
     }
 
+    /// Records the next line, known to be the old line that starts at `origin`, as it is:
+    /// [`Recorded::push`] without comparing them.
+    pub fn push_its_origin(&mut self, origin: u32) {
+        let length = old_line(self.old, origin as usize).len() as u32;
+        let index = self.lines.len() as u32;
+        self.runs.line(self.old, index, origin, length, true);
+        self.lines.push((origin, length | AS_ITS_ORIGIN));
+    }
+
     /// Records the lines of `part` (recorded apart, as on another core) after these.
     pub fn append(&mut self, part: Recorded<'_>) {
         let offset = self.lines.len() as u32;
