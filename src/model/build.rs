@@ -207,7 +207,7 @@ struct Builder<'a> {
     index: IdMap<u32>,
     /// The location of the previous line: most lines follow one of the same id.
     last: Option<(u32, usize)>,
-    tour: Option<Tour>,
+    tour: Option<Tour<'a>>,
     /// The first `robotLocation` and `robotLocationPose` lines, and how many of each.
     first_pose_key: [Option<(Span, usize)>; 2],
     /// What the rules about the robot's reader need to know of the lines.
@@ -610,20 +610,12 @@ impl<'a> Builder<'a> {
                     None
                 }
             });
-        let stops = items
-            .filter_map(|(span, token)| match parse_id(token) {
-                Some(id) => Some(Value { value: id, span }),
-                None => {
-                    out.invalid_id(span, token, Key::TourSpecification);
-                    None
-                }
-            })
-            .collect();
-        let new = Tour {
-            span: args,
-            declared,
-            stops,
-        };
+        for (span, token) in items {
+            if parse_id(token).is_none() {
+                out.invalid_id(span, token, Key::TourSpecification);
+            }
+        }
+        let new = Tour::new(args, text, declared);
         if let Some(earlier) = &self.tour {
             out.duplicate_tour(args, earlier.span);
         }
