@@ -4,12 +4,10 @@
 //! between words do not count. A change of dialect is one difference, not a change to every
 //! pose: poses are compared by value, whichever key holds them.
 
-use std::cell::OnceCell;
-use std::collections::HashMap;
-
 use serde::Serialize;
+use std::cell::OnceCell;
 
-use crate::model::{Dialect, KnowledgeBase, Location, Tour};
+use crate::model::{Dialect, IdMap, KnowledgeBase, Location, Tour};
 use crate::present::field::{Field, FieldValue};
 use crate::present::Lines;
 
@@ -24,7 +22,7 @@ pub struct Diff<'a> {
     pub removed: Vec<LocationRef<'a>>,
     /// Locations in both whose fields differ, in id order.
     pub changed: Vec<LocationChange<'a>>,
-    pub tour: Option<TourChange>,
+    pub tour: Option<TourChange<'a>>,
 }
 
 /// A value before and after.
@@ -71,10 +69,10 @@ fn field_name<S: serde::Serializer>(field: &Field, s: S) -> Result<S::Ok, S::Err
 /// How the tour changed.
 #[derive(Debug, Serialize)]
 #[serde(rename_all = "camelCase")]
-pub struct TourChange {
+pub struct TourChange<'a> {
     /// `null` when that file has no tour.
-    pub old: Option<TourSide>,
-    pub new: Option<TourSide>,
+    pub old: Option<TourSide<'a>>,
+    pub new: Option<TourSide<'a>>,
     /// Stops only in the new tour (an id visited once more counts once more).
     pub added: Vec<u32>,
     /// Stops only in the old tour.
@@ -85,11 +83,25 @@ pub struct TourChange {
 
 /// One side of a tour change.
 #[derive(Debug, Serialize)]
-pub struct TourSide {
-    pub stops: Vec<u32>,
+pub struct TourSide<'a> {
+    /// Its stops, read from the tour's line when they are written out, not held: a tour may
+    /// have a million.
+    #[serde(rename = "stops", serialize_with = "stop_ids")]
+    pub tour: &'a Tour<'a>,
     /// The declared number of stops, `n`, which the robot's reader trusts (SPEC §2.8).
     pub declared: Option<u64>,
     pub line: u32,
+}
+
+impl TourSide<'_> {
+    /// The ids of the stops, in order.
+    pub fn stops(&self) -> impl Iterator<Item = u32> + '_ {
+        self.tour.stops().map(|stop| stop.value)
+    }
+}
+
+fn stop_ids<S: serde::Serializer>(tour: &&Tour<'_>, s: S) -> Result<S::Ok, S::Error> {
+    s.collect_seq(tour.stops().map(|stop| stop.value))
 }
 
 impl Diff<'_> {
@@ -191,10 +203,7 @@ pub fn diff<'a>(old: Side<'a>, new: Side<'a>) -> Diff<'a> {
         old: old.kb.dialect,
         new: new.kb.dialect,
     });
-    let mut tour = tour_change(
-        old.kb.tour.as_ref().map(side),
-        new.kb.tour.as_ref().map(side),
-    );
+    let mut tour = tour_change(old.kb.tour.as_ref(), new.kb.tour.as_ref());
     if let Some(tour) = &mut tour {
         for (side, tour, lines) in [
             (&mut tour.old, &old.kb.tour, &old_lines),
@@ -214,29 +223,31 @@ pub fn diff<'a>(old: Side<'a>, new: Side<'a>) -> Diff<'a> {
     }
 }
 
-/// A tour's side of a change, its line still to be found (0).
-fn side(tour: &Tour) -> TourSide {
-    TourSide {
-        stops: tour.stops.iter().map(|stop| stop.value).collect(),
-        declared: tour.declared.map(|n| n.value),
-        line: 0,
-    }
-}
-
-fn tour_change(old: Option<TourSide>, new: Option<TourSide>) -> Option<TourChange> {
-    let stops = |side: &Option<TourSide>| side.as_ref().map_or(Vec::new(), |s| s.stops.clone());
-    let declared = |side: &Option<TourSide>| side.as_ref().map(|s| s.declared);
-    let (old_stops, new_stops) = (stops(&old), stops(&new));
-    if old.is_some() == new.is_some() && old_stops == new_stops && declared(&old) == declared(&new)
+/// How the tour changed, if it did; each side's line still to be found (0). The stops are
+/// compared as they are read from the lines, and counted by id, so that two tours of a
+/// million stops cost no list of them, unless they differ (then the stops added or removed).
+fn tour_change<'a>(old: Option<&'a Tour<'a>>, new: Option<&'a Tour<'a>>) -> Option<TourChange<'a>> {
+    let stops = |tour: Option<&'a Tour<'a>>| {
+        tour.into_iter()
+            .flat_map(|tour| tour.stops().map(|stop| stop.value))
+    };
+    let declared = |tour: Option<&Tour>| tour.map(|tour| tour.declared.map(|n| n.value));
+    if old.is_some() == new.is_some() && stops(old).eq(stops(new)) && declared(old) == declared(new)
     {
         return None;
     }
-    let removed = without(&old_stops, &new_stops);
-    let added = without(&new_stops, &old_stops);
-    let reordered = without(&old_stops, &removed) != without(&new_stops, &added);
+    let removed: Vec<u32> = without(stops(old), stops(new)).collect();
+    let added: Vec<u32> = without(stops(new), stops(old)).collect();
+    let reordered = !without(stops(old), removed.iter().copied())
+        .eq(without(stops(new), added.iter().copied()));
+    let side = |tour: &'a Tour<'a>| TourSide {
+        tour,
+        declared: tour.declared.map(|n| n.value),
+        line: 0,
+    };
     Some(TourChange {
-        old,
-        new,
+        old: old.map(side),
+        new: new.map(side),
         added,
         removed,
         reordered,
@@ -244,52 +255,60 @@ fn tour_change(old: Option<TourSide>, new: Option<TourSide>) -> Option<TourChang
 }
 
 /// The stops of `a` that `b` lacks, counting repeats: `[1, 2, 2]` without `[2]` is `[2]`.
-fn without(a: &[u32], b: &[u32]) -> Vec<u32> {
-    let mut available: HashMap<u32, usize> = HashMap::new();
-    for &id in b {
+fn without(
+    a: impl Iterator<Item = u32>,
+    b: impl Iterator<Item = u32>,
+) -> impl Iterator<Item = u32> {
+    let mut available: IdMap<usize> = IdMap::default();
+    for id in b {
         *available.entry(id).or_default() += 1;
     }
-    a.iter()
-        .filter(|&&id| match available.get_mut(&id) {
-            Some(n) if *n > 0 => {
-                *n -= 1;
-                false
-            }
-            _ => true,
-        })
-        .copied()
-        .collect()
+    a.filter(move |id| match available.get_mut(id) {
+        Some(n) if *n > 0 => {
+            *n -= 1;
+            false
+        }
+        _ => true,
+    })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::syntax::Span;
 
     #[test]
     fn multiset_difference() {
+        let without = |a: &[u32], b: &[u32]| -> Vec<u32> {
+            super::without(a.iter().copied(), b.iter().copied()).collect()
+        };
         assert_eq!(without(&[1, 2, 2, 3], &[2, 3]), [1, 2]);
-        assert_eq!(
-            without(&[1, 4, 3, 2, 5], &[1, 3, 4, 2, 5]),
-            Vec::<u32>::new()
-        );
+        assert_eq!(without(&[1, 4, 3, 2, 5], &[1, 3, 4, 2, 5]), [0u32; 0]);
     }
 
     #[test]
     fn tour_changes() {
-        let side = |stops: &[u32]| {
-            Some(TourSide {
-                stops: stops.to_vec(),
-                declared: Some(stops.len() as u64),
-                line: 1,
-            })
+        // The arguments of a `tourSpecification` line: `n`, then the stops.
+        let tour = |text: &'static str| {
+            let n = text.split(' ').next().unwrap();
+            let declared = crate::model::Value {
+                value: n.parse().unwrap(),
+                span: Span::new(0, n.len()),
+            };
+            Tour::new(Span::new(0, text.len()), text, Some(declared))
         };
-        assert!(tour_change(side(&[1, 2]), side(&[1, 2])).is_none());
-        let change = tour_change(side(&[1, 4, 3, 2, 5]), side(&[1, 3, 4, 2, 6])).unwrap();
+        let (two, two_again) = (tour("2 1 2"), tour("2 1 2"));
+        assert!(tour_change(Some(&two), Some(&two_again)).is_none());
+        let (old, new) = (tour("5 1 4 3 2 5"), tour("5 1 3 4 2 6"));
+        let change = tour_change(Some(&old), Some(&new)).unwrap();
         assert_eq!(change.added, [6]);
         assert_eq!(change.removed, [5]);
         assert!(change.reordered);
-        let change = tour_change(side(&[1, 2]), side(&[1, 2, 3])).unwrap();
+        let three = tour("3 1 2 3");
+        let change = tour_change(Some(&two), Some(&three)).unwrap();
         assert!(!change.reordered);
-        assert!(tour_change(None, side(&[1])).unwrap().old.is_none());
+        let miscounted = tour("3 1 2");
+        assert!(tour_change(Some(&two), Some(&miscounted)).is_some());
+        assert!(tour_change(None, Some(&two)).unwrap().old.is_none());
     }
 }

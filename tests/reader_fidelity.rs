@@ -160,11 +160,7 @@ fn differences(kb: &KnowledgeBase<'_>, loaded: &Loaded, text: &str) -> Vec<Diffe
         }
     }
     let written_tour = kb.tour.as_ref().map(|tour| {
-        let stops: Vec<Option<i32>> = tour
-            .stops
-            .iter()
-            .map(|stop| Some(stop.value as i32))
-            .collect();
+        let stops: Vec<Option<i32>> = tour.stops().map(|stop| Some(stop.value as i32)).collect();
         stops
     });
     let loaded_tour = loaded.tour.as_ref().map(|tour| tour.stops.clone());

@@ -158,7 +158,7 @@ fn human(diff: &Diff<'_>, old_name: &str, new_name: &str, style: Style) -> Strin
     if let Some(tour) = &diff.tour {
         let side = |side: &Option<TourSide>, which: &str| match side {
             Some(side) => {
-                let stops = present::listed(side.stops.iter(), " → ");
+                let stops = present::listed(side.stops(), " → ");
                 format!("{stops} ({which} line {})", side.line)
             }
             None => "no tour".to_string(),

@@ -53,7 +53,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         stderr_line!("ekb: {file} has no tour: add a `tourSpecification` line");
         return Ok(Exit::Findings);
     };
-    if tour.stops.is_empty() {
+    if tour.has_no_stops() {
         stderr_line!("ekb: the tour of {file} has no stops");
         return Ok(Exit::Findings);
     }

@@ -57,7 +57,7 @@ impl From<&KnowledgeBase<'_>> for ExportedKnowledgeBase {
             tour: kb
                 .tour
                 .as_ref()
-                .map(|tour| tour.stops.iter().map(|stop| stop.value).collect()),
+                .map(|tour| tour.stops().map(|stop| stop.value).collect()),
         }
     }
 }

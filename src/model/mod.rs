@@ -249,14 +249,44 @@ impl std::fmt::Debug for SourceText<'_> {
 }
 
 /// The order in which the tour visits locations.
+///
+/// The stops are read again from the line's text whenever they are asked for, not held: a
+/// tour of a million stops is 2 MB of text, and was 12 MB as a list of values with spans.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Tour {
+pub struct Tour<'a> {
     /// The whole `tourSpecification` line's arguments.
     pub span: Span,
     /// The declared number of stops, `n`, if it is a number.
     pub declared: Option<Value<u64>>,
-    /// The location ids, in the order visited.
-    pub stops: Vec<Value<u32>>,
+    /// The text of `span`.
+    text: &'a str,
+}
+
+impl<'a> Tour<'a> {
+    /// The tour of the arguments `text` at `span`, whose first item declared `declared`.
+    pub fn new(span: Span, text: &'a str, declared: Option<Value<u64>>) -> Tour<'a> {
+        Tour {
+            span,
+            declared,
+            text,
+        }
+    }
+
+    /// The items after `n`, valid ids or not, with their spans: the robot counts them all.
+    pub fn listed(&self) -> impl Iterator<Item = (Span, &'a str)> + 'a {
+        build::tour_items(self.text, self.span.start as usize).skip(1)
+    }
+
+    /// The location ids, in the order visited (the items that are not ids left out).
+    pub fn stops(&self) -> impl Iterator<Item = Value<u32>> + 'a {
+        self.listed()
+            .filter_map(|(span, token)| build::parse_id(token).map(|value| Value { value, span }))
+    }
+
+    /// Whether the tour has no stop.
+    pub fn has_no_stops(&self) -> bool {
+        self.stops().next().is_none()
+    }
 }
 
 /// A whole knowledge base.
@@ -265,7 +295,7 @@ pub struct KnowledgeBase<'a> {
     /// `None` when the file has no key of either dialect.
     pub dialect: Option<Dialect>,
     locations: Locations<'a>,
-    pub tour: Option<Tour>,
+    pub tour: Option<Tour<'a>>,
     /// What the rules about the robot's reader need to know of the lines.
     pub lines: LineFacts,
 }
@@ -358,7 +388,7 @@ impl<'a> KnowledgeBase<'a> {
     pub fn new(
         dialect: Option<Dialect>,
         locations: Vec<Location<'a>>,
-        tour: Option<Tour>,
+        tour: Option<Tour<'a>>,
     ) -> KnowledgeBase<'a> {
         KnowledgeBase::from_runs(dialect, vec![locations], tour)
     }
@@ -368,7 +398,7 @@ impl<'a> KnowledgeBase<'a> {
     pub fn from_runs(
         dialect: Option<Dialect>,
         runs: Vec<Vec<Location<'a>>>,
-        tour: Option<Tour>,
+        tour: Option<Tour<'a>>,
     ) -> KnowledgeBase<'a> {
         KnowledgeBase {
             dialect,
@@ -392,7 +422,7 @@ impl<'a> KnowledgeBase<'a> {
     pub fn tour_stops(&self) -> impl Iterator<Item = u32> + '_ {
         self.tour
             .iter()
-            .flat_map(|tour| tour.stops.iter().map(|stop| stop.value))
+            .flat_map(|tour| tour.stops().map(|stop| stop.value))
     }
 }
 

@@ -273,7 +273,7 @@ pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, reader: Reader, out: &m
     let ranges = crate::parallel::item_ranges(kb.locations().len(), MIN_LOCATIONS_PER_PART);
     let mut found = out.part();
     let mut check_the_rest = |ranges| {
-        check_tour(kb, source, &mut found);
+        check_tour(kb, &mut found);
         check_locations(kb.locations().runs(), ranges, &context, &mut found);
     };
     // The tree's shape is a pass over every location in order, on one core (on the 100k
@@ -301,11 +301,11 @@ pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, reader: Reader, out: &m
 }
 
 /// Runs the rules about the tour.
-fn check_tour(kb: &KnowledgeBase<'_>, source: &str, out: &mut Diagnostics) {
+fn check_tour(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
     tour::tour_missing::check(kb, out);
     if let Some(tour) = &kb.tour {
         tour::tour_empty::check(tour, out);
-        let listed = tour::listed_stops(tour, source);
+        let listed = tour.listed().count() as u64;
         tour::tour_count_mismatch::check(tour, listed, out);
         tour::tour_too_long::check(tour, listed, out);
         tour::tour_repeated_stop::check(tour, out);

@@ -53,9 +53,8 @@ pub fn symbols(snapshot: &Snapshot<'_, '_>) -> Answer<Option<DocumentSymbolRespo
     if let Some(tour) = &kb.tour {
         let line = crate::lsp::lines::line_at(text, tour.span.start)
             .map_or(tour.span, |line| line.content());
-        let stops = tour
-            .stops
-            .iter()
+        let stops: Vec<_> = tour
+            .stops()
             .enumerate()
             .map(|(index, stop)| {
                 let description = kb
@@ -71,7 +70,7 @@ pub fn symbols(snapshot: &Snapshot<'_, '_>) -> Answer<Option<DocumentSymbolRespo
                 )
             })
             .collect();
-        let count = tour.stops.len();
+        let count = stops.len();
         symbols.push(symbol(
             "tour".to_string(),
             format!("{count} stop{}", if count == 1 { "" } else { "s" }),

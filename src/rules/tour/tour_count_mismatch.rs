@@ -24,7 +24,7 @@ declare_rule! {
     };
 }
 
-/// `found` is the number of ids listed after `n` (see [`super::listed_stops`]).
+/// `found` is the number of ids listed after `n` (see [`Tour::listed`]).
 pub fn check(tour: &Tour, found: u64, out: &mut Diagnostics) {
     let Some(declared) = tour.declared else {
         return;

@@ -1,6 +1,6 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::model::Tour;
+use crate::model::{Tour, Value};
 use crate::rules::declare_rule;
 
 declare_rule! {
@@ -26,19 +26,21 @@ declare_rule! {
 }
 
 pub fn check(tour: &Tour, out: &mut Diagnostics) {
-    for pair in tour.stops.windows(2) {
-        if pair[0].value == pair[1].value {
+    let mut previous: Option<Value<u32>> = None;
+    for stop in tour.stops() {
+        if let Some(first) = previous.filter(|first| first.value == stop.value) {
             out.push_with(&TOUR_REPEATED_STOP, || Diagnostic::new(&TOUR_REPEATED_STOP,
-                    pair[1].span,
+                    stop.span,
                     format!(
                         "location {} is visited twice in a row: the robot would repeat itself without moving",
-                        pair[1].value
+                        stop.value
                     ),
                 )
-                .at_location(Some(pair[1].value))
-                .with_label(pair[0].span, "first visit")
+                .at_location(Some(stop.value))
+                .with_label(first.span, "first visit")
                 .with_help("remove one of the two, or correct the id"),
             );
         }
+        previous = Some(stop);
     }
 }

@@ -27,7 +27,7 @@ declare_rule! {
     };
 }
 
-/// `listed` is the number of ids listed after `n` (see [`super::listed_stops`]).
+/// `listed` is the number of ids listed after `n` (see [`Tour::listed`]).
 pub fn check(tour: &Tour, listed: u64, out: &mut Diagnostics) {
     let stops = listed.max(tour.declared.map_or(0, |d| d.value));
     if stops > MAX_STOPS {

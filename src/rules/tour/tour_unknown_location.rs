@@ -28,7 +28,7 @@ pub fn check(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
     let Some(tour) = &kb.tour else {
         return;
     };
-    for stop in &tour.stops {
+    for stop in tour.stops() {
         if kb.location(stop.value).is_none() {
             out.push_with(&TOUR_UNKNOWN_LOCATION, || Diagnostic::new(&TOUR_UNKNOWN_LOCATION,
                     stop.span,
