@@ -89,7 +89,7 @@ struct Tour<'a> {
     /// The stops the reader loads, where they are not the file's (`null`: undefined).
     #[serde(rename = "robotTour", skip_serializing_if = "Option::is_none")]
     robot_tour: Option<Vec<Option<i32>>>,
-    stops: Vec<Stop<'a>>,
+    stops: Stops<'a>,
     /// Messages written in the language (placeholders and missing ones are not).
     translated: usize,
     /// Messages the tour says: two per stop.
@@ -99,9 +99,25 @@ struct Tour<'a> {
     placeholders: usize,
     #[serde(skip)]
     missing: usize,
-    /// How many stops the tour has (`stops` may hold only the first).
+    /// How many stops the tour has (`stops` may make only the first).
     #[serde(skip)]
     total: usize,
+}
+
+/// The tour's first `shown` stops, each made when it is shown or written, and let go of
+/// after: a tour may have a million, and the JSON lists them all.
+struct Stops<'a> {
+    checked: &'a Checked<'a>,
+    language: Language,
+    lines: Lines<'a>,
+    loaded: reader::Loaded<'a>,
+    shown: usize,
+}
+
+impl Serialize for Stops<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_seq(self.iter())
+    }
 }
 
 #[derive(Serialize)]
@@ -157,62 +173,14 @@ fn serialize_language<S: serde::Serializer>(language: &Language, s: S) -> Result
 impl<'a> Tour<'a> {
     /// The tour of `checked` in `language`, with the first `shown` stops in full.
     fn new(checked: &'a Checked<'a>, language: Language, shown: usize) -> Tour<'a> {
-        let lines = Lines::new(checked.source.text());
-        let text = checked.source.text().as_bytes();
-        let loaded = reader::load(text, checked.reader);
-        let held = |id: u32, key: Key| view::held(&loaded, text, id, key);
-        let stops: Vec<Stop> = checked
-            .kb
-            .tour_stops()
-            .take(shown)
-            .enumerate()
-            .map(|(index, id)| {
-                let location = checked.kb.location(id);
-                let said = |phase| {
-                    let key = Key::for_message(phase, language);
-                    Said::new(location, phase, language, &lines, held(id, key))
-                };
-                let pose = location.and_then(|l| l.pose).map(|p| p.value);
-                let pose_held = held(id, Key::RobotLocationPose);
-                let stands = match pose {
-                    Some(pose) => robot::as_loaded(
-                        Field::Pose,
-                        &FieldValue::Pose(pose),
-                        &pose_held,
-                        checked.reader,
-                    ),
-                    None => "MISSING pose: the robot's reader leaves it at 0, 0, 0°".to_string(),
-                };
-                let target = location.and_then(|l| l.gesture_target).map(|t| t.value);
-                let target_held = held(id, Key::GestureTarget);
-                let target_as_loaded = target
-                    .filter(|target| {
-                        !robot::agrees(
-                            Field::GestureTarget,
-                            &FieldValue::Point(*target),
-                            &target_held,
-                        )
-                    })
-                    .map(|_| robot::shown(Field::GestureTarget, &target_held));
-                Stop {
-                    stands,
-                    target_as_loaded,
-                    stop: index + 1,
-                    id,
-                    start: index == 0,
-                    found: location.is_some(),
-                    description: location.and_then(|l| l.description()).map(|d| d.value),
-                    pose,
-                    gesture_target: location.and_then(|l| l.gesture_target).map(|t| t.value),
-                    points: location
-                        .and_then(|l| l.gesture_target)
-                        .is_some_and(|t| matches!(Gesture::of(&t.value), Gesture::At(_))),
-                    gesture_arm: location.and_then(|l| l.gesture_arm).map(|a| a.value),
-                    before: said(Phase::Pre),
-                    after: said(Phase::Post),
-                }
-            })
-            .collect();
+        let text = checked.source.text();
+        let stops = Stops {
+            checked,
+            language,
+            lines: Lines::new(text),
+            loaded: reader::load(text.as_bytes(), checked.reader),
+            shown,
+        };
         // Every stop's messages counted, shown or not.
         let (mut translated, mut placeholders, mut missing, mut total) = (0, 0, 0, 0);
         for id in checked.kb.tour_stops() {
@@ -229,7 +197,7 @@ impl<'a> Tour<'a> {
         Tour {
             language,
             reader: checked.reader.name(),
-            robot_tour: robot::other_tour(&checked.kb, &loaded),
+            robot_tour: robot::other_tour(&checked.kb, &stops.loaded),
             messages: total * 2,
             stops,
             translated,
@@ -254,15 +222,15 @@ impl<'a> Tour<'a> {
                 robot::tour_text(robot_tour)
             ));
         }
-        for stop in &self.stops {
+        for stop in self.stops.iter() {
             out.push('\n');
             out.push_str(&stop.text(self.language));
         }
-        if self.total > self.stops.len() {
+        let shown = self.total.min(self.stops.shown);
+        if self.total > shown {
             out.push_str(&format!(
-                "\n… and {} more stops, not shown (ekb shows the first {}; `ekb tour --format json` lists them all)\n",
-                self.total - self.stops.len(),
-                self.stops.len()
+                "\n… and {} more stops, not shown (ekb shows the first {shown}; `ekb tour --format json` lists them all)\n",
+                self.total - shown,
             ));
         }
         out.push('\n');
@@ -301,6 +269,65 @@ impl<'a> Tour<'a> {
             self.translated,
             self.messages
         )
+    }
+}
+
+impl<'a> Stops<'a> {
+    /// The stops, in order, each made as it is asked for.
+    fn iter(&self) -> impl Iterator<Item = Stop<'a>> + '_ {
+        let kb = &self.checked.kb;
+        kb.tour_stops()
+            .take(self.shown)
+            .enumerate()
+            .map(|(index, id)| self.stop(index, id))
+    }
+
+    /// Stop `index` (from 0), at location `id`.
+    fn stop(&self, index: usize, id: u32) -> Stop<'a> {
+        let checked = self.checked;
+        let text = checked.source.text().as_bytes();
+        let held = |key: Key| view::held(&self.loaded, text, id, key);
+        let location = checked.kb.location(id);
+        let said = |phase| {
+            let key = Key::for_message(phase, self.language);
+            Said::new(location, phase, self.language, &self.lines, held(key))
+        };
+        let pose = location.and_then(|l| l.pose).map(|p| p.value);
+        let stands = match pose {
+            Some(pose) => robot::as_loaded(
+                Field::Pose,
+                &FieldValue::Pose(pose),
+                &held(Key::RobotLocationPose),
+                checked.reader,
+            ),
+            None => "MISSING pose: the robot's reader leaves it at 0, 0, 0°".to_string(),
+        };
+        let target = location.and_then(|l| l.gesture_target).map(|t| t.value);
+        let target_held = held(Key::GestureTarget);
+        let target_as_loaded = target
+            .filter(|target| {
+                !robot::agrees(
+                    Field::GestureTarget,
+                    &FieldValue::Point(*target),
+                    &target_held,
+                )
+            })
+            .map(|_| robot::shown(Field::GestureTarget, &target_held));
+        Stop {
+            stands,
+            target_as_loaded,
+            stop: index + 1,
+            id,
+            start: index == 0,
+            found: location.is_some(),
+            description: location.and_then(|l| l.description()).map(|d| d.value),
+            pose,
+            gesture_target: target,
+            points: target.is_some_and(|t| matches!(Gesture::of(&t), Gesture::At(_))),
+            gesture_arm: location.and_then(|l| l.gesture_arm).map(|a| a.value),
+            before: said(Phase::Pre),
+            after: said(Phase::Post),
+        }
     }
 }
 
