@@ -9,7 +9,7 @@ use serde::Serialize;
 use super::{CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::export::ExportedLocation;
-use crate::model::{Dialect, Key, Language, Location, Phase};
+use crate::model::{Dialect, Key, KnowledgeBase, Language, Location, Phase};
 use crate::parallel;
 use crate::present::field::Field;
 use crate::present::{
@@ -56,7 +56,10 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
             let loaded = reader::load_fields(text, checked.reader, &TABLE_KEYS);
             write_table(&checked, loaded, &mut stdout)?;
         }
-        LocationsFormat::Json => json::write(&JsonLocations::new(&checked), &mut stdout)?,
+        LocationsFormat::Json => {
+            let positions = TourPositions::new(&checked.kb);
+            json::write(&JsonLocations::new(&checked, &positions), &mut stdout)?
+        }
         LocationsFormat::Classic => {
             let loaded = reader::load(text, checked.reader);
             stdout.write_all(render_classic(&loaded).as_bytes())?;
@@ -182,23 +185,35 @@ fn tour_cell(positions: &TourPositions, id: u32) -> String {
 
 /// `ekb locations --format json`.
 #[derive(Serialize)]
-struct JsonLocations {
+struct JsonLocations<'a> {
     /// The version of the robot's reader the file was checked against.
     reader: &'static str,
     dialect: Option<Dialect>,
-    locations: Vec<JsonLocation>,
-    tour: Option<Vec<u32>>,
+    locations: Vec<JsonLocation<'a>>,
+    /// The tour's stops, read from its line as they are written (a tour may have a million).
+    #[serde(serialize_with = "stop_ids")]
+    tour: Option<&'a KnowledgeBase<'a>>,
+}
+
+fn stop_ids<S: serde::Serializer>(
+    kb: &Option<&KnowledgeBase<'_>>,
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    match kb {
+        Some(kb) => s.collect_seq(kb.tour_stops()),
+        None => s.serialize_none(),
+    }
 }
 
 #[derive(Serialize)]
 #[serde(rename_all = "camelCase")]
-struct JsonLocation {
+struct JsonLocation<'a> {
     #[serde(flatten)]
     location: ExportedLocation,
     /// `written`, `placeholder` or `missing`, per message.
     message_status: JsonMessageStatus,
     /// 1-based positions on the tour.
-    tour_positions: Vec<usize>,
+    tour_positions: &'a [usize],
     /// The first and last line of the location in the file.
     lines: [u32; 2],
 }
@@ -218,10 +233,9 @@ struct JsonStatuses {
     kinyarwanda: &'static str,
 }
 
-impl JsonLocations {
-    fn new(checked: &Checked<'_>) -> JsonLocations {
+impl<'a> JsonLocations<'a> {
+    fn new(checked: &'a Checked<'a>, positions: &'a TourPositions) -> JsonLocations<'a> {
         let lines = present::Lines::new(checked.source.text());
-        let positions = TourPositions::new(&checked.kb);
         let locations = checked
             .kb
             .locations()
@@ -242,7 +256,7 @@ impl JsonLocations {
                         pre_gesture_message: statuses(Phase::Pre),
                         post_gesture_message: statuses(Phase::Post),
                     },
-                    tour_positions: positions.of(location.id).to_vec(),
+                    tour_positions: positions.of(location.id),
                     lines: [first, last],
                 }
             })
@@ -251,11 +265,7 @@ impl JsonLocations {
             reader: checked.reader.name(),
             dialect: checked.kb.dialect,
             locations,
-            tour: checked
-                .kb
-                .tour
-                .as_ref()
-                .map(|_| checked.kb.tour_stops().collect()),
+            tour: checked.kb.tour.as_ref().map(|_| &checked.kb),
         }
     }
 }
