@@ -14,6 +14,7 @@ use crate::rules::structure::{invalid_utf8, not_a_knowledge_base};
 use crate::source::SourceFile;
 
 use super::culture::{self, CultureKnowledgeBase, ValueType, ValueTypes};
+use super::include::{self, IncludeProblem};
 use super::tree::Mission;
 
 /// The files of a mission, each if given; the environment knowledge base with the options
@@ -44,9 +45,9 @@ pub fn check_together<'s>(sources: &MissionSources<'s>, rules: &RuleSet) -> Vec<
     let mut mission_out = Diagnostics::default();
     let mission = sources.mission.and_then(|source| {
         invalid_utf8::check(source, &mut mission_out);
-        match mission_invalid_xml::check(source.text()) {
-            Ok(mut mission) => {
-                mission_bad_include::check(&mut mission, source.path(), &mut mission_out);
+        match with_includes(source) {
+            Ok((mission, problems)) => {
+                mission_bad_include::check(problems, &mut mission_out);
                 check_tree(&mission, sources.reader, &mut mission_out);
                 Some(mission)
             }
@@ -231,9 +232,18 @@ pub fn check_file<'s>(
 /// Parses a mission, with the trees of the files it includes, or gives the finding that says
 /// why it cannot be read (`ekb mission check` reports what is wrong with its includes).
 pub fn read_mission(source: &SourceFile) -> Result<Mission, Box<crate::Diagnostic>> {
+    with_includes(source).map(|(mission, _)| mission)
+}
+
+/// The mission in `source` with the trees of the files it includes, and what stops its
+/// includes; or the finding that says why it cannot be read.
+fn with_includes(
+    source: &SourceFile,
+) -> Result<(Mission, Vec<IncludeProblem>), Box<crate::Diagnostic>> {
     let mut mission = mission_invalid_xml::check(source.text())?;
-    mission.included = super::include::load(&mission, source.path()).trees;
-    Ok(mission)
+    let included = include::load(&mission, source.path());
+    mission.included = included.trees;
+    Ok((mission, included.problems))
 }
 
 #[cfg(test)]

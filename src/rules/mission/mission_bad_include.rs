@@ -1,9 +1,6 @@
-use std::path::Path;
-
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
-use crate::mission::include::{self, IncludeProblem, Problem};
-use crate::mission::tree::Mission;
+use crate::mission::include::{IncludeProblem, Problem};
 use crate::rules::declare_rule;
 
 declare_rule! {
@@ -34,12 +31,9 @@ declare_rule! {
     };
 }
 
-/// Reads the files `mission` includes (from `file`, its own path), so that their trees are
-/// known to it, and reports each include that stops the load.
-pub fn check(mission: &mut Mission, file: Option<&Path>, out: &mut Diagnostics) {
-    let included = include::load(mission, file);
-    mission.included = included.trees;
-    for problem in included.problems {
+/// Reports each include that stops the load ([`crate::mission::include::load`]).
+pub fn check(problems: Vec<IncludeProblem>, out: &mut Diagnostics) {
+    for problem in problems {
         out.push(finding(problem));
     }
 }
