@@ -108,6 +108,7 @@ pub enum Outcome {
 
 /// The walk: the steps in order, and how it ended.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
 pub struct Walk {
     /// The mission's language, as the robot spells it.
     pub language: Option<&'static str>,

@@ -281,6 +281,15 @@ fn without_start_of_tree_the_robot_runs_the_mission_again_at_once() {
         "{}",
         walked.stdout
     );
+    let as_json = run(&[
+        "mission",
+        "walk",
+        "--config-dir",
+        &config_of(&root),
+        "--format",
+        "json",
+    ]);
+    assert_eq!(json(&as_json)["operatorAsked"], Value::Bool(false));
 }
 
 #[test]
