@@ -8,12 +8,13 @@ use serde::Serialize;
 
 use super::{CommandResult, Context, Exit};
 use crate::check::{check, Checked};
-use crate::model::export::ExportedLocation;
+use crate::model::export::LocationView;
 use crate::model::{Dialect, Key, KnowledgeBase, Language, Location, Phase};
 use crate::parallel;
 use crate::present::field::Field;
 use crate::present::{
-    self, language, robot, table, Gesture, Message, TourPositions, MESSAGE_LEGEND,
+    self, language, robot, table, AllTourPositions, Gesture, Message, PositionsOf, TourPositions,
+    MESSAGE_LEGEND,
 };
 use crate::reader::line::LoadedValue;
 use crate::reader::{self, view, Loaded};
@@ -56,10 +57,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
             let loaded = reader::load_fields(text, checked.reader, &TABLE_KEYS);
             write_table(&checked, loaded, &mut stdout)?;
         }
-        LocationsFormat::Json => {
-            let positions = TourPositions::new(&checked.kb);
-            json::write(&JsonLocations::new(&checked, &positions), &mut stdout)?
-        }
+        LocationsFormat::Json => write_json(&checked, &mut stdout)?,
         LocationsFormat::Classic => {
             let loaded = reader::load(text, checked.reader);
             stdout.write_all(render_classic(&loaded).as_bytes())?;
@@ -189,10 +187,40 @@ struct JsonLocations<'a> {
     /// The version of the robot's reader the file was checked against.
     reader: &'static str,
     dialect: Option<Dialect>,
-    locations: Vec<JsonLocation<'a>>,
+    locations: EachLocation<'a>,
     /// The tour's stops, read from its line as they are written (a tour may have a million).
     #[serde(serialize_with = "stop_ids")]
     tour: Option<&'a KnowledgeBase<'a>>,
+}
+
+/// Writes the JSON of every location of `checked`.
+fn write_json(checked: &Checked<'_>, out: &mut impl Write) -> io::Result<()> {
+    let view = JsonLocations {
+        reader: checked.reader.name(),
+        dialect: checked.kb.dialect,
+        locations: EachLocation {
+            kb: &checked.kb,
+            lines: present::Lines::new(checked.source.text()),
+            positions: AllTourPositions::new(&checked.kb),
+        },
+        tour: checked.kb.tour.as_ref().map(|_| &checked.kb),
+    };
+    json::write(&view, out)
+}
+
+/// The list of [`JsonLocation`]s, each made as it is written: holding them all held a copy
+/// of the file's text, and the positions of a location on a million-stop tour are long.
+struct EachLocation<'a> {
+    kb: &'a KnowledgeBase<'a>,
+    lines: present::Lines<'a>,
+    positions: AllTourPositions<'a>,
+}
+
+impl Serialize for EachLocation<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let locations = self.kb.locations().iter();
+        s.collect_seq(locations.map(|location| JsonLocation::new(location, self)))
+    }
 }
 
 fn stop_ids<S: serde::Serializer>(
@@ -207,13 +235,13 @@ fn stop_ids<S: serde::Serializer>(
 
 #[derive(Serialize)]
 #[serde(rename_all = "camelCase")]
-struct JsonLocation<'a> {
+struct JsonLocation<'a, 'p> {
     #[serde(flatten)]
-    location: ExportedLocation,
+    location: LocationView<'a>,
     /// `written`, `placeholder` or `missing`, per message.
     message_status: JsonMessageStatus,
     /// 1-based positions on the tour.
-    tour_positions: &'a [usize],
+    tour_positions: PositionsOf<'p, 'p>,
     /// The first and last line of the location in the file.
     lines: [u32; 2],
 }
@@ -233,39 +261,25 @@ struct JsonStatuses {
     kinyarwanda: &'static str,
 }
 
-impl<'a> JsonLocations<'a> {
-    fn new(checked: &'a Checked<'a>, positions: &'a TourPositions) -> JsonLocations<'a> {
-        let lines = present::Lines::new(checked.source.text());
-        let locations = checked
-            .kb
-            .locations()
-            .iter()
-            .map(|location| {
-                let statuses = |phase| {
-                    let status = |lang| Message::of(location, phase, lang).status();
-                    JsonStatuses {
-                        english: status(Language::English),
-                        isi_zulu: status(Language::IsiZulu),
-                        kinyarwanda: status(Language::Kinyarwanda),
-                    }
-                };
-                let (first, last) = lines.range(location);
-                JsonLocation {
-                    location: ExportedLocation::from(location),
-                    message_status: JsonMessageStatus {
-                        pre_gesture_message: statuses(Phase::Pre),
-                        post_gesture_message: statuses(Phase::Post),
-                    },
-                    tour_positions: positions.of(location.id),
-                    lines: [first, last],
-                }
-            })
-            .collect();
-        JsonLocations {
-            reader: checked.reader.name(),
-            dialect: checked.kb.dialect,
-            locations,
-            tour: checked.kb.tour.as_ref().map(|_| &checked.kb),
+impl<'a, 'p> JsonLocation<'a, 'p> {
+    fn new(location: &Location<'a>, all: &'p EachLocation<'p>) -> JsonLocation<'a, 'p> {
+        let statuses = |phase| {
+            let status = |lang| Message::of(location, phase, lang).status();
+            JsonStatuses {
+                english: status(Language::English),
+                isi_zulu: status(Language::IsiZulu),
+                kinyarwanda: status(Language::Kinyarwanda),
+            }
+        };
+        let (first, last) = all.lines.range(location);
+        JsonLocation {
+            location: LocationView::new(location),
+            message_status: JsonMessageStatus {
+                pre_gesture_message: statuses(Phase::Pre),
+                post_gesture_message: statuses(Phase::Post),
+            },
+            tour_positions: all.positions.of(location.id),
+            lines: [first, last],
         }
     }
 }

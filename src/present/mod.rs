@@ -11,7 +11,7 @@ pub mod robot;
 pub mod table;
 
 use std::borrow::Cow;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::fmt::Write as _;
 
 use crate::check::Checked;
@@ -302,6 +302,67 @@ impl TourPositions {
     }
 }
 
+/// Every position of every location on the tour, for a view that lists them all (the JSON
+/// of `ekb locations`). Held, they cost 8 bytes a stop (a million-stop tour of 2 MB held
+/// 8 MB): so they are read again from the tour's line for each location it visits, unless
+/// that would read more than [`MOST_STOPS_READ_AGAIN`] stops in all (many locations on a
+/// long tour), and then held.
+pub enum AllTourPositions<'k> {
+    Held(TourPositions),
+    ReadAgain {
+        kb: &'k KnowledgeBase<'k>,
+        visited: HashSet<u32>,
+    },
+}
+
+/// The most stops [`AllTourPositions`] reads to list them (a few tenths of a second).
+const MOST_STOPS_READ_AGAIN: usize = 1 << 24;
+
+impl<'k> AllTourPositions<'k> {
+    pub fn new(kb: &'k KnowledgeBase<'k>) -> AllTourPositions<'k> {
+        let mut visited = HashSet::new();
+        let mut stops = 0;
+        for id in kb.tour_stops() {
+            visited.insert(id);
+            stops += 1;
+        }
+        if visited.len().saturating_mul(stops) <= MOST_STOPS_READ_AGAIN {
+            AllTourPositions::ReadAgain { kb, visited }
+        } else {
+            AllTourPositions::Held(TourPositions::new(kb))
+        }
+    }
+
+    /// The 1-based positions of location `id`, written as a list.
+    pub fn of(&self, id: u32) -> PositionsOf<'_, 'k> {
+        PositionsOf { all: self, id }
+    }
+}
+
+/// The positions of one location on the tour, serialized as a list.
+pub struct PositionsOf<'a, 'k> {
+    all: &'a AllTourPositions<'k>,
+    id: u32,
+}
+
+impl serde::Serialize for PositionsOf<'_, '_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self.all {
+            AllTourPositions::Held(held) => s.collect_seq(held.of(self.id)),
+            AllTourPositions::ReadAgain { kb, visited } => {
+                let visits = visited.contains(&self.id);
+                let stops = kb.tour_stops().take_while(|_| visits);
+                s.collect_seq(
+                    (1..)
+                        .zip(stops)
+                        .filter(|&(_, stop)| stop == self.id)
+                        .map(|(position, _)| position),
+                )
+            }
+        }
+    }
+}
+
 /// Tells the user, on standard error, that the file has errors, so that a view that looks
 /// incomplete (a missing message, a pose at 0) is not taken for the whole story.
 pub fn note_errors(checked: &Checked<'_>, quiet: bool) {
@@ -405,6 +466,35 @@ mod tests {
         assert_eq!((first.of(1), first.count(1)), (&[1, 3][..], 4));
         assert_eq!((first.of(2), first.count(2)), (&[2][..], 1));
         assert_eq!((first.of(7), first.count(7)), (&[][..], 0));
+    }
+
+    #[test]
+    fn all_tour_positions_read_again_or_held_list_the_same() {
+        let text = "robotLocationDescription 1 Hall\ntourSpecification 5 1 2 1 1 1\n";
+        let source = crate::SourceFile::from_bytes("kb.dat", text.as_bytes().to_vec());
+        let checked = crate::check(&source, &Default::default());
+        let read_again = AllTourPositions::new(&checked.kb);
+        assert!(matches!(read_again, AllTourPositions::ReadAgain { .. }));
+        let held = AllTourPositions::Held(TourPositions::new(&checked.kb));
+        for all in [read_again, held] {
+            let listed = |id| serde_json::to_string(&all.of(id)).unwrap();
+            assert_eq!(
+                [listed(1), listed(2), listed(7)],
+                ["[1,3,4,5]", "[2]", "[]"].map(String::from)
+            );
+        }
+    }
+
+    #[test]
+    fn many_locations_on_a_long_tour_have_their_positions_held() {
+        let stops = MOST_STOPS_READ_AGAIN.isqrt() + 1;
+        let tour: String = (1..=stops).map(|id| format!(" {id}")).collect();
+        let text = format!("tourSpecification {stops}{tour}\n");
+        let source = crate::SourceFile::from_bytes("kb.dat", text.into_bytes());
+        let checked = crate::check(&source, &Default::default());
+        let all = AllTourPositions::new(&checked.kb);
+        assert!(matches!(all, AllTourPositions::Held(_)));
+        assert_eq!(serde_json::to_string(&all.of(3)).unwrap(), "[3]");
     }
 
     #[test]
