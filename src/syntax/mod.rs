@@ -10,7 +10,7 @@ mod blanks;
 pub mod decimal;
 mod line;
 pub(crate) mod masks;
-mod newline;
+pub(crate) mod newline;
 mod span;
 pub(crate) mod swar;
 

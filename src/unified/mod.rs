@@ -38,6 +38,7 @@ use std::io::{self, Write};
 use std::ops::ControlFlow;
 
 use crate::parallel;
+use crate::syntax::newline;
 
 /// One line of a new text.
 #[derive(Debug, Clone, Copy)]
@@ -168,8 +169,7 @@ pub(crate) fn lines_inclusive(text: &str) -> impl Iterator<Item = (usize, &str)>
         if start >= text.len() {
             return None;
         }
-        let end =
-            memchr::memchr(b'\n', &text.as_bytes()[start..]).map_or(text.len(), |i| start + i + 1);
+        let end = newline::find(&text.as_bytes()[start..]).map_or(text.len(), |i| start + i + 1);
         let line = (start, &text[start..end]);
         start = end;
         Some(line)
@@ -190,7 +190,7 @@ pub(crate) fn lines_of(new: &impl NewLines) -> Vec<(String, Option<u32>)> {
 
 /// The old line that starts at `start`, with its line ending.
 fn old_line(old: &str, start: usize) -> &str {
-    let end = memchr::memchr(b'\n', &old.as_bytes()[start..]).map_or(old.len(), |i| start + i + 1);
+    let end = newline::find(&old.as_bytes()[start..]).map_or(old.len(), |i| start + i + 1);
     &old[start..end]
 }
 
