@@ -34,23 +34,25 @@ size=$(stat -c %s "$a")
 # The configuration is found from the working directory.
 cd "$root"
 
-names=(check export locations tour diff-same diff-changed fmt-check fix-diff)
+names=(check export locations locations-json tour tour-json diff-same diff-changed fmt-check fix-diff)
 commands=(
   "$ekb check $a"
   "$ekb export --allow-errors $a"
   "$ekb locations $a"
+  "$ekb locations --format json $a"
   "$ekb tour --lang en $a"
+  "$ekb tour --lang en --format json $a"
   "$ekb diff $a $a"
   "$ekb diff $a $b"
   "$ekb fmt --check $a"
   "$ekb fix --diff $a"
 )
 # Each command is compared with the check of the same file: row 0, or the row named here.
-bases=(0 0 0 0 0 0 0 0)
+bases=(0 0 0 0 0 0 0 0 0 0)
 if "$ekb" export --help | grep -q -- '--as-loaded'; then
   names+=(check-shuffled export-as-loaded)
   commands+=("$ekb check $shuffled" "$ekb export --as-loaded --allow-errors $shuffled")
-  bases+=(8 8)
+  bases+=(10 10)
 else
   echo "(export --as-loaded: not in this ekb, skipped)"
 fi
