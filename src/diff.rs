@@ -126,7 +126,7 @@ pub struct Side<'a> {
 /// load the same need none.
 struct LazyLines<'a> {
     text: &'a str,
-    lines: OnceCell<Lines<'a>>,
+    lines: OnceCell<Lines>,
 }
 
 impl<'a> LazyLines<'a> {
@@ -137,7 +137,7 @@ impl<'a> LazyLines<'a> {
         }
     }
 
-    fn get(&self) -> &Lines<'a> {
+    fn get(&self) -> &Lines {
         self.lines.get_or_init(|| Lines::new(self.text))
     }
 }

@@ -212,7 +212,7 @@ fn write_json(checked: &Checked<'_>, out: &mut impl Write) -> io::Result<()> {
 /// of the file's text, and the positions of a location on a million-stop tour are long.
 struct EachLocation<'a> {
     kb: &'a KnowledgeBase<'a>,
-    lines: present::Lines<'a>,
+    lines: present::Lines,
     positions: AllTourPositions<'a>,
 }
 

@@ -109,7 +109,7 @@ struct Tour<'a> {
 struct Stops<'a> {
     checked: &'a Checked<'a>,
     language: Language,
-    lines: Lines<'a>,
+    lines: Lines,
     loaded: reader::Loaded<'a>,
     shown: usize,
 }
@@ -373,7 +373,7 @@ impl<'a> Said<'a> {
         location: Option<&Location<'a>>,
         phase: Phase,
         language: Language,
-        lines: &Lines<'_>,
+        lines: &Lines,
         held: Held,
     ) -> Said<'a> {
         let message = location.map_or(Message::Missing, |l| Message::of(l, phase, language));

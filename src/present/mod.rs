@@ -219,22 +219,21 @@ pub fn listed_of<T: std::fmt::Display>(
 
 /// The 1-based line numbers of spans in one file.
 #[derive(Debug)]
-pub struct Lines<'a> {
-    text: &'a str,
+pub struct Lines {
     index: LineIndex,
 }
 
-impl<'a> Lines<'a> {
-    pub fn new(text: &'a str) -> Lines<'a> {
+impl Lines {
+    pub fn new(text: &str) -> Lines {
         Lines {
-            text,
             index: LineIndex::new(text),
         }
     }
 
-    /// The line a span starts on.
+    /// The line a span starts on (its column is not counted: a view asks this of every
+    /// value of every location).
     pub fn of(&self, span: Span) -> u32 {
-        self.index.position(self.text, span.start).line
+        self.index.line(span.start)
     }
 
     /// The first and last lines that hold a value of `location`.

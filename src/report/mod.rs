@@ -134,7 +134,7 @@ type Units<'c, 'a> = HashMap<(u32, Phase), &'c Unit<'a>>;
 /// What the tour's blocks are drawn from.
 struct Views<'v> {
     loaded: &'v Loaded<'v>,
-    lines: &'v Lines<'v>,
+    lines: &'v Lines,
     units: &'v Units<'v, 'v>,
     findings_at: &'v dyn Fn(u32) -> Vec<&'static str>,
     /// The translations that translators' PO files say were made for another English;
