@@ -110,7 +110,13 @@ impl Checked<'_> {
     /// name them (one that silences nothing is only an `unused-suppression` finding while
     /// the rules it names run).
     pub fn ignoring(mut self, ignored: &[RuleSelector]) -> Option<Self> {
-        if suppression::may_have_suppressions(self.source.text()) {
+        // The model counted the comments that may be one as it was built: where it did,
+        // the text is not searched again.
+        let may_have_suppressions = match self.kb.lines.suppression_lines {
+            Some(lines) => lines > 0,
+            None => suppression::may_have_suppressions(self.source.text()),
+        };
+        if may_have_suppressions {
             return None;
         }
         let kept = |rule: &Rule| !ignored.iter().any(|selector| selector.matches(rule));
