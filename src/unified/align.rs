@@ -394,6 +394,9 @@ struct Pairing<'o> {
     open: Option<(u32, u32)>,
     /// Whether the new line before was a blank line put in.
     blank_put_in: bool,
+    /// The old line at `at`, once found: lines put in are compared with it, each in turn
+    /// (half a file's lines, when its blocks are put in a balanced order).
+    next_line: Option<(usize, &'o str)>,
 }
 
 impl<'o> Pairing<'o> {
@@ -407,6 +410,19 @@ impl<'o> Pairing<'o> {
             index: start.index,
             open: None,
             blank_put_in: false,
+            next_line: None,
+        }
+    }
+
+    /// The old line at `at`, found once however many new lines are compared with it.
+    fn next_line(&mut self) -> &'o str {
+        match self.next_line {
+            Some((at, line)) if at == self.at => line,
+            _ => {
+                let line = old_line(self.old, self.at);
+                self.next_line = Some((self.at, line));
+                line
+            }
         }
     }
 
@@ -430,14 +446,14 @@ impl<'o> Pairing<'o> {
                 }
                 true
             }
-            _ => self.at < old.len() && old_line(old, self.at) == new_line.text,
+            _ => self.at < old.len() && self.next_line() == new_line.text,
         };
         self.blank_put_in = !pair && new_line.text == "\n";
         if pair {
             let (old_text, equal) = match recorded_as(old, self.at, new_line.text) {
                 Some(old_text) => (old_text, true),
                 None => {
-                    let old_text = old_line(old, self.at);
+                    let old_text = self.next_line();
                     (old_text, old_text == new_line.text)
                 }
             };
