@@ -19,15 +19,20 @@ impl Document<'_> {
         let ids: Vec<i32> = blocks.iter().map(|(id, _)| *id).collect();
         let position = |id: i32| ids.binary_search(&id).expect("an id of a block");
         let mut order = Vec::with_capacity(self.order.len());
+        let mut written = Vec::with_capacity(self.written.len());
         let mut block_ends = Vec::with_capacity(self.block_ends.len());
         let mut block_ids = Vec::with_capacity(self.block_ids.len());
         for id in balanced_order(&ids) {
             let (_, range) = &blocks[position(id)];
             order.extend_from_slice(&self.order[range.clone()]);
+            if let Some(lengths) = self.written.get(range.clone()) {
+                written.extend_from_slice(lengths);
+            }
             block_ends.push(order.len() as u32);
             block_ids.push(id as u32);
         }
         self.order = order;
+        self.written = written;
         self.block_ends = block_ends;
         self.block_ids = block_ids;
     }

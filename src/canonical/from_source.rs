@@ -9,9 +9,7 @@
 use std::borrow::Cow;
 use std::fmt;
 
-use super::{
-    entry_start, known_key, padding, slot, Document, Written, AS_WRITTEN, PADDING, UNKNOWN_SLOT,
-};
+use super::{known_key, padding, slot, Document, Written, PADDING, UNKNOWN_SLOT};
 use crate::model::build::{parse_id, tour_items};
 use crate::model::{IdMap, Key, ValueKind};
 use crate::parallel;
@@ -70,13 +68,15 @@ impl<'a> Document<'a> {
     /// The document of `text`, whose first reading found `layout`.
     fn laid_out(text: Cow<'a, str>, layout: Layout) -> Document<'a> {
         let block_ids = layout.blocks.ids();
-        let (order, block_ends) = arrange(&text, layout.blocks, layout.located, layout.placed);
+        let (order, written, block_ends) =
+            arrange(&text, layout.blocks, layout.located, layout.placed);
         Document {
             text,
             header_end: layout.header_end,
             footer_start: layout.footer_start,
             unplaced: layout.unplaced,
             order,
+            written,
             block_ends,
             block_ids,
             tour: layout.tour,
@@ -94,15 +94,22 @@ struct Layout {
     /// The located entries' blocks, and how many lines each has.
     blocks: Blocks,
     located: usize,
-    /// Each located line's start (with [`AS_WRITTEN`] if it is) and block, in file order,
-    /// kept while they take at most an
-    /// eighth of the text's size (lines of a usual length): then the lines are not read
-    /// again to be put in order.
-    placed: Option<Vec<(u32, u32)>>,
+    /// Each located line, in file order, kept while they take at most a quarter of the
+    /// text's size (lines of a usual length): then the lines are not read again to be put
+    /// in order.
+    placed: Option<Vec<Placed>>,
 }
 
 /// The most bytes [`Layout::placed`] takes, as a share of the text's size.
-const PLACED_SHARE: usize = 8;
+const PLACED_SHARE: usize = 4;
+
+/// A located line as the first reading found it.
+struct Placed {
+    start: u32,
+    block: u32,
+    /// Its length if it is written as the layout writes it (see [`Document::written`]).
+    written: u16,
+}
 
 /// What the first reading of a file needs of a line. Blank and comment lines matter only
 /// before the first entry (for the header): a part of the file read on its own tells those
@@ -191,12 +198,7 @@ fn stray_returns(text: &str) -> Unformattable {
 impl Layout {
     /// The first reading of `text`, its lines read in parts on the cores.
     fn read(text: &str) -> Result<Layout, Unformattable> {
-        let most_placed = text.len() / PLACED_SHARE / std::mem::size_of::<(u32, u32)>();
-        // (Starts of a text this long would not leave the bit free.)
-        let as_written_bit = match text.len() <= AS_WRITTEN as usize {
-            true => AS_WRITTEN,
-            false => 0,
-        };
+        let most_placed = text.len() / PLACED_SHARE / std::mem::size_of::<Placed>();
         let mut layout = Layout {
             placed: Some(Vec::with_capacity(most_placed)),
             ..Layout::default()
@@ -230,8 +232,13 @@ impl Layout {
                         let block = layout.blocks.count(id, slot);
                         match &mut layout.placed {
                             Some(placed) if placed.len() < most_placed => {
-                                let bit = if as_written { as_written_bit } else { 0 };
-                                placed.push((start | bit, block));
+                                // A line too long for the count is laid out as any other.
+                                let length = u16::try_from(end - start).unwrap_or(0);
+                                placed.push(Placed {
+                                    start,
+                                    block,
+                                    written: if as_written { length } else { 0 },
+                                });
                             }
                             _ => layout.placed = None,
                         }
@@ -334,16 +341,17 @@ impl Blocks {
 const IN_ORDER: u8 = 0x80;
 const _: () = assert!(UNKNOWN_SLOT < IN_ORDER);
 
-/// The located entries' line starts in canonical order, and where each block ends: put in
-/// place by block (a counting sort, linear), as `placed` says or read again, then each
-/// block put in key order, keeping the order of equal keys (a block is usually in order
-/// already).
+/// The located entries' line starts in canonical order ([`Document::order`]), the lengths
+/// of those written as the layout writes them ([`Document::written`]), and where each block
+/// ends: put in place by block (a counting sort, linear), as `placed` says or read again,
+/// then each block put in key order, keeping the order of equal keys (a block is usually in
+/// order already).
 fn arrange(
     text: &str,
     mut blocks: Blocks,
     located: usize,
-    placed: Option<Vec<(u32, u32)>>,
-) -> (Vec<u32>, Vec<u32>) {
+    placed: Option<Vec<Placed>>,
+) -> (Vec<u32>, Vec<u16>, Vec<u32>) {
     // Each block's count becomes where its next line goes; once all are placed, where the
     // block ends.
     let mut next = std::mem::take(&mut blocks.lines);
@@ -352,14 +360,20 @@ fn arrange(
         (*count, sum) = (sum, sum + *count);
     }
     let mut order = vec![0u32; located];
+    let mut written = Vec::new();
     let mut place = |start: u32, block: u32| {
-        order[next[block as usize] as usize] = start;
+        let at = next[block as usize] as usize;
+        order[at] = start;
         next[block as usize] += 1;
+        at
     };
     match placed {
-        Some(placed) => placed
-            .into_iter()
-            .for_each(|(start, block)| place(start, block)),
+        Some(placed) => {
+            written = vec![0u16; located];
+            for line in placed {
+                written[place(line.start, line.block)] = line.written;
+            }
+        }
         None => each_located(text, |(start, id)| {
             let block = blocks.find(id).expect("counted in the first reading");
             place(start, block);
@@ -368,11 +382,13 @@ fn arrange(
     let mut start = 0;
     for (block, &end) in next.iter().enumerate() {
         if !blocks.in_order(block) {
-            sort_by_slot(text, &mut order[start as usize..end as usize]);
+            let lines = start as usize..end as usize;
+            let written = written.get_mut(lines.clone()).unwrap_or_default();
+            sort_by_slot(text, &mut order[lines], written);
         }
         start = end;
     }
-    (order, next)
+    (order, written, next)
 }
 
 /// How many bytes of text [`read_in_parts`] reads at a time.
@@ -449,10 +465,11 @@ fn each_located(text: &str, each: impl FnMut((u32, u32))) {
 }
 
 /// Puts the lines starting at `block` in key order ([`slot`]), keeping the order of lines of
-/// the same slot: a counting sort over the few slots.
-fn sort_by_slot(text: &str, block: &mut [u32]) {
-    let slot_at = |placed: u32| {
-        let line = syntax::lines_from(text, entry_start(placed).0 as usize).next();
+/// the same slot: a counting sort over the few slots. `written`, the lengths of the block's
+/// lines as written (or empty), moves with them.
+fn sort_by_slot(text: &str, block: &mut [u32], written: &mut [u16]) {
+    let slot_at = |start: u32| {
+        let line = syntax::lines_from(text, start as usize).next();
         match line.map(|line| line.body) {
             Some(Body::Entry { key, .. }) => slot(known_key(key.text(text))),
             _ => unreachable!("an entry line starts there"),
@@ -466,12 +483,17 @@ fn sort_by_slot(text: &str, block: &mut [u32]) {
     for slot in 1..next.len() {
         next[slot] += next[slot - 1];
     }
-    let mut sorted = vec![0u32; block.len()];
-    for (&start, &slot) in block.iter().zip(&slots) {
-        sorted[next[slot as usize]] = start;
+    let mut sorted = vec![0usize; block.len()];
+    for (line, &slot) in slots.iter().enumerate() {
+        sorted[next[slot as usize]] = line;
         next[slot as usize] += 1;
     }
-    block.copy_from_slice(&sorted);
+    let starts: Vec<u32> = sorted.iter().map(|&line| block[line]).collect();
+    block.copy_from_slice(&starts);
+    if !written.is_empty() {
+        let lengths: Vec<u16> = sorted.iter().map(|&line| written[line]).collect();
+        written.copy_from_slice(&lengths);
+    }
 }
 
 /// Where an entry line goes: with the tour, first as written (no valid id), or in the block

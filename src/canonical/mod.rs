@@ -69,19 +69,6 @@ const MIN_BLOCKS_PER_PART: usize = 1 << 9;
 /// The fewest lines a core is given to lay out: fewer are not worth starting a thread.
 const MIN_LINES_PER_PART: usize = 1 << 13;
 
-/// The bit of an entry line's start in [`Document::order`] that says the line is written
-/// as the layout writes it, with no comment line between it and the entry line before it
-/// (the first reading found it so, as it found its id): then it is recorded as it is,
-/// without being read and laid out again, nor its comments looked for (nearly every line
-/// of a file that `ekb fmt` wrote). Starts are below it: a text that is not is read
-/// without it.
-const AS_WRITTEN: u32 = 1 << 31;
-
-/// An entry line's start in [`Document::order`], and whether it is [`AS_WRITTEN`].
-fn entry_start(placed: u32) -> (u32, bool) {
-    (placed & !AS_WRITTEN, placed & AS_WRITTEN != 0)
-}
-
 /// The widest padding a key gets (`VALUE_COLUMN - 1` spaces, for a key of one character).
 const PADDING: &str = "                              ";
 
@@ -123,8 +110,16 @@ pub struct Document<'a> {
     /// they come first, where they are seen.
     unplaced: Vec<u32>,
     /// Where each located entry line starts, block after block (one per location, in order
-    /// of first appearance), each block in key order; with [`AS_WRITTEN`] if it is.
+    /// of first appearance), each block in key order.
     order: Vec<u32>,
+    /// The length (line ending included) of each line of `order` that is written as the
+    /// layout writes it, with no comment line between it and the entry line before it: the
+    /// first reading found it so, as it found its id. Such a line is recorded as it is,
+    /// without being read and laid out again, nor its comments looked for, nor its end
+    /// (nearly every line of a file that `ekb fmt` wrote). 0 for every other line; empty
+    /// when the first reading did not keep where each line goes (a text of very many short
+    /// lines, read again to put them in order).
+    written: Vec<u16>,
     /// Where each block ends in `order`.
     block_ends: Vec<u32>,
     /// The id of each block, in the order of `block_ends`.
@@ -445,7 +440,7 @@ impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
             self.line(Unread::Item(Item::Comment(comment)), start, n == 0)?;
         }
         for (n, &start) in document.unplaced.iter().enumerate() {
-            self.entry(start, n == 0, false, false)?;
+            self.entry(start, n == 0, false, None)?;
         }
         ControlFlow::Continue(())
     }
@@ -456,10 +451,11 @@ impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
         let start = block
             .checked_sub(1)
             .map_or(0, |before| document.block_ends[before]);
-        let lines = &document.order[start as usize..document.block_ends[block] as usize];
-        for (n, &line) in lines.iter().enumerate() {
-            let (start, as_written) = entry_start(line);
-            self.entry(start, n == 0, false, as_written)?;
+        let lines = start as usize..document.block_ends[block] as usize;
+        let written = document.written.get(lines.clone());
+        for (n, &start) in document.order[lines].iter().enumerate() {
+            let written = written.map_or(0, |written| written[n]);
+            self.entry(start, n == 0, false, (written > 0).then_some(written))?;
         }
         ControlFlow::Continue(())
     }
@@ -468,7 +464,7 @@ impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
     fn tail(&mut self) -> ControlFlow<()> {
         let document = self.document;
         for (n, &start) in document.tour.iter().enumerate() {
-            self.entry(start, n == 0, true, false)?;
+            self.entry(start, n == 0, true, None)?;
         }
         let end = document.text.len() as u32;
         for (n, (start, comment)) in document
@@ -480,22 +476,23 @@ impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
         ControlFlow::Continue(())
     }
 
-    /// The entry line at `start` ([`AS_WRITTEN`] or not), after the comments above it.
+    /// The entry line at `start`, after the comments above it; `written`: its length if it
+    /// is written as the layout writes it ([`Document::written`]).
     fn entry(
         &mut self,
         start: u32,
         new_section: bool,
         tour: bool,
-        as_written: bool,
+        written: Option<u16>,
     ) -> ControlFlow<()> {
         let document = self.document;
         let mut first = new_section;
-        let comments = match as_written {
-            true => start,
-            false => document.comments_start(start),
+        let comments = match written {
+            Some(_) => start,
+            None => document.comments_start(start),
         };
         debug_assert!(
-            !as_written
+            written.is_none()
                 || (document.comments_between(document.comments_start(start), start))
                     .next()
                     .is_none()
@@ -510,7 +507,7 @@ impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
         let entry = Unread::Entry {
             start,
             tour,
-            as_written,
+            written,
         };
         self.line(entry, start, first)
     }
@@ -543,8 +540,8 @@ enum Unread<'d> {
     Entry {
         start: u32,
         tour: bool,
-        /// The line is written as the layout writes it ([`AS_WRITTEN`]).
-        as_written: bool,
+        /// Its length, if it is written as the layout writes it ([`Document::written`]).
+        written: Option<u16>,
     },
 }
 
@@ -566,7 +563,7 @@ impl NewLines for Document<'_> {
     /// The entry lines in the order the layout writes them ascend in the text: then so do
     /// the comments that go with them (the header's before, the footer's after).
     fn origins_ascend(&self) -> bool {
-        let order = self.order.iter().map(|&placed| entry_start(placed).0);
+        let order = self.order.iter().copied();
         let entries = self
             .unplaced
             .iter()
@@ -653,8 +650,9 @@ impl NewLines for Document<'_> {
 }
 
 /// A visit of a [`Walk`] that lays out each line, and records it in `recorded`, of lines
-/// made from `old`: an entry line [`AS_WRITTEN`] is recorded as its origin's line without
-/// being laid out, if `old` is the document's text.
+/// made from `old`: an entry line written as the layout writes it ([`Document::written`])
+/// is recorded as its origin's line without being laid out, if `old` is the document's
+/// text.
 fn recording<'d, 'r, 'o>(
     document: &'d Document<'_>,
     old: &'o str,
@@ -666,7 +664,7 @@ fn recording<'d, 'r, 'o>(
         if let (
             Unread::Entry {
                 start,
-                as_written: true,
+                written: Some(length),
                 ..
             },
             true,
@@ -675,10 +673,12 @@ fn recording<'d, 'r, 'o>(
             if cfg!(debug_assertions) {
                 text.clear();
                 push_item(&mut text, &line.clone().read(document));
-                let written = &document.text()[*start as usize..];
-                assert!(written.starts_with(&text), "not as written: {text:?}");
+                let written = &document.text()[*start as usize..][..usize::from(*length)];
+                assert_eq!(written, text, "not as written");
             }
-            recorded.push_its_origin(*start);
+            // SAFETY: the first reading found the line there, `length` bytes long with its
+            // line ending (`Document::written`), in this text.
+            unsafe { recorded.push_its_origin(*start, u32::from(*length)) };
             return ControlFlow::Continue(());
         }
         text.clear();
@@ -827,6 +827,35 @@ mod tests {
         let in_one = crate::unified::lines_of(&document);
         assert!(in_one.len() > 3 * blocks);
         assert_eq!(crate::unified::lines_of(&in_parts), in_one);
+    }
+
+    #[test]
+    fn lines_as_written_are_recorded_with_their_lengths_wherever_they_move() {
+        // Each line as the layout writes it, each block's keys out of order: the lengths
+        // the first reading found move with their lines as blocks are sorted and balanced.
+        let line = |key: &str, id: usize, value: &str| {
+            let mut line = String::new();
+            push_entry(&mut line, key, Some(&id.to_string()), value);
+            line + "\n"
+        };
+        let text: String = (1..=40)
+            .map(|id| {
+                line("robotLocation", id, "1 2 3")
+                    + &line("robotLocationDescription", id, &"x".repeat(20 + id))
+                    + "\n"
+            })
+            .collect();
+        let mut document = Document::parse(&text).unwrap();
+        // (All but the file's first line, above which comments are looked for.)
+        let marked = document.written.iter().filter(|&&length| length > 0);
+        assert_eq!((document.order.len(), marked.count()), (80, 79));
+        document.balance();
+        assert_ne!(document.render(), text);
+        let recorded = document.record(&text);
+        assert_eq!(
+            crate::unified::lines_of(&recorded),
+            crate::unified::lines_of(&document)
+        );
     }
 
     #[test]

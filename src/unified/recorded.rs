@@ -72,17 +72,32 @@ impl<'o> Recorded<'o> {
         self.lines.push((origin, length));
     }
 
-    /// Records the next line, known to be the old line that starts at `origin`, as it is:
-    /// [`Recorded::push`] without comparing them.
-    pub fn push_its_origin(&mut self, origin: u32) {
-        let length = old_line(self.old, origin as usize).len() as u32;
+    /// Records the next line, known to be the old line that starts at `origin`, `length`
+    /// bytes with its line ending: [`Recorded::push`] without comparing them, nor reading
+    /// the old line.
+    ///
+    /// # Safety
+    ///
+    /// `origin..origin + length` is a line of the old text, with its line ending: the
+    /// line is taken from there unchecked.
+    pub unsafe fn push_its_origin(&mut self, origin: u32, length: u32) {
+        debug_assert_eq!(
+            length as usize,
+            old_line(self.old, origin as usize).len(),
+            "a line's length"
+        );
         let index = self.lines.len() as u32;
         self.runs.line(self.old, index, origin, length, true);
         self.lines.push((origin, length | AS_ITS_ORIGIN));
     }
 
     /// Records the lines of `part` (recorded apart, as on another core) after these.
+    ///
+    /// # Panics
+    ///
+    /// If `part` is of lines made from another old text.
     pub fn append(&mut self, part: Recorded<'_>) {
+        assert!(std::ptr::eq(self.old, part.old), "lines of another text");
         let offset = self.lines.len() as u32;
         self.runs.append(self.old, part.runs, offset);
         self.lines.extend_from_slice(&part.lines);
@@ -194,8 +209,19 @@ impl Recorded<'_> {
         for (index, &(origin, length)) in range.zip(lines) {
             let text = match length & AS_ITS_ORIGIN != 0 {
                 true => {
-                    let start = origin as usize;
-                    &self.old[start..start + (length & !AS_ITS_ORIGIN) as usize]
+                    let line = origin as usize..(origin + (length & !AS_ITS_ORIGIN)) as usize;
+                    debug_assert!(
+                        self.old.is_char_boundary(line.start)
+                            && self.old.is_char_boundary(line.end)
+                    );
+                    // SAFETY: the range is a line of the old text with its line ending, as
+                    // recorded (by `push`, or by `push_its_origin`, whose caller vouches for
+                    // it): it starts and ends where lines do, on character boundaries.
+                    // Unchecked, the line is not read until it is used: a diff's reading of
+                    // half a file's lines moved compares only their lengths, and checking
+                    // the boundaries read each one at a random place in the old text (8%
+                    // of `fix --diff`'s time on the 100k file).
+                    unsafe { self.old.get_unchecked(line) }
                 }
                 false => {
                     let start = changed_at;
