@@ -173,10 +173,11 @@ fn finish<'f>(
     let text = edited.unwrap_or(source);
     let balance = passes.crashes_reader && choice.rules.is_enabled(&COMPAT_READER_CRASH);
     // A file the layout cannot write keeps its order.
-    let balanced = balance.then(|| Document::parse(text.text()).ok()).flatten();
+    let balanced = balance
+        .then(|| Document::parse_balanced(text.text()).ok())
+        .flatten();
     let outcome = match (balanced, edited) {
-        (Some(mut document), _) => {
-            document.balance();
+        (Some(document), _) => {
             *counts.entry(COMPAT_READER_CRASH.name).or_insert(0) += 1;
             Outcome::Balanced {
                 file: text,

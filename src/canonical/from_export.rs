@@ -8,7 +8,7 @@ use std::borrow::Cow;
 use std::collections::HashMap;
 use std::fmt;
 
-use super::Document;
+use super::{BlockOrder, Document};
 use crate::model::export::{ExportedKnowledgeBase, ExportedLocation, ExportedMessages};
 use crate::model::{Dialect, Key, Language, Phase};
 use crate::syntax::is_blank;
@@ -78,7 +78,10 @@ impl Document<'static> {
             text.push_str(&format!("{key} {}\n", items.join(" ")));
         }
         // Every value was checked to fit on its line, so each line reads as written.
-        Ok(Document::parse_text(Cow::Owned(text)).expect("no stray carriage return"))
+        Ok(
+            Document::parse_text(Cow::Owned(text), BlockOrder::FirstSeen)
+                .expect("no stray carriage return"),
+        )
     }
 }
 

@@ -9,7 +9,9 @@
 use std::borrow::Cow;
 use std::fmt;
 
-use super::{known_key, padding, slot, Document, Written, PADDING, UNKNOWN_SLOT};
+use super::{
+    balance, known_key, padding, slot, BlockOrder, Document, Written, PADDING, UNKNOWN_SLOT,
+};
 use crate::model::build::{parse_id, tour_items};
 use crate::model::{IdMap, Key, ValueKind};
 use crate::parallel;
@@ -51,25 +53,36 @@ impl std::error::Error for Unformattable {}
 impl<'a> Document<'a> {
     /// Lays out the lines of `text` canonically.
     pub fn parse(text: &'a str) -> Result<Document<'a>, Unformattable> {
-        Document::parse_text(Cow::Borrowed(text))
+        Document::parse_text(Cow::Borrowed(text), BlockOrder::FirstSeen)
     }
 
-    /// Lays out the lines of `text`, which the document keeps.
+    /// Lays out the lines of `text`, which the document keeps, the blocks in `block_order`.
     ///
     /// Memory is what matters on a huge file: the lines are read twice rather than each
     /// line's block kept. The first reading counts the lines of each block, the second puts
     /// each line's start in its place, block after block; then each block is put in key
     /// order where it is not already, by reading its lines a third time.
-    pub(super) fn parse_text(text: Cow<'a, str>) -> Result<Document<'a>, Unformattable> {
+    pub(super) fn parse_text(
+        text: Cow<'a, str>,
+        block_order: BlockOrder,
+    ) -> Result<Document<'a>, Unformattable> {
         let layout = Layout::read(&text)?;
-        Ok(Document::laid_out(text, layout))
+        Ok(Document::laid_out(text, layout, block_order))
     }
 
     /// The document of `text`, whose first reading found `layout`.
-    fn laid_out(text: Cow<'a, str>, layout: Layout) -> Document<'a> {
-        let block_ids = layout.blocks.ids();
-        let (order, written, block_ends) =
-            arrange(&text, layout.blocks, layout.located, layout.placed);
+    fn laid_out(text: Cow<'a, str>, layout: Layout, block_order: BlockOrder) -> Document<'a> {
+        let sequence = match block_order {
+            BlockOrder::FirstSeen => None,
+            BlockOrder::Balanced => Some(balance::balanced(&layout.blocks.ids())),
+        };
+        let (order, written, block_ends) = arrange(
+            &text,
+            layout.blocks,
+            layout.located,
+            layout.placed,
+            sequence.as_deref(),
+        );
         Document {
             text,
             header_end: layout.header_end,
@@ -78,7 +91,6 @@ impl<'a> Document<'a> {
             order,
             written,
             block_ends,
-            block_ids,
             tour: layout.tour,
         }
     }
@@ -343,21 +355,25 @@ const _: () = assert!(UNKNOWN_SLOT < IN_ORDER);
 
 /// The located entries' line starts in canonical order ([`Document::order`]), the lengths
 /// of those written as the layout writes them ([`Document::written`]), and where each block
-/// ends: put in place by block (a counting sort, linear), as `placed` says or read again,
-/// then each block put in key order, keeping the order of equal keys (a block is usually in
-/// order already).
+/// ends, the blocks in the order of `sequence` (by number; else as first seen): put in
+/// place by block (a counting sort, linear), as `placed` says or read again, then each
+/// block put in key order, keeping the order of equal keys (a block is usually in order
+/// already).
 fn arrange(
     text: &str,
     mut blocks: Blocks,
     located: usize,
     placed: Option<Vec<Placed>>,
+    sequence: Option<&[u32]>,
 ) -> (Vec<u32>, Vec<u16>, Vec<u32>) {
-    // Each block's count becomes where its next line goes; once all are placed, where the
-    // block ends.
-    let mut next = std::mem::take(&mut blocks.lines);
+    let lines = std::mem::take(&mut blocks.lines);
+    let block_at = |n: usize| sequence.map_or(n, |sequence| sequence[n] as usize);
+    // Where each block's next line goes; once all are placed, where the block ends.
+    let mut next = vec![0; lines.len()];
     let mut sum = 0;
-    for count in &mut next {
-        (*count, sum) = (sum, sum + *count);
+    for n in 0..lines.len() {
+        let block = block_at(n);
+        (next[block], sum) = (sum, sum + lines[block]);
     }
     let mut order = vec![0u32; located];
     let mut written = Vec::new();
@@ -379,16 +395,17 @@ fn arrange(
             place(start, block);
         }),
     }
-    let mut start = 0;
-    for (block, &end) in next.iter().enumerate() {
+    let block_ends: Vec<u32> = (0..lines.len()).map(|n| next[block_at(n)]).collect();
+    for n in 0..lines.len() {
+        let block = block_at(n);
         if !blocks.in_order(block) {
-            let lines = start as usize..end as usize;
-            let written = written.get_mut(lines.clone()).unwrap_or_default();
-            sort_by_slot(text, &mut order[lines], written);
+            let end = next[block] as usize;
+            let range = end - lines[block] as usize..end;
+            let written = written.get_mut(range.clone()).unwrap_or_default();
+            sort_by_slot(text, &mut order[range], written);
         }
-        start = end;
     }
-    (order, written, next)
+    (order, written, block_ends)
 }
 
 /// How many bytes of text [`read_in_parts`] reads at a time.

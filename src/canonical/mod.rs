@@ -122,11 +122,18 @@ pub struct Document<'a> {
     written: Vec<u16>,
     /// Where each block ends in `order`.
     block_ends: Vec<u32>,
-    /// The id of each block, in the order of `block_ends`.
-    block_ids: Vec<u32>,
     /// Where each `tourSpecification` line starts, in file order (the last wins on the
     /// robot).
     tour: Vec<u32>,
+}
+
+/// The order of a document's location blocks.
+#[derive(Debug, Clone, Copy)]
+enum BlockOrder {
+    /// As the file first mentions each location.
+    FirstSeen,
+    /// The order that builds a balanced tree in the robot's reader ([`Document::parse_balanced`]).
+    Balanced,
 }
 
 /// One line of the canonical text, as the layout writes it and as reading it back must
@@ -845,11 +852,10 @@ mod tests {
                     + "\n"
             })
             .collect();
-        let mut document = Document::parse(&text).unwrap();
+        let document = Document::parse_balanced(&text).unwrap();
         // (All but the file's first line, above which comments are looked for.)
         let marked = document.written.iter().filter(|&&length| length > 0);
         assert_eq!((document.order.len(), marked.count()), (80, 79));
-        document.balance();
         assert_ne!(document.render(), text);
         let recorded = document.record(&text);
         assert_eq!(

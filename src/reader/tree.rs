@@ -105,11 +105,11 @@ fn insert(depths: &mut BTreeMap<i32, u32>, id: i32) -> u32 {
     depth
 }
 
-/// An order of `ids` (ascending) whose insertion builds a balanced tree: each range's median
-/// first, then the medians of its halves, level by level.
-pub fn balanced_order(ids: &[i32]) -> Vec<i32> {
-    let mut order = Vec::with_capacity(ids.len());
-    let mut level: Vec<std::ops::Range<usize>> = std::iter::once(0..ids.len()).collect();
+/// An order of `count` ascending ids, as their indices, whose insertion builds a balanced
+/// tree: each range's median first, then the medians of its halves, level by level.
+pub fn balanced_order(count: usize) -> Vec<usize> {
+    let mut order = Vec::with_capacity(count);
+    let mut level: Vec<std::ops::Range<usize>> = std::iter::once(0..count).collect();
     while !level.is_empty() {
         let mut next = Vec::with_capacity(level.len() * 2);
         for range in level {
@@ -117,7 +117,7 @@ pub fn balanced_order(ids: &[i32]) -> Vec<i32> {
                 continue;
             }
             let middle = range.start + range.len() / 2;
-            order.push(ids[middle]);
+            order.push(middle);
             next.push(range.start..middle);
             next.push(middle + 1..range.end);
         }
@@ -194,7 +194,7 @@ mod tests {
     #[test]
     fn a_balanced_order_builds_a_shallow_tree() {
         let ids: Vec<i32> = (1..=1000).collect();
-        let order = balanced_order(&ids);
+        let order: Vec<i32> = balanced_order(ids.len()).iter().map(|&i| ids[i]).collect();
         let mut sorted = order.clone();
         sorted.sort_unstable();
         assert_eq!(sorted, ids);
