@@ -366,14 +366,14 @@ fn arrange(
     placed: Option<Vec<Placed>>,
     sequence: Option<&[u32]>,
 ) -> (Vec<u32>, Vec<u16>, Vec<u32>) {
-    let lines = std::mem::take(&mut blocks.lines);
+    let line_counts = std::mem::take(&mut blocks.lines);
     let block_at = |n: usize| sequence.map_or(n, |sequence| sequence[n] as usize);
     // Where each block's next line goes; once all are placed, where the block ends.
-    let mut next = vec![0; lines.len()];
+    let mut next = vec![0; line_counts.len()];
     let mut sum = 0;
-    for n in 0..lines.len() {
+    for n in 0..line_counts.len() {
         let block = block_at(n);
-        (next[block], sum) = (sum, sum + lines[block]);
+        (next[block], sum) = (sum, sum + line_counts[block]);
     }
     let mut order = vec![0u32; located];
     let mut written = Vec::new();
@@ -395,12 +395,12 @@ fn arrange(
             place(start, block);
         }),
     }
-    let block_ends: Vec<u32> = (0..lines.len()).map(|n| next[block_at(n)]).collect();
-    for n in 0..lines.len() {
+    let block_ends: Vec<u32> = (0..line_counts.len()).map(|n| next[block_at(n)]).collect();
+    for n in 0..line_counts.len() {
         let block = block_at(n);
         if !blocks.in_order(block) {
             let end = next[block] as usize;
-            let range = end - lines[block] as usize..end;
+            let range = end - line_counts[block] as usize..end;
             let written = written.get_mut(range.clone()).unwrap_or_default();
             sort_by_slot(text, &mut order[range], written);
         }
@@ -500,15 +500,15 @@ fn sort_by_slot(text: &str, block: &mut [u32], written: &mut [u16]) {
     for slot in 1..next.len() {
         next[slot] += next[slot - 1];
     }
-    let mut sorted = vec![0usize; block.len()];
+    let mut by_slot = vec![0usize; block.len()];
     for (line, &slot) in slots.iter().enumerate() {
-        sorted[next[slot as usize]] = line;
+        by_slot[next[slot as usize]] = line;
         next[slot as usize] += 1;
     }
-    let starts: Vec<u32> = sorted.iter().map(|&line| block[line]).collect();
+    let starts: Vec<u32> = by_slot.iter().map(|&line| block[line]).collect();
     block.copy_from_slice(&starts);
     if !written.is_empty() {
-        let lengths: Vec<u16> = sorted.iter().map(|&line| written[line]).collect();
+        let lengths: Vec<u16> = by_slot.iter().map(|&line| written[line]).collect();
         written.copy_from_slice(&lengths);
     }
 }

@@ -93,7 +93,8 @@ pub fn format(text: &str) -> Result<Option<String>, String> {
 /// A knowledge base as lines to write, in canonical order (see the module documentation).
 ///
 /// Lean on purpose (`ekb fmt` holds one for a whole file of any size): it keeps only where
-/// each entry line starts, in the order the layout writes them — 4 bytes a line. Everything
+/// each entry line starts, in the order the layout writes them, and the length of those
+/// already written so — 6 bytes a line at most. Everything
 /// else is read again from the line when it is written: its key, id and value, and the
 /// comments above it (the comment lines between it and the entry line before it in the
 /// file). Writing reads each line of the file about once more, and holds one line at a time.
