@@ -47,6 +47,12 @@ open(out, "w").write(line.sub(lambda m: m.group(1) + words, text, count=1))
 EOF
 }
 
+# `line`, `count` times. (`yes` ends on SIGPIPE once `head` has enough: under pipefail that
+# would end the script, and leave the file being written cut short.)
+repeated() { # line count
+  (set +o pipefail; yes "$1" | head -n "$2")
+}
+
 [ -f "$work/msg-1mb.dat" ] || with_long_value preGestureMessageEnglish 1000000 "$work/msg-1mb.dat"
 [ -f "$work/msg-50mb.dat" ] || with_long_value preGestureMessageEnglish 50000000 "$work/msg-50mb.dat"
 [ -f "$work/desc-50mb.dat" ] || with_long_value robotLocationDescription 50000000 "$work/desc-50mb.dat"
@@ -54,17 +60,18 @@ if [ ! -f "$work/tour-1m.dat" ]; then
   { grep -v '^tourSpecification' "$base"
     printf 'tourSpecification 1000000'
     # Ids 1 to 5 (the file's five locations) over and over.
-    yes ' 1 2 3 4 5' | head -n 200000 | tr -d '\n'
+    repeated ' 1 2 3 4 5' 200000 | tr -d '\n'
     printf '\n'
-  } > "$work/tour-1m.dat"
+  } > "$work/tour-1m.dat.new" && mv "$work/tour-1m.dat.new" "$work/tour-1m.dat"
 fi
 if [ ! -f "$work/lines-528mb.dat" ]; then
-  { cat "$base"; yes 'k 1 v' | head -n 88000000; } > "$work/lines-528mb.dat"
+  { cat "$base"; repeated 'k 1 v' 88000000; } > "$work/lines-528mb.dat.new" &&
+    mv "$work/lines-528mb.dat.new" "$work/lines-528mb.dat"
 fi
 if [ ! -f "$work/miscased-1m.dat" ]; then
-  { yes 'robotlocationdescription 1 Roomba' | head -n 1000000
+  { repeated 'robotlocationdescription 1 Roomba' 1000000
     echo 'tourSpecification 1 1'
-  } > "$work/miscased-1m.dat"
+  } > "$work/miscased-1m.dat.new" && mv "$work/miscased-1m.dat.new" "$work/miscased-1m.dat"
 fi
 
 # name|file|command (the file is appended)
