@@ -236,16 +236,18 @@ impl Lines {
         self.index.line(span.start)
     }
 
-    /// The first and last lines that hold a value of `location`.
+    /// The first and last lines that hold a value of `location`: those of its first and
+    /// last values in the text (two lines looked up, not one a value).
     pub fn range(&self, location: &Location<'_>) -> (u32, u32) {
-        field::Field::ALL
+        let (first, last) = field::Field::ALL
             .iter()
             .filter_map(|field| field.get(location))
-            .map(|(_, span)| self.of(span))
-            .chain([self.of(location.first_line)])
-            .fold((u32::MAX, 0), |(low, high), line| {
-                (low.min(line), high.max(line))
-            })
+            .map(|(_, span)| span.start)
+            .chain([location.first_line.start])
+            .fold((u32::MAX, 0), |(low, high), start| {
+                (low.min(start), high.max(start))
+            });
+        (self.index.line(first), self.index.line(last))
     }
 }
 
@@ -311,6 +313,8 @@ pub enum AllTourPositions<'k> {
     ReadAgain {
         kb: &'k KnowledgeBase<'k>,
         visited: HashSet<u32>,
+        /// How many stops the tour has.
+        stops: usize,
     },
 }
 
@@ -326,7 +330,7 @@ impl<'k> AllTourPositions<'k> {
             stops += 1;
         }
         if visited.len().saturating_mul(stops) <= MOST_STOPS_READ_AGAIN {
-            AllTourPositions::ReadAgain { kb, visited }
+            AllTourPositions::ReadAgain { kb, visited, stops }
         } else {
             AllTourPositions::Held(TourPositions::new(kb))
         }
@@ -335,6 +339,17 @@ impl<'k> AllTourPositions<'k> {
     /// The 1-based positions of location `id`, written as a list.
     pub fn of(&self, id: u32) -> PositionsOf<'_, 'k> {
         PositionsOf { all: self, id }
+    }
+
+    /// At most how many positions location `id` has: how long its list may be.
+    pub fn most(&self, id: u32) -> usize {
+        match self {
+            AllTourPositions::Held(held) => held.count(id),
+            AllTourPositions::ReadAgain { visited, stops, .. } => match visited.contains(&id) {
+                true => *stops,
+                false => 0,
+            },
+        }
     }
 }
 
@@ -348,7 +363,7 @@ impl serde::Serialize for PositionsOf<'_, '_> {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         match self.all {
             AllTourPositions::Held(held) => s.collect_seq(held.of(self.id)),
-            AllTourPositions::ReadAgain { kb, visited } => {
+            AllTourPositions::ReadAgain { kb, visited, .. } => {
                 let visits = visited.contains(&self.id);
                 let stops = kb.tour_stops().take_while(|_| visits);
                 s.collect_seq(
