@@ -19,7 +19,7 @@ use crate::present::{
 use crate::reader::line::LoadedValue;
 use crate::reader::{self, view, Loaded};
 use crate::render::escape::escape;
-use crate::render::safe_json::{self as json, InParts};
+use crate::render::safe_json as json;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -208,22 +208,18 @@ fn write_json(checked: &Checked<'_>, out: &mut impl Write) -> io::Result<()> {
     json::write(&view, out)
 }
 
-/// The list of [`JsonLocation`]s, made a batch at a time on the cores ([`InParts`]):
-/// holding them all held a copy of the file's text, and the positions of a location on a
-/// million-stop tour are long (such a location is a batch of its own).
+/// The list of [`JsonLocation`]s, each made as it is written: holding them all held a copy
+/// of the file's text, and the positions of a location on a million-stop tour are long.
 struct EachLocation<'a> {
     kb: &'a KnowledgeBase<'a>,
     lines: present::Lines,
     positions: AllTourPositions<'a>,
 }
 
-impl<'a> Serialize for EachLocation<'a> {
+impl Serialize for EachLocation<'_> {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let locations: Vec<&Location<'a>> = self.kb.locations().iter().collect();
-        let make = |location: &&Location<'a>| JsonLocation::new(location, self);
-        // A hundred positions, of about ten bytes of JSON each, weigh as much as the rest.
-        let weight = |location: &&Location<'a>| 1 + self.positions.most(location.id) / 100;
-        InParts::new(&locations, make).weighed(weight).serialize(s)
+        let locations = self.kb.locations().iter();
+        s.collect_seq(locations.map(|location| JsonLocation::new(location, self)))
     }
 }
 

@@ -313,8 +313,6 @@ pub enum AllTourPositions<'k> {
     ReadAgain {
         kb: &'k KnowledgeBase<'k>,
         visited: HashSet<u32>,
-        /// How many stops the tour has.
-        stops: usize,
     },
 }
 
@@ -330,7 +328,7 @@ impl<'k> AllTourPositions<'k> {
             stops += 1;
         }
         if visited.len().saturating_mul(stops) <= MOST_STOPS_READ_AGAIN {
-            AllTourPositions::ReadAgain { kb, visited, stops }
+            AllTourPositions::ReadAgain { kb, visited }
         } else {
             AllTourPositions::Held(TourPositions::new(kb))
         }
@@ -339,17 +337,6 @@ impl<'k> AllTourPositions<'k> {
     /// The 1-based positions of location `id`, written as a list.
     pub fn of(&self, id: u32) -> PositionsOf<'_, 'k> {
         PositionsOf { all: self, id }
-    }
-
-    /// At most how many positions location `id` has: how long its list may be.
-    pub fn most(&self, id: u32) -> usize {
-        match self {
-            AllTourPositions::Held(held) => held.count(id),
-            AllTourPositions::ReadAgain { visited, stops, .. } => match visited.contains(&id) {
-                true => *stops,
-                false => 0,
-            },
-        }
     }
 }
 
@@ -363,7 +350,7 @@ impl serde::Serialize for PositionsOf<'_, '_> {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         match self.all {
             AllTourPositions::Held(held) => s.collect_seq(held.of(self.id)),
-            AllTourPositions::ReadAgain { kb, visited, .. } => {
+            AllTourPositions::ReadAgain { kb, visited } => {
                 let visits = visited.contains(&self.id);
                 let stops = kb.tour_stops().take_while(|_| visits);
                 s.collect_seq(

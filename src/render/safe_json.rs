@@ -31,84 +31,35 @@ pub fn write<T: Serialize + ?Sized>(value: &T, out: &mut dyn Write) -> io::Resul
 ///
 /// Each item is written as [`write`] writes the items of an array that is the value of a
 /// field of the top-level object (two levels deep): that is where to put it.
-pub struct InParts<'a, I, F, W = fn(&I) -> usize> {
+pub struct InParts<'a, I, F> {
     items: &'a [I],
     make: F,
-    /// How much each item's JSON weighs: 1 for an item of an ordinary size (up to a few
-    /// kilobytes), more for a larger one. One that weighs more than a batch is written as
-    /// it is made, on one core.
-    weight: W,
 }
 
-/// At most how much the items made before they are written weigh (see [`InParts`]).
+/// At most how many items are made before they are written.
 const BATCH: usize = 4096;
 
 /// Below this many items of a batch, a part is not worth a thread.
 const MIN_ITEMS_PER_PART: usize = 512;
 
 impl<'a, I, F> InParts<'a, I, F> {
-    /// Items of an ordinary size each.
     pub fn new(items: &'a [I], make: F) -> InParts<'a, I, F> {
-        InParts {
-            items,
-            make,
-            weight: |_| 1,
-        }
-    }
-
-    /// Items that weigh as `weight` says: fewer of the heavy ones are made at a time.
-    pub fn weighed<W: Fn(&I) -> usize>(self, weight: W) -> InParts<'a, I, F, W> {
-        InParts {
-            items: self.items,
-            make: self.make,
-            weight,
-        }
+        InParts { items, make }
     }
 }
 
-impl<'a, I, F, W: Fn(&I) -> usize> InParts<'a, I, F, W> {
-    /// The items in batches that weigh about the same (none too small to share between the
-    /// cores), each at most [`BATCH`] or a single item.
-    fn batches(&self) -> Vec<&'a [I]> {
-        let weight = &self.weight;
-        let total: usize = self.items.iter().map(weight).sum();
-        let batches = total.div_ceil(BATCH).max(1);
-        let most = total.div_ceil(batches).max(1);
-        let (mut cut, mut start, mut so_far) = (Vec::with_capacity(batches), 0, 0);
-        for (at, item) in self.items.iter().enumerate() {
-            let item_weight = weight(item);
-            if so_far > 0 && so_far + item_weight > most {
-                cut.push(&self.items[start..at]);
-                (start, so_far) = (at, 0);
-            }
-            so_far += item_weight;
-        }
-        if start < self.items.len() {
-            cut.push(&self.items[start..]);
-        }
-        cut
-    }
-}
-
-impl<I: Sync, F: Fn(&I) -> T + Sync, T: Serialize, W: Fn(&I) -> usize> Serialize
-    for InParts<'_, I, F, W>
-{
+impl<I: Sync, F: Fn(&I) -> T + Sync, T: Serialize> Serialize for InParts<'_, I, F> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let mut seq = serializer.serialize_seq(Some(self.items.len()))?;
-        let make = &self.make;
-        for batch in self.batches() {
-            // An item heavier than a batch is written as it is made, not held.
-            if let [item] = batch {
-                if (self.weight)(item) > BATCH {
-                    seq.serialize_element(&make(item))?;
-                    continue;
-                }
-            }
+        // Batches of equal size, so that none is too small to share between the cores.
+        let batches = self.items.len().div_ceil(BATCH);
+        let size = self.items.len().div_ceil(batches.max(1)).max(1);
+        for batch in self.items.chunks(size) {
             let ranges = parallel::item_ranges(batch.len(), MIN_ITEMS_PER_PART);
             let parts = parallel::map_ranges(ranges, |range| {
                 let items = batch[range].iter();
                 items
-                    .map(|item| item_json(&make(item)))
+                    .map(|item| item_json(&(self.make)(item)))
                     .collect::<serde_json::Result<Vec<_>>>()
             });
             for part in parts {
@@ -245,46 +196,33 @@ mod tests {
             items: L,
             after: [u8; 2],
         }
-        fn written(items: impl Serialize) -> Vec<u8> {
-            let top = Top {
-                name: "x",
-                items,
-                after: [1, 2],
-            };
-            let mut written = Vec::new();
-            write(&top, &mut written).unwrap();
-            written
-        }
         let numbers: Vec<u32> = (0..3 * BATCH as u32 + 7).collect();
         let item =
             |&n: &u32| serde_json::json!({ "n": n, "text": "a\u{202E}##[b", "list": [n, [n]] });
         for count in [0, 1, 2, MIN_ITEMS_PER_PART * 2 + 1, numbers.len()] {
             let numbers = &numbers[..count];
             let whole: Vec<_> = numbers.iter().map(item).collect();
-            let expected = written(whole);
             let in_parts = InParts::new(numbers, item);
-            assert!(written(in_parts) == expected, "{count} items");
-            let heavy = |&n: &u32| if n % 100 == 0 { 2 * BATCH } else { 1 };
-            let weighed = InParts::new(numbers, item).weighed(heavy);
-            assert!(written(weighed) == expected, "{count} items, weighed");
-        }
-    }
-
-    #[test]
-    fn batches_weigh_about_the_same_and_a_heavy_item_is_made_alone() {
-        let items: Vec<usize> = (0..=BATCH).collect();
-        let lengths = |batches: Vec<&[usize]>| batches.iter().map(|b| b.len()).collect::<Vec<_>>();
-        // Items of an ordinary size: batches of the same size, none too small to share.
-        let ordinary = InParts::new(&items, |_: &usize| ());
-        assert_eq!(lengths(ordinary.batches()), [BATCH / 2 + 1, BATCH / 2]);
-        let heavy = |&item: &usize| if item % 1000 == 0 { 10 * BATCH } else { 1 };
-        let batches = InParts::new(&items, |_: &usize| ())
-            .weighed(heavy)
-            .batches();
-        assert_eq!(batches.concat(), items);
-        for batch in batches {
-            let weight: usize = batch.iter().map(heavy).sum();
-            assert!(batch.len() == 1 || weight <= BATCH, "{batch:?}");
+            let (mut expected, mut written) = (Vec::new(), Vec::new());
+            write(
+                &Top {
+                    name: "x",
+                    items: whole,
+                    after: [1, 2],
+                },
+                &mut expected,
+            )
+            .unwrap();
+            write(
+                &Top {
+                    name: "x",
+                    items: in_parts,
+                    after: [1, 2],
+                },
+                &mut written,
+            )
+            .unwrap();
+            assert!(written == expected, "{count} items");
         }
     }
 
