@@ -48,23 +48,12 @@ pub(super) fn scan(message: &Message<'_>) -> Scan {
     Scan::of(message.text.value, lengths, is_common_english)
 }
 
-/// Whether `word` (as [`Scan::of`] packs it) is a common English word that is no word of
-/// isiZulu or Kinyarwanda. Left out on purpose: `a`, `i`, `me`, `no`, `we` (words, or parts
-/// written apart, of those languages). Asked of every word of every translation: one look in
-/// a table, with no branch.
+/// Whether `word` (as [`Scan::of`] packs it, lowercased) is a common English word that is
+/// no word of isiZulu or Kinyarwanda. Left out on purpose: `a`, `i`, `me`, `no`, `we` (words,
+/// or parts written apart, of those languages). Asked of every word of every translation: one
+/// look in a table, with no branch.
 fn is_common_english(word: u64) -> bool {
-    // Lowercase: `| 0x20` lowercases a letter, and leaves a non-ASCII byte non-ASCII, so that
-    // it matches no word of the list.
-    let lower = word | lowercase_bits(word);
-    COMMON_ENGLISH[slot_of(lower)] == lower
-}
-
-/// `0x20` in each byte of `word` that is not zero.
-fn lowercase_bits(word: u64) -> u64 {
-    let bytes = 8 - word.leading_zeros() as usize / 8;
-    u64::from_le_bytes([0x20; 8])
-        .checked_shr(8 * (8 - bytes as u32))
-        .unwrap_or(0)
+    COMMON_ENGLISH[slot_of(word)] == word
 }
 
 /// The one place of `word` in [`COMMON_ENGLISH`]: a multiplicative hash whose multiplier
