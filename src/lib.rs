@@ -20,7 +20,9 @@
 //!   to check it;
 //! - [`cli`]: the `ekb` command line, one module per command under `commands`; [`streams`]:
 //!   standard output and error, written without a panic;
-//! - [`lsp`]: `ekb lsp`, the language server, whose handlers ask the layers above.
+//! - [`lsp`]: `ekb lsp`, the language server, whose handlers ask the layers above;
+//! - [`loader`]: the front door for programs that embed `ekb` (the C ABI, C++ and Python):
+//!   a knowledge base loaded as `ekb export` shows it, or refused with `ekb check`'s findings.
 
 // Output goes through `streams`, which never panics on a closed stream.
 #![deny(clippy::print_stdout, clippy::print_stderr)]
@@ -38,6 +40,7 @@ pub mod encoding;
 pub mod fix_list;
 pub mod fixing;
 pub mod generate;
+pub mod loader;
 pub mod lsp;
 pub mod map;
 pub mod mission;

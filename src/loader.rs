@@ -1,0 +1,310 @@
+//! The library's front door: load a knowledge base as the robot should, or check it.
+//!
+//! This is the API that programs embedding `ekb` use (the C ABI, the C++ classes, the
+//! Python module): owned values, no lifetimes, nothing printed, nothing exited. It is one
+//! reading with the command line: a file loads exactly as `ekb export` shows it, and a file
+//! that `ekb check` finds an error in is refused with the same findings (SPEC §12).
+//!
+//! ```
+//! use ekb::loader::{load_bytes, Options};
+//!
+//! // A location with no pose, no messages and no tour: refused, with every finding.
+//! let text = b"robotLocationDescription 1 Entrance\n";
+//! let error = load_bytes("inline.dat", text, &Options::default()).unwrap_err();
+//! assert!(error.findings().iter().any(|finding| finding.rule == "tour-missing"));
+//! ```
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use crate::check::{check_with, Checked};
+use crate::config::Config;
+use crate::diagnostic::Severity;
+use crate::model::build;
+use crate::model::export::{ExportedKnowledgeBase, ExportedLocation, ExportedMessages};
+use crate::model::Dialect;
+use crate::reader::Reader;
+use crate::render::FileReport;
+use crate::settings::Lookup;
+use crate::source::SourceFile;
+
+pub use crate::model::{Arm, Language, Phase, Point, Pose};
+
+/// One location, as `ekb export` writes it: a field absent from the file is `None`.
+pub type Location = ExportedLocation;
+
+/// The three languages of one message.
+pub type Messages = ExportedMessages;
+
+/// How to check a file before loading it.
+#[derive(Debug, Clone)]
+pub struct Options {
+    /// The version of the robot's reader to check against; `None`: the one `ekb.toml`
+    /// names, else the configuration's, else the one of the file's dialect.
+    pub reader: Option<Reader>,
+    /// The dialect to read the file in; `None`: detected from the file.
+    pub dialect: Option<Dialect>,
+    /// Where the project settings (`ekb.toml`) come from: the file's folder and its parents
+    /// (the default, as `ekb check` does), one named file, or none.
+    pub settings: Lookup,
+}
+
+impl Default for Options {
+    fn default() -> Options {
+        Options {
+            reader: None,
+            dialect: None,
+            settings: Lookup::Discover,
+        }
+    }
+}
+
+/// One finding of `ekb check`: 1-based lines and columns (columns in Unicode scalar
+/// values), the end exclusive.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Finding {
+    pub file: String,
+    pub rule: &'static str,
+    pub severity: Severity,
+    pub message: String,
+    pub line: u32,
+    pub column: u32,
+    pub end_line: u32,
+    pub end_column: u32,
+    pub location_id: Option<u32>,
+    pub help: Option<String>,
+}
+
+impl fmt::Display for Finding {
+    /// `file:line:column: severity[rule]: message`, as `ekb check --format concise`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{}:{}:{}: {}[{}]: {}",
+            self.file,
+            self.line,
+            self.column,
+            self.severity.name(),
+            self.rule,
+            self.message
+        )
+    }
+}
+
+/// Why a knowledge base was not loaded.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum LoadError {
+    /// The file, or the configuration that names it, could not be read: no finding about
+    /// the file's content can be made (`ekb` exits 2 for this).
+    Unreadable { file: String, reason: String },
+    /// The file has an error: the robot would load something other than it says. Every
+    /// finding of the check is here, errors and warnings, in the order of the file.
+    Refused { findings: Vec<Finding> },
+}
+
+impl LoadError {
+    /// The findings of a refused file; none for an unreadable one.
+    pub fn findings(&self) -> &[Finding] {
+        match self {
+            LoadError::Unreadable { .. } => &[],
+            LoadError::Refused { findings } => findings,
+        }
+    }
+}
+
+impl fmt::Display for LoadError {
+    /// One line: the reason, or the first error and how many there are.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            LoadError::Unreadable { file, reason } => write!(f, "{file}: {reason}"),
+            LoadError::Refused { findings } => {
+                let mut errors = findings.iter().filter(|f| f.severity == Severity::Error);
+                let count = errors.clone().count();
+                match errors.next() {
+                    Some(first) if count == 2 => write!(f, "{first} (and 1 more error)"),
+                    Some(first) if count > 2 => {
+                        write!(f, "{first} (and {} more errors)", count - 1)
+                    }
+                    Some(first) => write!(f, "{first}"),
+                    None => write!(f, "the knowledge base was refused"),
+                }
+            }
+        }
+    }
+}
+
+impl std::error::Error for LoadError {}
+
+/// A knowledge base that `ekb check` finds no error in, as the robot loads it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct KnowledgeBase {
+    file: String,
+    reader: Reader,
+    export: ExportedKnowledgeBase,
+    findings: Vec<Finding>,
+}
+
+impl KnowledgeBase {
+    /// The file's name, as given.
+    pub fn file(&self) -> &str {
+        &self.file
+    }
+
+    /// The version of the robot's reader the file was checked against.
+    pub fn reader(&self) -> Reader {
+        self.reader
+    }
+
+    /// `seed` or `current`; `None` when the file has no dialect-specific key.
+    pub fn dialect(&self) -> Option<Dialect> {
+        self.export.dialect
+    }
+
+    /// Every location, in ascending id order.
+    pub fn locations(&self) -> &[Location] {
+        &self.export.locations
+    }
+
+    /// The location with this id.
+    pub fn location(&self, id: u32) -> Option<&Location> {
+        let locations = &self.export.locations;
+        locations
+            .binary_search_by_key(&id, |location| location.id)
+            .ok()
+            .map(|index| &locations[index])
+    }
+
+    /// The ids of the tour's stops, in the order visited (a file with no error has a tour).
+    pub fn tour(&self) -> &[u32] {
+        self.export.tour.as_deref().unwrap_or_default()
+    }
+
+    /// The warnings and notes of the check (a loaded file has no error).
+    pub fn findings(&self) -> &[Finding] {
+        &self.findings
+    }
+
+    /// The whole knowledge base in the shape of `ekb export`.
+    pub fn export(&self) -> &ExportedKnowledgeBase {
+        &self.export
+    }
+}
+
+/// Checks the file at `path` as `ekb check` does; its findings, in the order of the file.
+pub fn check_path(path: &Path, options: &Options) -> Result<Vec<Finding>, LoadError> {
+    let source = read(path)?;
+    with_checked(&source, path, options, |checked| findings(checked))
+}
+
+/// Checks `bytes`, the content of a file called `name`, as `ekb check` does.
+pub fn check_bytes(name: &str, bytes: &[u8], options: &Options) -> Result<Vec<Finding>, LoadError> {
+    let source = SourceFile::from_bytes(name, bytes.to_vec());
+    with_checked(&source, Path::new(name), options, |checked| {
+        findings(checked)
+    })
+}
+
+/// Loads the file at `path`, or refuses it with every finding if it has an error.
+pub fn load_path(path: &Path, options: &Options) -> Result<KnowledgeBase, LoadError> {
+    let source = read(path)?;
+    with_checked(&source, path, options, loaded)?
+}
+
+/// Loads `bytes`, the content of a file called `name`; see [`load_path`].
+pub fn load_bytes(name: &str, bytes: &[u8], options: &Options) -> Result<KnowledgeBase, LoadError> {
+    let source = SourceFile::from_bytes(name, bytes.to_vec());
+    with_checked(&source, Path::new(name), options, loaded)?
+}
+
+/// Loads the knowledge base that a configuration names, as the robot's class does: the
+/// configuration at `config` if given, else `EKB_CONFIG`, else
+/// `config/environmentKnowledgeBaseConfiguration.ini` under the current folder (SPEC §3).
+/// Its `dialect` and `reader` keys apply, below those of `options`.
+pub fn load_configured(
+    config: Option<&Path>,
+    options: &Options,
+) -> Result<KnowledgeBase, LoadError> {
+    let unreadable = |file: &Path, reason: String| LoadError::Unreadable {
+        file: file.display().to_string(),
+        reason,
+    };
+    let named = config.unwrap_or(Path::new(crate::config::DEFAULT_PATH));
+    let config = Config::discover(config).map_err(|error| unreadable(named, error.0))?;
+    let file: PathBuf = config
+        .knowledge_base()
+        .map_err(|error| unreadable(config.path.as_deref().unwrap_or(named), error.0))?
+        .to_path_buf();
+    let options = Options {
+        reader: options.reader.or(config.reader),
+        dialect: options.dialect.or(config.dialect),
+        settings: options.settings.clone(),
+    };
+    load_path(&file, &options)
+}
+
+fn read(path: &Path) -> Result<SourceFile, LoadError> {
+    SourceFile::read(path).map_err(|error| LoadError::Unreadable {
+        file: path.display().to_string(),
+        reason: error.to_string(),
+    })
+}
+
+/// Checks `source` with the settings for `path` and the reader they choose, and gives the
+/// result to `then`.
+fn with_checked<T>(
+    source: &SourceFile,
+    path: &Path,
+    options: &Options,
+    then: impl FnOnce(&Checked<'_>) -> T,
+) -> Result<T, LoadError> {
+    let settings = options
+        .settings
+        .settings_for(path)
+        .map_err(|reason| LoadError::Unreadable {
+            file: path.display().to_string(),
+            reason,
+        })?;
+    let build_options = build::Options {
+        dialect: options.dialect,
+        reader: options
+            .reader
+            .or(settings.reader.as_ref().map(|reader| reader.value)),
+        // The library never prints.
+        verbose: false,
+    };
+    let rules = settings.rules_for(path, &Default::default());
+    let checked = check_with(source, &build_options, &rules);
+    Ok(then(&checked))
+}
+
+fn findings(checked: &Checked<'_>) -> Vec<Finding> {
+    FileReport::new(checked)
+        .diagnostics
+        .iter()
+        .map(|located| Finding {
+            file: located.file.to_string(),
+            rule: located.rule,
+            severity: located.severity,
+            message: located.message.to_string(),
+            line: located.region.line,
+            column: located.region.column,
+            end_line: located.region.end_line,
+            end_column: located.region.end_column,
+            location_id: located.location_id,
+            help: located.help.map(str::to_string),
+        })
+        .collect()
+}
+
+fn loaded(checked: &Checked<'_>) -> Result<KnowledgeBase, LoadError> {
+    let findings = findings(checked);
+    if checked.has_errors() {
+        return Err(LoadError::Refused { findings });
+    }
+    Ok(KnowledgeBase {
+        file: checked.source.name().to_string(),
+        reader: checked.reader,
+        export: ExportedKnowledgeBase::from(&checked.kb),
+        findings,
+    })
+}

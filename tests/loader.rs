@@ -1,0 +1,161 @@
+//! The library's front door (`ekb::loader`): one reading with `ekb export` and `ekb check`.
+
+use std::path::Path;
+
+use assert_cmd::Command;
+use ekb::loader::{self, LoadError, Options};
+use ekb::model::export::ExportedKnowledgeBase;
+use ekb::settings::Lookup;
+use ekb::Severity;
+
+fn fixture(name: &str) -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures")
+        .join(name)
+}
+
+fn isolated() -> Options {
+    Options {
+        settings: Lookup::Isolated,
+        ..Options::default()
+    }
+}
+
+fn ekb_json(args: &[&str]) -> serde_json::Value {
+    let output = Command::cargo_bin("ekb")
+        .unwrap()
+        .arg("--isolated")
+        .args(args)
+        .output()
+        .unwrap();
+    serde_json::from_slice(&output.stdout).expect("ekb writes JSON")
+}
+
+#[test]
+fn a_clean_file_loads_as_ekb_export_shows_it() {
+    for name in [
+        "check/clean-seed.dat",
+        "check/clean-current.dat",
+        "check/warning-only.dat",
+    ] {
+        let path = fixture(name);
+        let kb = loader::load_path(&path, &isolated()).unwrap();
+        let exported: ExportedKnowledgeBase =
+            serde_json::from_value(ekb_json(&["export", path.to_str().unwrap()])).unwrap();
+        assert_eq!(kb.export(), &exported, "{name}");
+        assert_eq!(kb.tour(), exported.tour.as_deref().unwrap(), "{name}");
+        for location in &exported.locations {
+            assert_eq!(kb.location(location.id), Some(location), "{name}");
+        }
+    }
+}
+
+#[test]
+fn a_location_is_found_by_id_and_an_unknown_id_is_none() {
+    let kb = loader::load_path(&fixture("check/clean-seed.dat"), &isolated()).unwrap();
+    let first = kb.tour()[0];
+    let location = kb.location(first).expect("the first stop is a location");
+    assert_eq!(location.id, first);
+    assert!(location.pose.is_some());
+    assert!(location.pre_gesture_message.english.is_some());
+    assert_eq!(kb.location(0), None);
+    assert_eq!(kb.location(2_147_483_647), None);
+}
+
+#[test]
+fn a_file_with_an_error_is_refused_with_the_findings_of_ekb_check() {
+    let path = fixture("check/seed.dat");
+    let error = loader::load_path(&path, &isolated()).unwrap_err();
+    let LoadError::Refused { findings } = &error else {
+        panic!("refused, not {error:?}");
+    };
+    let checked = ekb_json(&["check", "--format", "json", path.to_str().unwrap()]);
+    let expected: Vec<(String, u64, u64)> = checked["diagnostics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| {
+            let rule = d["rule"].as_str().unwrap().to_string();
+            (
+                rule,
+                d["line"].as_u64().unwrap(),
+                d["column"].as_u64().unwrap(),
+            )
+        })
+        .collect();
+    let got: Vec<(String, u64, u64)> = findings
+        .iter()
+        .map(|f| (f.rule.to_string(), u64::from(f.line), u64::from(f.column)))
+        .collect();
+    assert_eq!(got, expected);
+    let key_case = findings.iter().find(|f| f.rule == "key-case").unwrap();
+    assert_eq!((key_case.line, key_case.severity), (34, Severity::Error));
+    // The one-line reason names the first error, with its place.
+    let first_error = findings
+        .iter()
+        .find(|f| f.severity == Severity::Error)
+        .unwrap();
+    assert!(
+        error.to_string().starts_with(&first_error.to_string()),
+        "{error}"
+    );
+    assert!(error.to_string().ends_with("(and 1 more error)"), "{error}");
+}
+
+#[test]
+fn bytes_load_as_the_file_does() {
+    let path = fixture("check/clean-current.dat");
+    let bytes = std::fs::read(&path).unwrap();
+    let from_bytes = loader::load_bytes("clean-current.dat", &bytes, &isolated()).unwrap();
+    let from_path = loader::load_path(&path, &isolated()).unwrap();
+    assert_eq!(from_bytes.export(), from_path.export());
+    assert_eq!(from_bytes.file(), "clean-current.dat");
+}
+
+#[test]
+fn check_gives_the_findings_without_refusing() {
+    let findings =
+        loader::check_bytes("one.dat", b"robotLocationDescription 1 Door\n", &isolated()).unwrap();
+    let tour_missing = findings.iter().find(|f| f.rule == "tour-missing").unwrap();
+    assert_eq!(tour_missing.severity, Severity::Error);
+    let clean = loader::check_path(&fixture("check/clean-seed.dat"), &isolated()).unwrap();
+    assert!(clean.iter().all(|f| f.severity != Severity::Error));
+}
+
+#[test]
+fn a_missing_file_is_unreadable_not_refused() {
+    let error = loader::load_path(Path::new("/nonexistent/kb.dat"), &isolated()).unwrap_err();
+    assert!(matches!(error, LoadError::Unreadable { .. }), "{error:?}");
+    assert!(error.findings().is_empty());
+    assert!(
+        error.to_string().starts_with("/nonexistent/kb.dat: "),
+        "{error}"
+    );
+}
+
+#[test]
+fn the_configuration_names_the_file_and_its_reader() {
+    let project = tempfile::tempdir().unwrap();
+    std::fs::create_dir_all(project.path().join("config")).unwrap();
+    std::fs::create_dir_all(project.path().join("data")).unwrap();
+    std::fs::copy(
+        fixture("check/clean-current.dat"),
+        project.path().join("data/kb.dat"),
+    )
+    .unwrap();
+    let config = project
+        .path()
+        .join("config/environmentKnowledgeBaseConfiguration.ini");
+    std::fs::write(
+        &config,
+        "knowledgeBase kb.dat\nverboseMode false\nreader 2026-03\n",
+    )
+    .unwrap();
+    let kb = loader::load_configured(Some(&config), &isolated()).unwrap();
+    assert_eq!(kb.reader().name(), "2026-03");
+    assert!(!kb.locations().is_empty());
+
+    std::fs::write(&config, "knowledgeBase missing.dat\n").unwrap();
+    let error = loader::load_configured(Some(&config), &isolated()).unwrap_err();
+    assert!(matches!(error, LoadError::Unreadable { .. }), "{error:?}");
+}
