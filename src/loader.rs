@@ -193,7 +193,7 @@ impl KnowledgeBase {
 /// Checks the file at `path` as `ekb check` does; its findings, in the order of the file.
 pub fn check_path(path: &Path, options: &Options) -> Result<Vec<Finding>, LoadError> {
     let source = read(path)?;
-    with_checked(&source, path, options, |checked| findings(checked))
+    with_checked(&source, path, options, findings)
 }
 
 /// Checks `bytes`, the content of a file called `name`, as `ekb check` does.
