@@ -231,7 +231,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
             cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
             cand --settings 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file''s folder or above'
-            cand --markdown 'Print the catalogue as a Markdown table (as in the README)'
+            cand --markdown 'Print the catalogue as a Markdown table (as in docs/rules.md)'
             cand -v 'Print what is read, as it is read, on standard error'
             cand --verbose 'Print what is read, as it is read, on standard error'
             cand -q 'Print only findings and errors, no summary'

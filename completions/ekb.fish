@@ -284,7 +284,7 @@ complete -c ekb -n "__fish_ekb_using_subcommand rules" -l reader -d 'The version
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
-complete -c ekb -n "__fish_ekb_using_subcommand rules" -l markdown -d 'Print the catalogue as a Markdown table (as in the README)'
+complete -c ekb -n "__fish_ekb_using_subcommand rules" -l markdown -d 'Print the catalogue as a Markdown table (as in docs/rules.md)'
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand rules" -l isolated -d 'Use no settings file: every rule, at its own severity'

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Whole-process time and peak memory of every command that reads the 100k file, against
-# `ekb check` on the same file (the targets of issue 11, in BENCHMARKS.md).
+# `ekb check` on the same file (the targets in BENCHMARKS.md).
 #
 #   scripts/bench-commands.sh [WORKDIR]
 #

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Time and peak memory of every command on the red-team's hostile inputs (issue 12, item 5),
+# Time and peak memory of every command on hostile inputs (huge values, a huge tour, huge files),
 # each against `ekb check` of the same file, measured back to back.
 #
 #   scripts/bench-hostile.sh [WORKDIR]

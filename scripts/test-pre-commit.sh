@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# End-to-end test of the README's two pre-commit set-ups with the real pre-commit tool (the
-# one on the PATH, else installed from PyPI in a throwaway venv), in throwaway git
-# repositories:
-# - "pre-commit builds ekb": the README's snippet as written, its `repo` pointed at a
+# End-to-end test of the two pre-commit set-ups of docs/pre-commit.md with the real
+# pre-commit tool (the one on the PATH, else installed from PyPI in a throwaway venv), in
+# throwaway git repositories:
+# - "pre-commit builds ekb": the guide's snippet as written, its `repo` pointed at a
 #   throwaway clone of this repository in which the snippet's `rev` is a tag on HEAD (the
 #   real tag is pushed with each release);
-# - "an ekb you installed": the README's `repo: local`, `language: system` snippet, with the
+# - "an ekb you installed": the guide's `repo: local`, `language: system` snippet, with the
 #   ekb of `cargo build` on the PATH.
 # With each, a commit of the seed file is refused with its diagnostics, and once fixed it
 # commits. Then the ekb-fix and ekb-fmt hooks repair a file in a commit.
@@ -13,7 +13,7 @@
 # Needs network access to PyPI (unless pre-commit is installed) and crates.io (pre-commit
 # builds ekb with `cargo install`; its build is kept in target/pre-commit between runs).
 # EKB_MEASURE_HOOK_BUILD=1 builds the rust hook from nothing instead, and prints how long
-# pre-commit took to install it (the figure in the README).
+# pre-commit took to install it (the figure in docs/pre-commit.md).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
@@ -32,21 +32,21 @@ else
   export CARGO_TARGET_DIR="$root/target/pre-commit" PRE_COMMIT_HOME="$root/target/pre-commit-home"
 fi
 
-# The YAML block after `<!-- pre-commit:$1 -->` in the README.
+# The YAML block after `<!-- pre-commit:$1 -->` in docs/pre-commit.md.
 snippet() {
   awk -v marker="<!-- pre-commit:$1 -->" '
     $0 == marker { found = 1; next }
     found && /^```yaml/ { inside = 1; next }
     inside && /^```/ { exit }
-    inside { print }' "$root/README.md"
+    inside { print }' "$root/docs/pre-commit.md"
 }
 rust_snippet=$(snippet rust)
 system_snippet=$(snippet system)
-[ -n "$rust_snippet" ] && [ -n "$system_snippet" ] || fail "the README has no pre-commit snippets"
+[ -n "$rust_snippet" ] && [ -n "$system_snippet" ] || fail "docs/pre-commit.md has no pre-commit snippets"
 rev=$(sed -n 's/^ *rev: *\([^ ]*\).*/\1/p' <<<"$rust_snippet")
 url=$(sed -n 's/^ *- repo: *\([^ ]*\).*/\1/p' <<<"$rust_snippet")
 
-# This repository's HEAD, with the README's rev as a tag on it.
+# This repository's HEAD, with the snippet's rev as a tag on it.
 hooks="$work/ekb"
 git init --quiet "$hooks"
 git -C "$hooks" fetch --quiet "$root" HEAD
@@ -84,7 +84,7 @@ refuses_then_accepts() {
     { cat "$work/accepted.log"; fail "$style: the fixed file was refused"; }
 }
 
-# 1. pre-commit builds ekb: the README's snippet, its repository this one.
+# 1. pre-commit builds ekb: the guide's snippet, its repository this one.
 repo=$(content_repo rust "${rust_snippet//$url/$hooks}")
 start=$(date +%s)
 (cd "$repo" && pre-commit install --install-hooks >/dev/null)
@@ -95,7 +95,7 @@ fi
 refuses_then_accepts "$repo" "language: rust"
 echo "ok: language: rust, rev $rev: the seed file is refused with its diagnostics; fixed, it commits"
 
-# 2. An ekb you installed: the README's local hook, ekb on the PATH.
+# 2. An ekb you installed: the guide's local hook, ekb on the PATH.
 repo=$(content_repo system "$system_snippet")
 (cd "$repo" && pre-commit install >/dev/null)
 PATH="$installed:$PATH" refuses_then_accepts "$repo" "language: system"

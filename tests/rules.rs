@@ -6,7 +6,7 @@
 //!   instead of 21, …), which must raise nothing at all.
 //!
 //! Then: the fixes of the fixable rules, applied to the text; the real files of the corpus
-//! (`tests/fixtures/corpus/`, copied unchanged); and the README's rule table.
+//! (`tests/fixtures/corpus/`, copied unchanged); and the rule table of `docs/rules.md`.
 
 use std::path::{Path, PathBuf};
 
@@ -1188,24 +1188,25 @@ fn the_2026_02_file_has_two_long_lines_and_a_short_tour() {
 }
 
 // ---------------------------------------------------------------------------------------
-// The README
+// The rule table of the user guide
 
 #[test]
-fn the_readme_rule_table_is_generated_from_the_catalogue() {
-    let readme =
-        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
+fn the_guide_rule_table_is_generated_from_the_catalogue() {
+    let guide =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/rules.md"))
+            .unwrap();
     let (start, end) = ("<!-- rules:start -->", "<!-- rules:end -->");
-    let from = readme
+    let from = guide
         .find(start)
-        .expect("README.md has no <!-- rules:start -->")
+        .expect("docs/rules.md has no <!-- rules:start -->")
         + start.len();
-    let to = readme
+    let to = guide
         .find(end)
-        .expect("README.md has no <!-- rules:end -->");
+        .expect("docs/rules.md has no <!-- rules:end -->");
     let table = markdown_table(rules::ALL);
     assert!(
-        readme[from..to].trim() == table.trim(),
-        "the rule table in README.md is out of date: replace the lines between {start} and \
+        guide[from..to].trim() == table.trim(),
+        "the rule table in docs/rules.md is out of date: replace the lines between {start} and \
          {end} with the output of `cargo run -- rules --markdown`"
     );
 }

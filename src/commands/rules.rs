@@ -9,7 +9,7 @@ use crate::rules::{self, Rule};
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Print the catalogue as a Markdown table (as in the README)
+    /// Print the catalogue as a Markdown table (as in docs/rules.md)
     #[arg(long)]
     pub markdown: bool,
 }
@@ -25,7 +25,7 @@ pub fn run(args: &Args, _context: &Context) -> CommandResult {
     Ok(Exit::Clean)
 }
 
-/// The catalogue as the README shows it, one table per category.
+/// The catalogue as `docs/rules.md` shows it, one table per category.
 pub fn markdown_table(all: &[&Rule]) -> String {
     let mut out = String::new();
     let mut category = None;
