@@ -9,7 +9,7 @@
 //! output stays bounded whatever the input. Of a rule that `ekb fix` can fix, up to
 //! [`MAX_KEPT_PER_RULE`] are kept, so that one run of `fix` applies that many fixes.
 
-use crate::diagnostic::{Diagnostic, Edit, RuleCount, Summary};
+use crate::diagnostic::{Diagnostic, Edit, RuleCount, Severity, Summary};
 use crate::fix_list::FixList;
 use crate::map::LabMap;
 use crate::model::build::{build, Options, Unheeded};
@@ -172,7 +172,8 @@ impl Checked<'_> {
         self.diagnostics
             .iter()
             .filter(|d| {
-                std::ptr::eq(d.rule, &crash::COMPAT_READER_CRASH)
+                (std::ptr::eq(d.rule, &crash::COMPAT_READER_CRASH)
+                    && d.severity() == Severity::Error)
                     || (about_words(d.rule) && crashes_at(d.location_id))
                     || (std::ptr::eq(d.rule, &indented::COMPAT_INDENTED_LINE)
                         && indented::crashes_on_words_of(

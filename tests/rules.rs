@@ -1469,3 +1469,77 @@ fn a_plus_sign_and_a_line_of_form_feeds_are_no_errors() {
     );
     assert!(all.is_empty(), "{}", show(&all));
 }
+
+// ---------------------------------------------------------------------------------------
+// What the reader measurably does (SPEC §2 items 15–17 and the paragraph after them)
+
+/// Checks `text` against `version`.
+fn findings_in(text: &str, version: Reader) -> Vec<Finding> {
+    let source = SourceFile::from_bytes("kb.dat", text.as_bytes().to_vec());
+    findings_of(&source, reader(version))
+}
+
+/// The lines and severities of `rule`'s findings in `text` under `version`.
+fn lines_of(text: &str, version: Reader, rule: &str) -> Vec<(u32, Severity)> {
+    of_rule(&findings_in(text, version), rule)
+        .iter()
+        .map(|f| (f.line, f.diagnostic.severity()))
+        .collect()
+}
+
+/// `KEY_LENGTH` is 100 in the headers of `2025-06` and `2026-02` (and taken to be in the
+/// document's), 200 in those of `2026-03` and `2026-04`.
+#[test]
+fn compat_key_too_long_counts_each_versions_key_buffer() {
+    let text = format!(
+        "tourSpecification 1 1\n#{}\nrobotLocationDescription 1 Hall\n",
+        "x".repeat(149)
+    );
+    for version in Reader::ALL {
+        let expected = match version {
+            Reader::V2026_03 | Reader::V2026_04 => vec![],
+            _ => vec![(2, Severity::Error)],
+        };
+        assert_eq!(
+            lines_of(&text, version, "compat-key-too-long"),
+            expected,
+            "{version}"
+        );
+    }
+    let longer = format!("#{} 1\n", "x".repeat(199));
+    for version in [Reader::V2026_03, Reader::V2026_04] {
+        assert_eq!(
+            lines_of(&longer, version, "compat-key-too-long"),
+            [(1, Severity::Error)],
+            "{version}"
+        );
+    }
+}
+
+/// An error from the lowest depth measured over both builds (2025-06: 5,455; 2026-02:
+/// 3,740; 2026-03: 1,695; 2026-04: 1,932), a warning in the 10% below it.
+#[test]
+fn compat_reader_crash_is_an_error_from_the_lowest_measured_depth() {
+    let crash = |locations: usize, version: Reader| {
+        let found = findings_of(&generated(locations, false), reader(version));
+        of_rule(&found, "compat-reader-crash")
+            .iter()
+            .map(|f| (f.diagnostic.severity(), f.diagnostic.message.clone()))
+            .collect::<Vec<_>>()
+    };
+    for (version, depth) in [
+        (Reader::V2025_06, 5_455),
+        (Reader::V2026_02, 3_740),
+        (Reader::V2026_03, 1_695),
+        (Reader::V2026_04, 1_932),
+    ] {
+        let at = crash(depth, version);
+        assert_eq!(at.len(), 1, "{version}");
+        assert_eq!(at[0].0, Severity::Error, "{version}: {}", at[0].1);
+        let below = crash(depth - 1, version);
+        assert_eq!(below.len(), 1, "{version}");
+        assert_eq!(below[0].0, Severity::Warning, "{version}");
+        assert!(below[0].1.contains("depends on the build"), "{}", below[0].1);
+        assert!(crash(depth * 9 / 10 - 1, version).is_empty(), "{version}");
+    }
+}
