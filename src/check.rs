@@ -582,6 +582,11 @@ impl Diagnostics {
         self.kept.iter_mut()
     }
 
+    /// How many findings of `rule` were reported so far, kept or not.
+    pub fn reported(&self, rule: &'static Rule) -> usize {
+        self.counts.get(rule)
+    }
+
     /// Reports `n` findings of `rule` that are known not to be kept (never made).
     pub fn count(&mut self, rule: &'static Rule, n: usize) {
         if n > 0 {

@@ -1539,7 +1539,89 @@ fn compat_reader_crash_is_an_error_from_the_lowest_measured_depth() {
         let below = crash(depth - 1, version);
         assert_eq!(below.len(), 1, "{version}");
         assert_eq!(below[0].0, Severity::Warning, "{version}");
-        assert!(below[0].1.contains("depends on the build"), "{}", below[0].1);
+        assert!(
+            below[0].1.contains("depends on the build"),
+            "{}",
+            below[0].1
+        );
         assert!(crash(depth * 9 / 10 - 1, version).is_empty(), "{version}");
+    }
+}
+
+/// A file of `count` locations: a line of `ignored` for each id first (shuffled into an
+/// order that builds a balanced tree, or ascending), then a description for each id in the
+/// other order.
+fn ignored_lines_first(ignored: &str, count: usize, ignored_ascending: bool) -> String {
+    let balanced: Vec<usize> = ekb::reader::tree::balanced_order(count)
+        .into_iter()
+        .map(|index| index + 1)
+        .collect();
+    let ascending: Vec<usize> = (1..=count).collect();
+    let (first, then) = match ignored_ascending {
+        true => (&ascending, &balanced),
+        false => (&balanced, &ascending),
+    };
+    let mut text = String::from("tourSpecification 1 1\n");
+    for id in first {
+        let value = match ignored {
+            "robotLocation" | "robotLocationPose" => "1 2 3",
+            _ => "left",
+        };
+        text.push_str(&format!("{ignored} {id} {value}\n"));
+    }
+    for id in then {
+        text.push_str(&format!("robotLocationDescription {id} Hall\n"));
+    }
+    text
+}
+
+/// The tree is built from the lines a version inserts (SPEC §2.16): a line of a key it
+/// ignores adds no node, so lines of ignored keys in shuffled order before the others in
+/// ascending order still build a chain, and the reverse builds no chain.
+#[test]
+fn compat_reader_crash_builds_the_tree_from_the_lines_the_version_reads() {
+    let crash = |text: &str, version: Reader| {
+        let found = findings_in(text, version);
+        of_rule(&found, "compat-reader-crash")
+            .iter()
+            .map(|f| f.diagnostic.severity())
+            .collect::<Vec<_>>()
+    };
+    let ignored_by = |key: &str, version: Reader| match key {
+        "gestureArm" => version != Reader::V2026_03,
+        "robotLocation" => version != Reader::D542,
+        "robotLocationPose" => version == Reader::D542,
+        _ => true,
+    };
+    for version in Reader::ALL {
+        let count = version.crash_depth() + 10;
+        for key in [
+            "gestureArm",
+            "robotLocation",
+            "robotLocationPose",
+            "robotlocationdescription",
+            "locationNickname",
+        ] {
+            let chain_after = ignored_lines_first(key, count, false);
+            let chain_first = ignored_lines_first(key, count, true);
+            match ignored_by(key, version) {
+                true => {
+                    assert_eq!(
+                        crash(&chain_after, version),
+                        [Severity::Error],
+                        "{version} {key}"
+                    );
+                    assert_eq!(crash(&chain_first, version), [], "{version} {key}");
+                }
+                false => {
+                    assert_eq!(crash(&chain_after, version), [], "{version} {key}");
+                    assert_eq!(
+                        crash(&chain_first, version),
+                        [Severity::Error],
+                        "{version} {key}"
+                    );
+                }
+            }
+        }
     }
 }
