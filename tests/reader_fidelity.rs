@@ -423,21 +423,31 @@ fn numbers_as_the_real_reader_scans_them() {
 }
 
 /// Found against the real readers: a tour line with fewer ids than its count does not
-/// stop at its end; the reader reads on into the bytes its buffer held before (here the
-/// earlier tour's `1`), so those stops are undefined, not the earlier tour's. A letter does
-/// stop it: the stops after it keep what they held.
+/// stop at its end; the reader reads on into the bytes its buffer held before, so those
+/// stops are undefined, not the earlier tour's. A letter does stop it: the stops after it
+/// keep what they held, which is 0 where no line set them (SPEC §2.17: the tour is
+/// zero-filled when loading starts).
 #[test]
 fn tour_stops_past_the_end_of_the_line_are_undefined() {
     let cases = [
-        ("tour-past-the-line.dat", "tour-count-mismatch", 4),
-        ("tour-stops-at-a-letter.dat", "invalid-id", 2),
+        (
+            "tour-past-the-line.dat",
+            "tour-count-mismatch",
+            4,
+            serde_json::json!([2, null, null]),
+        ),
+        (
+            "tour-stops-at-a-letter.dat",
+            "invalid-id",
+            2,
+            serde_json::json!([2, 0, 0]),
+        ),
     ];
     for version in Reader::ALL {
-        for (fixture, rule, line) in cases {
+        for (fixture, rule, line, tour) in &cases {
             let (loaded, findings) = loaded_fixture(fixture, version);
-            let tour = serde_json::json!([2, null, null]);
-            assert_eq!(loaded["tour"], tour, "{fixture} {version}");
-            let reported = has(&findings, rule, line, Severity::Error);
+            assert_eq!(&loaded["tour"], tour, "{fixture} {version}");
+            let reported = has(&findings, rule, *line, Severity::Error);
             assert!(reported, "{fixture} {version}: {findings:?}");
         }
     }
@@ -500,4 +510,64 @@ fn an_overwritten_cultural_knowledge_line_still_crashes_the_reader() {
     assert!(!findings
         .iter()
         .any(|(rule, ..)| rule == "compat-too-many-cultural-keys"));
+}
+
+/// SPEC §2.15: `%f` into a `float` loads a finite decimal too large for one as an
+/// infinity, on every version; `export --as-loaded` shows it as `"inf"` or `"-inf"`.
+#[test]
+fn a_number_too_large_for_a_float_loads_as_an_infinity() {
+    for version in Reader::ALL {
+        let (loaded, findings) = loaded_fixture("float-overflow.dat", version);
+        let location = &loaded["locations"][0];
+        assert_eq!(
+            location["gestureTarget"],
+            serde_json::json!({ "x": 3.0, "y": "inf", "z": 0.82 }),
+            "{version}"
+        );
+        if version != Reader::D542 {
+            assert_eq!(
+                location["pose"],
+                serde_json::json!({ "x": 1.0, "y": "-inf", "theta": "inf" }),
+                "{version}"
+            );
+        }
+        for line in [3, 4] {
+            assert!(
+                has(&findings, "compat-float-overflow", line, Severity::Error),
+                "{version} line {line}: {findings:?}"
+            );
+        }
+        let overflows = findings
+            .iter()
+            .filter(|(rule, ..)| rule == "compat-float-overflow")
+            .count();
+        assert_eq!(overflows, 3, "{version}: {findings:?}");
+    }
+}
+
+/// SPEC §2.15: an id past a C `long` saturates (`LONG_MIN`, `LONG_MAX`), and `%d` keeps its
+/// low 32 bits: `-99999999999999999999` lands on id 0, `99999999999999999999` on -1.
+#[test]
+fn an_id_past_a_long_lands_on_the_low_bits_of_its_limit() {
+    for version in Reader::ALL {
+        let (loaded, findings) = loaded_fixture("id-past-long.dat", version);
+        let ids: Vec<(i64, &str)> = loaded["locations"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|l| {
+                (
+                    l["id"].as_i64().unwrap(),
+                    l["description"].as_str().unwrap(),
+                )
+            })
+            .collect();
+        assert_eq!(ids, [(-1, "Yard"), (0, "Lab"), (1, "Hall")], "{version}");
+        for line in [2, 3] {
+            assert!(
+                has(&findings, "invalid-id", line, Severity::Error),
+                "{version} line {line}: {findings:?}"
+            );
+        }
+    }
 }

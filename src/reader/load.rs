@@ -149,8 +149,8 @@ pub struct LoadedTour {
     pub line: Span,
     /// `numberOfLocations`.
     pub count: i32,
-    /// The first `count` slots (at most those ever written, or the 20 of its buffer); `None`
-    /// where a slot holds whatever was in memory.
+    /// The first `count` slots (at most those ever written, or the 20 of its buffer): 0
+    /// where no line read one; `None` where a slot holds whatever was in memory.
     pub stops: Vec<Option<i32>>,
 }
 
@@ -241,8 +241,10 @@ fn load_in_parts(text: &[u8], reader: Reader, only: Option<Vec<Key>>, parts: usi
         LoadedTour {
             line,
             count,
+            // The tour is zero-filled when loading starts (SPEC §2.17): a slot that no
+            // line read is 0.
             stops: (0..shown)
-                .map(|k| slots.get(k).copied().flatten())
+                .map(|k| slots.get(k).copied().unwrap_or(Some(0)))
                 .collect(),
         }
     });

@@ -159,6 +159,7 @@ pub static ALL: &[&Rule] = &[
     &content::gesture_behind_robot::GESTURE_BEHIND_ROBOT,
     &compat::compat_line_too_long::COMPAT_LINE_TOO_LONG,
     &compat::compat_leading_symbol::COMPAT_LEADING_SYMBOL,
+    &compat::compat_float_overflow::COMPAT_FLOAT_OVERFLOW,
     &compat::compat_no_final_newline::COMPAT_NO_FINAL_NEWLINE,
     &compat::compat_crlf::COMPAT_CRLF,
     &compat::compat_bom::COMPAT_BOM,

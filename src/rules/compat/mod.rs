@@ -4,6 +4,7 @@
 pub mod compat_bom;
 pub mod compat_crlf;
 pub mod compat_cultural_word_split;
+pub mod compat_float_overflow;
 pub mod compat_ignored_key;
 pub mod compat_indented_line;
 pub mod compat_key_too_long;
