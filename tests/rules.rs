@@ -766,11 +766,13 @@ fn a_crlf_line_of_200_bytes_loses_no_letter() {
         "rules/compat-line-too-long/bad-crlf.dat",
         reader(Reader::V2025_06),
     );
-    let found = of_rule(&all, "compat-line-too-long");
-    assert_eq!((found.len(), found[0].line, found[0].column), (1, 8, 198));
-    assert!(found[0].diagnostic.message.ends_with(
-        "only its line ending does not fit, and the robot's reader reads it as an empty line"
-    ));
+    // It loads what the line says with an LF ending: the cut changes nothing loaded (SPEC
+    // §2, after item 17), so it is no `compat-line-too-long`.
+    assert!(
+        of_rule(&all, "compat-line-too-long").is_empty(),
+        "{}",
+        show(&all)
+    );
 }
 
 #[test]
@@ -1626,5 +1628,94 @@ fn compat_reader_crash_builds_the_tree_from_the_lines_the_version_reads() {
                 }
             }
         }
+    }
+}
+
+/// A `\r` is a difference only where the version keeps it in a text value: at the end of
+/// a tour, number or culturalKnowledge line, or on a blank line, it changes nothing loaded
+/// (a warning, for the fix); the `gestureArm` text only where the version reads it.
+#[test]
+fn compat_crlf_is_an_error_only_where_a_text_keeps_the_carriage_return() {
+    let plain = "robotLocationDescription 1 Hall\nrobotLocationPose 1 1 2 3\n";
+    let harmless = [
+        "tourSpecification 1 1\r\n",
+        "culturalKnowledge 1 Bow\r\n",
+        "\r\n",
+        "# a comment\r\n",
+        "robotLocationPose 1 1 2 3\r\n",
+    ];
+    for version in Reader::ALL {
+        for line in harmless {
+            let text = format!("{plain}{line}");
+            assert_eq!(
+                lines_of(&text, version, "compat-crlf"),
+                [(3, Severity::Warning)],
+                "{version} {line:?}"
+            );
+        }
+        let text = format!("{plain}robotLocationDescription 1 Lab\r\n");
+        assert_eq!(
+            lines_of(&text, version, "compat-crlf"),
+            [(3, Severity::Error)],
+            "{version}"
+        );
+        let arm = format!("{plain}gestureArm 1 left\r\n");
+        let expected = match version {
+            Reader::V2026_03 => Severity::Error,
+            _ => Severity::Warning,
+        };
+        assert_eq!(
+            lines_of(&arm, version, "compat-crlf"),
+            [(3, expected)],
+            "{version}"
+        );
+    }
+}
+
+/// A cut is a difference only where it changes what the version loads: not in a line of
+/// blanks, nor in a comment whose rest is no line the reader reads; yes in a comment whose
+/// rest is a keyed line, which the reader then loads.
+#[test]
+fn compat_line_too_long_is_an_error_only_where_the_cut_changes_what_loads() {
+    let head = "robotLocationDescription 1 Hall\ntourSpecification 1 1\n";
+    let blanks = format!("{head}{}\n", " ".repeat(700));
+    let comment = format!("{head}#{}\n", " word".repeat(140));
+    let hidden_line = format!(
+        "{head}#{}robotLocationDescription 1 Overwritten\n",
+        " ".repeat(198)
+    );
+    for version in Reader::ALL {
+        assert_eq!(
+            lines_of(&blanks, version, "compat-line-too-long"),
+            [],
+            "{version}"
+        );
+        assert_eq!(
+            lines_of(&comment, version, "compat-line-too-long"),
+            [],
+            "{version}"
+        );
+        let expected = match version.line_buffer() {
+            200 => vec![(3, Severity::Error)],
+            _ => vec![],
+        };
+        assert_eq!(
+            lines_of(&hidden_line, version, "compat-line-too-long"),
+            expected,
+            "{version}"
+        );
+    }
+    // A text cut short is still one, on every version whose buffer cuts it.
+    let message = format!("{head}preGestureMessageEnglish 1 {}\n", "word ".repeat(70));
+    for version in Reader::ALL {
+        let expected = match version.line_buffer() {
+            200 | 300 => vec![(3, Severity::Error)],
+            _ => vec![],
+        };
+        assert_eq!(
+            lines_of(&message, version, "compat-line-too-long"),
+            expected,
+            "{version}"
+        );
     }
 }

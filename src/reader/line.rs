@@ -133,6 +133,53 @@ pub fn past_the_line(key: Key) -> LoadedValue {
     }
 }
 
+/// Whether `a`, read from `a_line`, and `b`, read from `b_line` (each read at offset 0),
+/// change what the robot holds in the same way: the same value of the same key of the same
+/// location, or nothing at all (a skipped line and an ignored one alike).
+pub fn same_load(a: &LineRead, a_line: &[u8], b: &LineRead, b_line: &[u8]) -> bool {
+    use LineRead::{Failed, Ignored, Skipped, Tour, TourFailed, Value};
+    let bytes_of = |span: &Span, line: &[u8]| line.get(span.range()).map(<[u8]>::to_vec);
+    let same_value = |x: &LoadedValue, y: &LoadedValue| match (x, y) {
+        (LoadedValue::Text(x), LoadedValue::Text(y)) => bytes_of(x, a_line) == bytes_of(y, b_line),
+        (LoadedValue::Numbers(x), LoadedValue::Numbers(y)) => {
+            x.map(f32::to_bits) == y.map(f32::to_bits)
+        }
+        (LoadedValue::Words(x), LoadedValue::Words(y)) => {
+            x.len() == y.len()
+                && x.iter()
+                    .zip(y)
+                    .all(|(x, y)| bytes_of(x, a_line) == bytes_of(y, b_line))
+        }
+        (LoadedValue::Undefined, LoadedValue::Undefined) => true,
+        _ => false,
+    };
+    match (a, b) {
+        (Skipped | Ignored { .. }, Skipped | Ignored { .. }) | (TourFailed, TourFailed) => true,
+        (
+            Value {
+                key: a_key,
+                id: a_id,
+                value: a_value,
+                ..
+            },
+            Value {
+                key: b_key,
+                id: b_id,
+                value: b_value,
+                ..
+            },
+        ) => a_key == b_key && a_id == b_id && same_value(a_value, b_value),
+        (Failed { .. }, Failed { .. }) | (Tour { .. }, Tour { .. }) => a == b,
+        _ => false,
+    }
+}
+
+/// Whether what `read` does changes nothing the robot holds (a blank line, a comment, a key
+/// the version ignores).
+pub fn loads_nothing(read: &LineRead) -> bool {
+    matches!(read, LineRead::Skipped | LineRead::Ignored { .. })
+}
+
 /// Where a location key's value starts: past `strlen(key)` bytes, then past non-alphanumerics,
 /// alphanumerics (the id) and non-alphanumerics again.
 fn value_start(line: &[u8], key_length: usize) -> Option<usize> {

@@ -36,6 +36,7 @@ pub fn check_file(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut 
     compat_slow_load::check_tours(kb, text, reader, out);
     compat_too_many_cultural_keys::check_overwritten(kb, text, reader, out);
     arm_blanks_are_errors(kb, text, reader, out);
+    compat_crlf::grade(text, reader, out);
 }
 
 /// The shape of the tree of locations that `reader` builds from the file: the reader's own
