@@ -294,7 +294,12 @@ fn check_unverified<'a>(
     // The source keeps the first invalid range of a bounded number of lines only.
     let unrecorded = source.invalid_utf8_lines() - source.invalid_utf8().len();
     out.count(&structure::invalid_utf8::INVALID_UTF8, unrecorded);
-    if let Some(foreign) = structure::not_a_knowledge_base::check(source.text()) {
+    let foreign = match source.wide() {
+        // One finding says it all: the robot loads nothing from it.
+        Some(wide) => Some(structure::invalid_utf8::wide(wide)),
+        None => structure::not_a_knowledge_base::check(source.text()),
+    };
+    if let Some(foreign) = foreign {
         // One finding says it all: each of its lines would be an `unknown-key`.
         out.push(foreign);
         let reader = options
