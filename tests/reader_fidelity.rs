@@ -423,18 +423,19 @@ fn numbers_as_the_real_reader_scans_them() {
 }
 
 /// Found against the real readers: a tour line with fewer ids than its count does not
-/// stop at its end; the reader reads on into the bytes its buffer held before, so those
-/// stops are undefined, not the earlier tour's. A letter does stop it: the stops after it
-/// keep what they held, which is 0 where no line set them (SPEC §2.17: the tour is
-/// zero-filled when loading starts).
+/// stop at its end; the reader reads on into the bytes its buffer held before (SPEC §2.17):
+/// the `1` that the longer tour line before left, then the `Lab` of the description
+/// before that, where `%d` fails and the last slot keeps what it held (the earlier tour's
+/// `1`). A letter stops it too: the stops after it keep what they held, which is 0 where
+/// no line set them (the tour is zero-filled when loading starts).
 #[test]
-fn tour_stops_past_the_end_of_the_line_are_undefined() {
+fn tour_stops_past_the_end_of_the_line_come_from_the_buffer() {
     let cases = [
         (
             "tour-past-the-line.dat",
             "tour-count-mismatch",
             4,
-            serde_json::json!([2, null, null]),
+            serde_json::json!([2, 1, 1]),
         ),
         (
             "tour-stops-at-a-letter.dat",
@@ -566,6 +567,44 @@ fn an_id_past_a_long_lands_on_the_low_bits_of_its_limit() {
         for line in [2, 3] {
             assert!(
                 has(&findings, "invalid-id", line, Severity::Error),
+                "{version} line {line}: {findings:?}"
+            );
+        }
+    }
+}
+
+/// SPEC §2.17: a buffer an earlier line filled is reused, so a short line whose value the
+/// reader looks for past its end loads what the longer line before it left there.
+#[test]
+fn a_short_line_loads_what_a_longer_one_left_in_the_buffer() {
+    for version in Reader::ALL {
+        let (loaded, findings) = loaded_fixture("leftovers.dat", version);
+        assert_eq!(
+            loaded["locations"][1]["description"], "long description of the hall",
+            "{version}"
+        );
+        assert!(
+            has(&findings, "empty-value", 2, Severity::Error),
+            "{version}: {findings:?}"
+        );
+    }
+}
+
+/// SPEC §2.17: the reader's loops that skip to a value do not stop at a NUL byte: the text
+/// after it is loaded.
+#[test]
+fn the_text_after_a_nul_byte_is_loaded() {
+    for version in Reader::ALL {
+        let (loaded, findings) = loaded_fixture("after-a-nul.dat", version);
+        let location = &loaded["locations"][0];
+        assert_eq!(location["description"], "Hall", "{version}");
+        assert_eq!(
+            location["preGestureMessage"]["english"], "Welcome",
+            "{version}"
+        );
+        for line in [1, 2] {
+            assert!(
+                has(&findings, "control-character", line, Severity::Error),
                 "{version} line {line}: {findings:?}"
             );
         }
