@@ -1,9 +1,9 @@
 //! `ekb export --as-loaded`: what a version of the reader loads, in the JSON shape of SPEC
 //! §5. Each field holds what the robot holds: a field no line set is the robot's empty text
 //! or 0; `gestureArm` and `culturalKnowledge` are `null` where the version does not read
-//! them; a value the reader took from past the end of its line (undefined) is `null`. A
-//! number JSON cannot hold, which the robot does hold (`1e39` loads as an infinity), is
-//! the string `"inf"`, `"-inf"` or `"nan"`.
+//! them; a value the reader took from bytes of its buffer that no line wrote (undefined) is
+//! `null`. A number JSON cannot hold, which the robot does hold (`1e39` loads as an
+//! infinity), is the string `"inf"`, `"-inf"` or `"nan"`.
 
 use std::borrow::Cow;
 

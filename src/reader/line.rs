@@ -250,7 +250,13 @@ pub fn word_pieces(word: &str) -> Vec<&str> {
 /// cannot be read leaves its slot, and every later one, as it was; where the reader runs
 /// into bytes no line wrote, the slots it has room for are undefined.
 fn tour(buffer: &InBuffer<'_>, key_length: usize) -> LineRead {
-    let number_at = |at: usize| scan::int(buffer.c_string(at)?.bytes, 0).map(|(n, _)| n);
+    // Within the line, read from it: a C string searched for its end at every id would
+    // make a line of a million ids quadratic.
+    let line = buffer.c_line();
+    let number_at = |at: usize| match at < line.len() {
+        true => scan::int(line, at).map(|(n, _)| n),
+        false => scan::int(buffer.c_string(at)?.bytes, 0).map(|(n, _)| n),
+    };
     let Some(at) = buffer.skip(key_length, |b| !is_alnum(b)) else {
         return LineRead::TourFailed;
     };

@@ -117,11 +117,10 @@ fn diagnostic(line: &Line, text: &str, reader: Reader) -> Diagnostic {
             tail(&text[content.start as usize..kept_end]),
             excerpt(&text[cut..content_end])
         )
-    } else if drops_letter {
-        "only its newline does not fit, so the robot's reader drops its last character instead"
-            .to_string()
     } else {
-        "only its line ending does not fit, and the robot's reader reads it as an empty line"
+        // A line whose content fits and that is still reported is a text that loses its
+        // last letter ([`cut_changes_what_loads`]).
+        "only its newline does not fit, so the robot's reader drops its last character instead"
             .to_string()
     };
     // Point at what the robot loses; when that is only the newline, at the last character.
