@@ -281,6 +281,11 @@ const LINES: &[&str] = &[
     "robotLocationPose # 1 2 3x",
     "robotLocationPose # 0x10 2 3",
     "gestureTarget # 1,0 2 3",
+    "gestureTarget # 1 1e39 1",
+    "robotLocationPose # -1e39 3.4028236e38 1",
+    "robotLocationDescription -99999999999999999999 far below",
+    "robotLocationDescription #\u{0}Hall",
+    "tourSpecification 3 #",
 ];
 
 /// A message long enough to cross a line buffer (200, 300 or 600 bytes).
