@@ -1659,6 +1659,18 @@ fn compat_crlf_is_an_error_only_where_a_text_keeps_the_carriage_return() {
             [(3, Severity::Error)],
             "{version}"
         );
+        // 198 bytes, `\r`, `\n`: a 200-byte buffer cuts the line before its `\n`, and the
+        // reader drops the `\r` as if it were the newline.
+        let long = format!("{plain}robotLocationDescription 1 {}\r\n", "a".repeat(171));
+        let expected = match version.line_buffer() {
+            200 => Severity::Warning,
+            _ => Severity::Error,
+        };
+        assert_eq!(
+            lines_of(&long, version, "compat-crlf"),
+            [(3, expected)],
+            "{version}"
+        );
         let arm = format!("{plain}gestureArm 1 left\r\n");
         let expected = match version {
             Reader::V2026_03 => Severity::Error,
