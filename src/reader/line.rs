@@ -3,8 +3,10 @@
 //! It reads a key and an integer with `sscanf("%s %d")`; a line without both is skipped. A
 //! key it knows then finds its value by counting from the *start of the line*: `strlen(key)`,
 //! then past everything that is not a letter or digit, past the id's letters and digits,
-//! and past everything that is not a letter or digit again. Numbers are read from there with
-//! `%f`; a text is the rest of the line less its last byte (taken to be the newline).
+//! and past everything that is not a letter or digit again, on past a NUL and the line's
+//! end into what earlier lines left in the buffer ([`super::buffer`]). Numbers are read
+//! from there with `%f`; a text is the C string there less its last byte (taken to be the
+//! newline).
 
 use super::buffer::InBuffer;
 use super::load::TOUR_BUFFER;
