@@ -9,7 +9,7 @@
 //! output stays bounded whatever the input. Of a rule that `ekb fix` can fix, up to
 //! [`MAX_KEPT_PER_RULE`] are kept, so that one run of `fix` applies that many fixes.
 
-use crate::diagnostic::{Diagnostic, Edit, RuleCount, Summary};
+use crate::diagnostic::{Diagnostic, Edit, RuleCount, Severity, Summary};
 use crate::fix_list::FixList;
 use crate::map::LabMap;
 use crate::model::build::{build, Options, Unheeded};
@@ -172,7 +172,8 @@ impl Checked<'_> {
         self.diagnostics
             .iter()
             .filter(|d| {
-                std::ptr::eq(d.rule, &crash::COMPAT_READER_CRASH)
+                (std::ptr::eq(d.rule, &crash::COMPAT_READER_CRASH)
+                    && d.severity() == Severity::Error)
                     || (about_words(d.rule) && crashes_at(d.location_id))
                     || (std::ptr::eq(d.rule, &indented::COMPAT_INDENTED_LINE)
                         && indented::crashes_on_words_of(
@@ -293,7 +294,12 @@ fn check_unverified<'a>(
     // The source keeps the first invalid range of a bounded number of lines only.
     let unrecorded = source.invalid_utf8_lines() - source.invalid_utf8().len();
     out.count(&structure::invalid_utf8::INVALID_UTF8, unrecorded);
-    if let Some(foreign) = structure::not_a_knowledge_base::check(source.text()) {
+    let foreign = match source.wide() {
+        // One finding says it all: the robot loads nothing from it.
+        Some(wide) => Some(structure::invalid_utf8::wide(wide)),
+        None => structure::not_a_knowledge_base::check(source.text()),
+    };
+    if let Some(foreign) = foreign {
         // One finding says it all: each of its lines would be an `unknown-key`.
         out.push(foreign);
         let reader = options
@@ -579,6 +585,11 @@ impl Diagnostics {
     /// The findings kept, to be made graver where the robot's reader makes them so.
     pub fn iter_mut(&mut self) -> std::slice::IterMut<'_, Diagnostic> {
         self.kept.iter_mut()
+    }
+
+    /// How many findings of `rule` were reported so far, kept or not.
+    pub fn reported(&self, rule: &'static Rule) -> usize {
+        self.counts.get(rule)
     }
 
     /// Reports `n` findings of `rule` that are known not to be kept (never made).

@@ -46,6 +46,9 @@ pub struct SourceFile {
     invalid_utf8_lines: usize,
     /// The file as it was on disk when read (none for standard input or bytes in memory).
     stamp: Option<FileStamp>,
+    /// The wide encoding of a file read in spite of it ([`SourceFile::read_even_wide`]),
+    /// whose text is then empty: what the robot's reader loads from it.
+    wide: Option<encoding::Detected>,
 }
 
 /// What a file on disk was when ekb read it: enough to tell, before writing it back, that
@@ -113,6 +116,7 @@ impl SourceFile {
                     invalid_utf8,
                     invalid_utf8_lines,
                     stamp: None,
+                    wide: None,
                 }
             }
         }
@@ -128,19 +132,44 @@ impl SourceFile {
             invalid_utf8: Vec::new(),
             invalid_utf8_lines: 0,
             stamp: None,
+            wide: None,
         }
     }
 
     /// Reads a file from disk, or standard input for `-`. A file in UTF-16 or UTF-32 is
-    /// refused ([`crate::encoding`]).
+    /// refused ([`crate::encoding`]): what reads it to rewrite it would break it.
     pub fn read(path: &Path) -> Result<SourceFile, ReadError> {
+        let source = SourceFile::read_even_wide(path)?;
+        match source.wide {
+            Some(wide) => Err(ReadError {
+                path: path.to_path_buf(),
+                reason: wide.to_string(),
+            }),
+            None => Ok(source),
+        }
+    }
+
+    /// [`SourceFile::read`], but a file in UTF-16 or UTF-32 is read as what the robot's
+    /// reader loads from it, nothing (an empty text), with its [encoding](SourceFile::wide):
+    /// a finding about the file, for what only reports on it.
+    pub fn read_even_wide(path: &Path) -> Result<SourceFile, ReadError> {
         let fail = |reason: String| ReadError {
             path: path.to_path_buf(),
             reason,
         };
+        let wide = |name: &str, stamp: Option<FileStamp>, bytes: &[u8]| {
+            encoding::detect(bytes).map(|wide| SourceFile {
+                path: (path != Path::new("-")).then(|| path.to_path_buf()),
+                stamp,
+                wide: Some(wide),
+                ..SourceFile::from_text(name, String::new())
+            })
+        };
         if path == Path::new("-") {
             let bytes = read_limited(std::io::stdin().lock(), 0, MAX_FILE_SIZE).map_err(fail)?;
-            refuse_wide(&bytes).map_err(fail)?;
+            if let Some(source) = wide("<stdin>", None, &bytes) {
+                return Ok(source);
+            }
             return Ok(SourceFile::from_bytes("<stdin>", bytes));
         }
         let (file, metadata) = open_regular(path, MAX_FILE_SIZE).map_err(|reason| {
@@ -161,7 +190,9 @@ impl SourceFile {
                 if map.len() as u64 > MAX_FILE_SIZE {
                     return Err(fail(too_large(MAX_FILE_SIZE)));
                 }
-                refuse_wide(&map).map_err(fail)?;
+                if let Some(source) = wide(&name, stamp, &map) {
+                    return Ok(source);
+                }
                 if is_utf8(&map, |range| load_pages(&map, range)) {
                     return Ok(SourceFile {
                         name,
@@ -170,6 +201,7 @@ impl SourceFile {
                         invalid_utf8: Vec::new(),
                         invalid_utf8_lines: 0,
                         stamp,
+                        wide: None,
                     });
                 }
                 // Not UTF-8: the text is a sanitized copy, read below once the mapping is
@@ -179,12 +211,20 @@ impl SourceFile {
         // One allocation of the right size: the text is the largest thing ekb holds, so
         // growing it by doubling would cost up to twice the file in peak memory.
         let bytes = read_limited(file, metadata.len() as usize, MAX_FILE_SIZE).map_err(fail)?;
-        refuse_wide(&bytes).map_err(fail)?;
+        if let Some(source) = wide(&name, stamp, &bytes) {
+            return Ok(source);
+        }
         Ok(SourceFile {
             path: Some(path.to_path_buf()),
             stamp,
             ..SourceFile::from_bytes(name, bytes)
         })
+    }
+
+    /// The wide encoding (UTF-16 or UTF-32) of a file read by
+    /// [`SourceFile::read_even_wide`], whose text is then empty.
+    pub fn wide(&self) -> Option<encoding::Detected> {
+        self.wide
     }
 
     /// The file as it was on disk when read; `None` for standard input.

@@ -281,6 +281,11 @@ const LINES: &[&str] = &[
     "robotLocationPose # 1 2 3x",
     "robotLocationPose # 0x10 2 3",
     "gestureTarget # 1,0 2 3",
+    "gestureTarget # 1 1e39 1",
+    "robotLocationPose # -1e39 3.4028236e38 1",
+    "robotLocationDescription -99999999999999999999 far below",
+    "robotLocationDescription #\u{0}Hall",
+    "tourSpecification 3 #",
 ];
 
 /// A message long enough to cross a line buffer (200, 300 or 600 bytes).
@@ -423,21 +428,32 @@ fn numbers_as_the_real_reader_scans_them() {
 }
 
 /// Found against the real readers: a tour line with fewer ids than its count does not
-/// stop at its end; the reader reads on into the bytes its buffer held before (here the
-/// earlier tour's `1`), so those stops are undefined, not the earlier tour's. A letter does
-/// stop it: the stops after it keep what they held.
+/// stop at its end; the reader reads on into the bytes its buffer held before (SPEC §2.17):
+/// the `1` that the longer tour line before left, then the `Lab` of the description
+/// before that, where `%d` fails and the last slot keeps what it held (the earlier tour's
+/// `1`). A letter stops it too: the stops after it keep what they held, which is 0 where
+/// no line set them (the tour is zero-filled when loading starts).
 #[test]
-fn tour_stops_past_the_end_of_the_line_are_undefined() {
+fn tour_stops_past_the_end_of_the_line_come_from_the_buffer() {
     let cases = [
-        ("tour-past-the-line.dat", "tour-count-mismatch", 4),
-        ("tour-stops-at-a-letter.dat", "invalid-id", 2),
+        (
+            "tour-past-the-line.dat",
+            "tour-count-mismatch",
+            4,
+            serde_json::json!([2, 1, 1]),
+        ),
+        (
+            "tour-stops-at-a-letter.dat",
+            "invalid-id",
+            2,
+            serde_json::json!([2, 0, 0]),
+        ),
     ];
     for version in Reader::ALL {
-        for (fixture, rule, line) in cases {
+        for (fixture, rule, line, tour) in &cases {
             let (loaded, findings) = loaded_fixture(fixture, version);
-            let tour = serde_json::json!([2, null, null]);
-            assert_eq!(loaded["tour"], tour, "{fixture} {version}");
-            let reported = has(&findings, rule, line, Severity::Error);
+            assert_eq!(&loaded["tour"], tour, "{fixture} {version}");
+            let reported = has(&findings, rule, *line, Severity::Error);
             assert!(reported, "{fixture} {version}: {findings:?}");
         }
     }
@@ -500,4 +516,102 @@ fn an_overwritten_cultural_knowledge_line_still_crashes_the_reader() {
     assert!(!findings
         .iter()
         .any(|(rule, ..)| rule == "compat-too-many-cultural-keys"));
+}
+
+/// SPEC §2.15: `%f` into a `float` loads a finite decimal too large for one as an
+/// infinity, on every version; `export --as-loaded` shows it as `"inf"` or `"-inf"`.
+#[test]
+fn a_number_too_large_for_a_float_loads_as_an_infinity() {
+    for version in Reader::ALL {
+        let (loaded, findings) = loaded_fixture("float-overflow.dat", version);
+        let location = &loaded["locations"][0];
+        assert_eq!(
+            location["gestureTarget"],
+            serde_json::json!({ "x": 3.0, "y": "inf", "z": 0.82 }),
+            "{version}"
+        );
+        if version != Reader::D542 {
+            assert_eq!(
+                location["pose"],
+                serde_json::json!({ "x": 1.0, "y": "-inf", "theta": "inf" }),
+                "{version}"
+            );
+        }
+        for line in [3, 4] {
+            assert!(
+                has(&findings, "compat-float-overflow", line, Severity::Error),
+                "{version} line {line}: {findings:?}"
+            );
+        }
+        let overflows = findings
+            .iter()
+            .filter(|(rule, ..)| rule == "compat-float-overflow")
+            .count();
+        assert_eq!(overflows, 3, "{version}: {findings:?}");
+    }
+}
+
+/// SPEC §2.15: an id past a C `long` saturates (`LONG_MIN`, `LONG_MAX`), and `%d` keeps its
+/// low 32 bits: `-99999999999999999999` lands on id 0, `99999999999999999999` on -1.
+#[test]
+fn an_id_past_a_long_lands_on_the_low_bits_of_its_limit() {
+    for version in Reader::ALL {
+        let (loaded, findings) = loaded_fixture("id-past-long.dat", version);
+        let ids: Vec<(i64, &str)> = loaded["locations"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|l| {
+                (
+                    l["id"].as_i64().unwrap(),
+                    l["description"].as_str().unwrap(),
+                )
+            })
+            .collect();
+        assert_eq!(ids, [(-1, "Yard"), (0, "Lab"), (1, "Hall")], "{version}");
+        for line in [2, 3] {
+            assert!(
+                has(&findings, "invalid-id", line, Severity::Error),
+                "{version} line {line}: {findings:?}"
+            );
+        }
+    }
+}
+
+/// SPEC §2.17: a buffer an earlier line filled is reused, so a short line whose value the
+/// reader looks for past its end loads what the longer line before it left there.
+#[test]
+fn a_short_line_loads_what_a_longer_one_left_in_the_buffer() {
+    for version in Reader::ALL {
+        let (loaded, findings) = loaded_fixture("leftovers.dat", version);
+        assert_eq!(
+            loaded["locations"][1]["description"], "long description of the hall",
+            "{version}"
+        );
+        assert!(
+            has(&findings, "empty-value", 2, Severity::Error),
+            "{version}: {findings:?}"
+        );
+    }
+}
+
+/// SPEC §2.17: the reader's loops that skip to a value do not stop at a NUL byte: the text
+/// after it is loaded.
+#[test]
+fn the_text_after_a_nul_byte_is_loaded() {
+    for version in Reader::ALL {
+        let (loaded, findings) = loaded_fixture("after-a-nul.dat", version);
+        let location = &loaded["locations"][0];
+        assert_eq!(location["description"], "Hall", "{version}");
+        assert_eq!(
+            location["preGestureMessage"]["english"], "Welcome",
+            "{version}"
+        );
+        for line in [1, 2] {
+            assert!(
+                has(&findings, "control-character", line, Severity::Error),
+                "{version} line {line}: {findings:?}"
+            );
+        }
+    }
 }

@@ -272,6 +272,7 @@ rule_tests! {
     // Reference-reader compatibility
     compat_line_too_long: "compat-line-too-long" [reader(Reader::V2025_06)] => [(8, 199), (18, 178), (20, 199)];
     compat_leading_symbol: "compat-leading-symbol" => [(2, 33), (5, 33), (13, 33), (14, 33)];
+    compat_float_overflow: "compat-float-overflow" => [(3, 37), (14, 37), (14, 43)];
     compat_no_final_newline: "compat-no-final-newline" => [(25, 61)];
     compat_crlf: "compat-crlf" => [(1, 41)];
     compat_bom: "compat-bom" => [(1, 1)];
@@ -377,6 +378,7 @@ fn the_catalogue_is_the_specified_one() {
         ("gesture-behind-robot", Warning, false),
         ("compat-line-too-long", Error, false),
         ("compat-leading-symbol", Error, false),
+        ("compat-float-overflow", Error, false),
         ("compat-no-final-newline", Error, true),
         ("compat-crlf", Error, true),
         ("compat-bom", Error, true),
@@ -730,10 +732,11 @@ fn compat_key_too_long_follows_where_the_reader_cuts_the_line() {
             .map(|f| (f.line, f.column))
             .collect()
     };
-    // A 600-byte buffer reads line 5 whole: its long word is a message's, not a first word.
-    assert_eq!(at(Reader::V2026_04), [(1, 1), (11, 33)]);
-    // 2026-03's header makes its word buffers 200 bytes: these words of 107 and 118 bytes fit.
+    // The headers of 2026-03 and 2026-04 make their word buffers 200 bytes: these words of
+    // 107 and 118 bytes fit (and a 600-byte line buffer reads line 5 whole).
+    assert_eq!(at(Reader::V2026_04), []);
     assert_eq!(at(Reader::V2026_03), []);
+    assert_eq!(at(Reader::V2026_02), [(1, 1), (11, 33)]);
     // The document's reader has no culturalKnowledge, and cuts line 5 at 199 bytes.
     assert_eq!(at(Reader::D542), [(1, 1), (5, 200)]);
     let all = findings("rules/compat-key-too-long/bad.dat", Options::default());
@@ -763,11 +766,13 @@ fn a_crlf_line_of_200_bytes_loses_no_letter() {
         "rules/compat-line-too-long/bad-crlf.dat",
         reader(Reader::V2025_06),
     );
-    let found = of_rule(&all, "compat-line-too-long");
-    assert_eq!((found.len(), found[0].line, found[0].column), (1, 8, 198));
-    assert!(found[0].diagnostic.message.ends_with(
-        "only its line ending does not fit, and the robot's reader reads it as an empty line"
-    ));
+    // It loads what the line says with an LF ending: the cut changes nothing loaded (SPEC
+    // §2, after item 17), so it is no `compat-line-too-long`.
+    assert!(
+        of_rule(&all, "compat-line-too-long").is_empty(),
+        "{}",
+        show(&all)
+    );
 }
 
 #[test]
@@ -1469,4 +1474,261 @@ fn a_plus_sign_and_a_line_of_form_feeds_are_no_errors() {
         Options::default(),
     );
     assert!(all.is_empty(), "{}", show(&all));
+}
+
+// ---------------------------------------------------------------------------------------
+// What the reader measurably does (SPEC §2 items 15–17 and the paragraph after them)
+
+/// Checks `text` against `version`.
+fn findings_in(text: &str, version: Reader) -> Vec<Finding> {
+    let source = SourceFile::from_bytes("kb.dat", text.as_bytes().to_vec());
+    findings_of(&source, reader(version))
+}
+
+/// The lines and severities of `rule`'s findings in `text` under `version`.
+fn lines_of(text: &str, version: Reader, rule: &str) -> Vec<(u32, Severity)> {
+    of_rule(&findings_in(text, version), rule)
+        .iter()
+        .map(|f| (f.line, f.diagnostic.severity()))
+        .collect()
+}
+
+/// `KEY_LENGTH` is 100 in the headers of `2025-06` and `2026-02` (and taken to be in the
+/// document's), 200 in those of `2026-03` and `2026-04`.
+#[test]
+fn compat_key_too_long_counts_each_versions_key_buffer() {
+    let text = format!(
+        "tourSpecification 1 1\n#{}\nrobotLocationDescription 1 Hall\n",
+        "x".repeat(149)
+    );
+    for version in Reader::ALL {
+        let expected = match version {
+            Reader::V2026_03 | Reader::V2026_04 => vec![],
+            _ => vec![(2, Severity::Error)],
+        };
+        assert_eq!(
+            lines_of(&text, version, "compat-key-too-long"),
+            expected,
+            "{version}"
+        );
+    }
+    let longer = format!("#{} 1\n", "x".repeat(199));
+    for version in [Reader::V2026_03, Reader::V2026_04] {
+        assert_eq!(
+            lines_of(&longer, version, "compat-key-too-long"),
+            [(1, Severity::Error)],
+            "{version}"
+        );
+    }
+}
+
+/// An error from the lowest depth measured over both builds (2025-06: 5,455; 2026-02:
+/// 3,740; 2026-03: 1,695; 2026-04: 1,932), a warning in the 10% below it.
+#[test]
+fn compat_reader_crash_is_an_error_from_the_lowest_measured_depth() {
+    let crash = |locations: usize, version: Reader| {
+        let found = findings_of(&generated(locations, false), reader(version));
+        of_rule(&found, "compat-reader-crash")
+            .iter()
+            .map(|f| (f.diagnostic.severity(), f.diagnostic.message.clone()))
+            .collect::<Vec<_>>()
+    };
+    for (version, depth) in [
+        (Reader::V2025_06, 5_455),
+        (Reader::V2026_02, 3_740),
+        (Reader::V2026_03, 1_695),
+        (Reader::V2026_04, 1_932),
+    ] {
+        let at = crash(depth, version);
+        assert_eq!(at.len(), 1, "{version}");
+        assert_eq!(at[0].0, Severity::Error, "{version}: {}", at[0].1);
+        let below = crash(depth - 1, version);
+        assert_eq!(below.len(), 1, "{version}");
+        assert_eq!(below[0].0, Severity::Warning, "{version}");
+        assert!(
+            below[0].1.contains("depends on the build"),
+            "{}",
+            below[0].1
+        );
+        assert!(crash(depth * 9 / 10 - 1, version).is_empty(), "{version}");
+    }
+}
+
+/// A file of `count` locations: a line of `ignored` for each id first (shuffled into an
+/// order that builds a balanced tree, or ascending), then a description for each id in the
+/// other order.
+fn ignored_lines_first(ignored: &str, count: usize, ignored_ascending: bool) -> String {
+    let balanced: Vec<usize> = ekb::reader::tree::balanced_order(count)
+        .into_iter()
+        .map(|index| index + 1)
+        .collect();
+    let ascending: Vec<usize> = (1..=count).collect();
+    let (first, then) = match ignored_ascending {
+        true => (&ascending, &balanced),
+        false => (&balanced, &ascending),
+    };
+    let mut text = String::from("tourSpecification 1 1\n");
+    for id in first {
+        let value = match ignored {
+            "robotLocation" | "robotLocationPose" => "1 2 3",
+            _ => "left",
+        };
+        text.push_str(&format!("{ignored} {id} {value}\n"));
+    }
+    for id in then {
+        text.push_str(&format!("robotLocationDescription {id} Hall\n"));
+    }
+    text
+}
+
+/// The tree is built from the lines a version inserts (SPEC §2.16): a line of a key it
+/// ignores adds no node, so lines of ignored keys in shuffled order before the others in
+/// ascending order still build a chain, and the reverse builds no chain.
+#[test]
+fn compat_reader_crash_builds_the_tree_from_the_lines_the_version_reads() {
+    let crash = |text: &str, version: Reader| {
+        let found = findings_in(text, version);
+        of_rule(&found, "compat-reader-crash")
+            .iter()
+            .map(|f| f.diagnostic.severity())
+            .collect::<Vec<_>>()
+    };
+    let ignored_by = |key: &str, version: Reader| match key {
+        "gestureArm" => version != Reader::V2026_03,
+        "robotLocation" => version != Reader::D542,
+        "robotLocationPose" => version == Reader::D542,
+        _ => true,
+    };
+    for version in Reader::ALL {
+        let count = version.crash_depth() + 10;
+        for key in [
+            "gestureArm",
+            "robotLocation",
+            "robotLocationPose",
+            "robotlocationdescription",
+            "locationNickname",
+        ] {
+            let chain_after = ignored_lines_first(key, count, false);
+            let chain_first = ignored_lines_first(key, count, true);
+            match ignored_by(key, version) {
+                true => {
+                    assert_eq!(
+                        crash(&chain_after, version),
+                        [Severity::Error],
+                        "{version} {key}"
+                    );
+                    assert_eq!(crash(&chain_first, version), [], "{version} {key}");
+                }
+                false => {
+                    assert_eq!(crash(&chain_after, version), [], "{version} {key}");
+                    assert_eq!(
+                        crash(&chain_first, version),
+                        [Severity::Error],
+                        "{version} {key}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// A `\r` is a difference only where the version keeps it in a text value: at the end of
+/// a tour, number or culturalKnowledge line, or on a blank line, it changes nothing loaded
+/// (a warning, for the fix); the `gestureArm` text only where the version reads it.
+#[test]
+fn compat_crlf_is_an_error_only_where_a_text_keeps_the_carriage_return() {
+    let plain = "robotLocationDescription 1 Hall\nrobotLocationPose 1 1 2 3\n";
+    let harmless = [
+        "tourSpecification 1 1\r\n",
+        "culturalKnowledge 1 Bow\r\n",
+        "\r\n",
+        "# a comment\r\n",
+        "robotLocationPose 1 1 2 3\r\n",
+    ];
+    for version in Reader::ALL {
+        for line in harmless {
+            let text = format!("{plain}{line}");
+            assert_eq!(
+                lines_of(&text, version, "compat-crlf"),
+                [(3, Severity::Warning)],
+                "{version} {line:?}"
+            );
+        }
+        let text = format!("{plain}robotLocationDescription 1 Lab\r\n");
+        assert_eq!(
+            lines_of(&text, version, "compat-crlf"),
+            [(3, Severity::Error)],
+            "{version}"
+        );
+        // 198 bytes, `\r`, `\n`: a 200-byte buffer cuts the line before its `\n`, and the
+        // reader drops the `\r` as if it were the newline.
+        let long = format!("{plain}robotLocationDescription 1 {}\r\n", "a".repeat(171));
+        let expected = match version.line_buffer() {
+            200 => Severity::Warning,
+            _ => Severity::Error,
+        };
+        assert_eq!(
+            lines_of(&long, version, "compat-crlf"),
+            [(3, expected)],
+            "{version}"
+        );
+        let arm = format!("{plain}gestureArm 1 left\r\n");
+        let expected = match version {
+            Reader::V2026_03 => Severity::Error,
+            _ => Severity::Warning,
+        };
+        assert_eq!(
+            lines_of(&arm, version, "compat-crlf"),
+            [(3, expected)],
+            "{version}"
+        );
+    }
+}
+
+/// A cut is a difference only where it changes what the version loads: not in a line of
+/// blanks, nor in a comment whose rest is no line the reader reads; yes in a comment whose
+/// rest is a keyed line, which the reader then loads.
+#[test]
+fn compat_line_too_long_is_an_error_only_where_the_cut_changes_what_loads() {
+    let head = "robotLocationDescription 1 Hall\ntourSpecification 1 1\n";
+    let blanks = format!("{head}{}\n", " ".repeat(700));
+    let comment = format!("{head}#{}\n", " word".repeat(140));
+    let hidden_line = format!(
+        "{head}#{}robotLocationDescription 1 Overwritten\n",
+        " ".repeat(198)
+    );
+    for version in Reader::ALL {
+        assert_eq!(
+            lines_of(&blanks, version, "compat-line-too-long"),
+            [],
+            "{version}"
+        );
+        assert_eq!(
+            lines_of(&comment, version, "compat-line-too-long"),
+            [],
+            "{version}"
+        );
+        let expected = match version.line_buffer() {
+            200 => vec![(3, Severity::Error)],
+            _ => vec![],
+        };
+        assert_eq!(
+            lines_of(&hidden_line, version, "compat-line-too-long"),
+            expected,
+            "{version}"
+        );
+    }
+    // A text cut short is still one, on every version whose buffer cuts it.
+    let message = format!("{head}preGestureMessageEnglish 1 {}\n", "word ".repeat(70));
+    for version in Reader::ALL {
+        let expected = match version.line_buffer() {
+            200 | 300 => vec![(3, Severity::Error)],
+            _ => vec![],
+        };
+        assert_eq!(
+            lines_of(&message, version, "compat-line-too-long"),
+            expected,
+            "{version}"
+        );
+    }
 }

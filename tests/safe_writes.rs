@@ -2,7 +2,7 @@
 //! `export -o`) goes through one mechanism, `ekb::write`, which writes only regular files
 //! of their own, keeps a file's owner, group, permissions and links, respects read-only even
 //! as root, and never overwrites what another program wrote meanwhile. Also here: files in
-//! UTF-16 or UTF-32, which `ekb` refuses to read, and so to "fix".
+//! UTF-16 or UTF-32, which `ekb` refuses to rewrite (and so to "fix"), and checks as a file the robot loads nothing from.
 //!
 //! Where the behaviour depends on who runs `ekb`, a test runs it as root (CI does) and as
 //! the unprivileged user `nobody`, through `setpriv`, when it can.
@@ -388,18 +388,24 @@ fn wide_encodings(text: &str) -> Vec<(&'static str, Vec<u8>)> {
 }
 
 #[test]
-fn utf16_and_utf32_files_are_refused_by_check_and_left_alone_by_fix() {
+fn utf16_and_utf32_files_are_a_finding_of_check_and_left_alone_by_the_writers() {
     // A UTF-16 file without a mark is valid UTF-8 with NULs: `fix` "fixed" it into a broken
-    // file.
+    // file. The writers refuse it; `check` reports it, once, as what the robot loads from
+    // it: nothing.
     for (name, bytes) in wide_encodings(UNFIXED) {
         let (_dir, path) = temp_file("kb.dat", &bytes);
-        for command in ["check", "fix", "fmt"] {
+        let writers: [&[&str]; 3] = [
+            &["fix"],
+            &["fmt"],
+            &["set", "1", "robotLocationDescription", "Hall"],
+        ];
+        for command in writers {
             let expected = format!(
                 "ekb: error: cannot read {}: it is {name} text (",
                 path.display()
             );
             ekb()
-                .arg(command)
+                .args(command)
                 .arg(&path)
                 .assert()
                 .code(2)
@@ -409,13 +415,35 @@ fn utf16_and_utf32_files_are_refused_by_check_and_left_alone_by_fix() {
                 )));
         }
         assert_eq!(fs::read(&path).unwrap(), bytes, "{name}");
+        let finding = format!(
+            "{}:1:1: error[invalid-utf8] this file is {name} text, not UTF-8: the robot's reader reads it byte by byte, finds no key on any line (each is cut short by a NUL byte), and loads nothing from it\n",
+            path.display()
+        );
+        ekb()
+            .args(["check", "--format", "concise"])
+            .arg(&path)
+            .assert()
+            .code(1)
+            .stdout(predicates::str::starts_with(finding));
         // From standard input too.
         ekb()
-            .args(["check", "-"])
+            .args(["check", "--format", "concise", "-"])
             .write_stdin(bytes)
             .assert()
-            .code(2)
-            .stderr(predicates::str::contains(format!("it is {name} text")));
+            .code(1)
+            .stdout(predicates::str::contains(format!(
+                "this file is {name} text"
+            )));
+        // What the robot loads from it: nothing.
+        let output = ekb()
+            .args(["export", "--as-loaded"])
+            .arg(&path)
+            .output()
+            .unwrap();
+        assert_eq!(output.status.code(), Some(0), "{name}");
+        let loaded: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+        assert_eq!(loaded["locations"], serde_json::json!([]), "{name}");
+        assert_eq!(loaded["tour"], serde_json::Value::Null, "{name}");
     }
 }
 
@@ -433,7 +461,7 @@ fn check_reports_the_utf8_files_beside_a_utf16_one() {
         .arg(&narrow)
         .output()
         .unwrap();
-    assert_eq!(output.status.code(), Some(2));
+    assert_eq!(output.status.code(), Some(1));
     let stdout = String::from_utf8(output.stdout).unwrap();
     assert!(
         stdout.contains(&format!(
@@ -442,5 +470,8 @@ fn check_reports_the_utf8_files_beside_a_utf16_one() {
         )),
         "{stdout}"
     );
-    assert!(!stdout.contains("wide.dat"), "{stdout}");
+    assert!(
+        stdout.contains(&format!("{}:1:1: error[invalid-utf8]", wide.display())),
+        "{stdout}"
+    );
 }

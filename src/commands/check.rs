@@ -95,7 +95,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     for path in &paths {
         let plan = context.read_options(path).and_then(|options| {
             let rules = context.rules_for(path, &choice)?;
-            Ok((path.clone(), options, rules, context.read(path)?))
+            Ok((path.clone(), options, rules, context.read_to_report(path)?))
         });
         match plan {
             Ok(plan) => read.push(plan),

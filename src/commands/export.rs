@@ -66,7 +66,10 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     }
     let path = context.input(args.file.as_deref())?;
     let options = context.read_options(&path)?;
-    let source = context.read(&path)?;
+    let source = match args.as_loaded {
+        true => context.read_to_report(&path)?,
+        false => context.read(&path)?,
+    };
     let checked = check(&source, &options);
     if matches!(args.format, ExportFormat::Po | ExportFormat::Pot) {
         return export_po(args, context, &checked);

@@ -154,7 +154,7 @@ impl MapInput {
         let rules = context.rules_for(&path, &Choice::default())?;
         let map_config = context.settings_for(&path)?.map.config;
         let map = map_args.load(map_config.map(|config| config.value))?;
-        let source = context.read(&path)?;
+        let source = context.read_to_report(&path)?;
         Ok(MapInput {
             source,
             options,

@@ -305,12 +305,24 @@ impl Context {
         self.verbose || self.config().is_ok_and(|config| config.verbose)
     }
 
-    /// Reads a knowledge base (`-` is standard input).
+    /// Reads a knowledge base (`-` is standard input), to rewrite it or show it as written:
+    /// a file in UTF-16 or UTF-32 is refused.
     pub fn read(&self, path: &Path) -> Result<SourceFile, CommandError> {
+        self.say_reading(path);
+        Ok(SourceFile::read(path)?)
+    }
+
+    /// Reads a knowledge base to report on it: a file in UTF-16 or UTF-32 is one the robot
+    /// loads nothing from, a finding ([`SourceFile::read_even_wide`]).
+    pub fn read_to_report(&self, path: &Path) -> Result<SourceFile, CommandError> {
+        self.say_reading(path);
+        Ok(SourceFile::read_even_wide(path)?)
+    }
+
+    fn say_reading(&self, path: &Path) {
         if self.verbose() {
             stderr_line!("ekb: reading {}", escape(&path.display().to_string()));
         }
-        Ok(SourceFile::read(path)?)
     }
 
     /// Whether to colour what goes to standard output.

@@ -80,6 +80,8 @@ pub trait LineFindings {
     fn invalid_value(&mut self, key: Key, id: u32, span: Span, text: &str);
     /// A token that is not a number where one was expected.
     fn invalid_number(&mut self, key: Key, id: Option<u32>, span: Span, token: &str);
+    /// A number too large for the reader's `float`; `first`: the line's first.
+    fn float_overflow(&mut self, key: Key, id: u32, span: Span, token: &str, first: bool);
     /// A second tour specification; `earlier` is the first one's arguments.
     fn duplicate_tour(&mut self, later: Span, earlier: Span);
     /// Both pose keys in one file: the first line of each and how many lines use it.
@@ -119,6 +121,7 @@ impl LineFindings for Unheeded {
     fn empty_value(&mut self, _: Span, _: Key, _: u32) {}
     fn invalid_value(&mut self, _: Key, _: u32, _: Span, _: &str) {}
     fn invalid_number(&mut self, _: Key, _: Option<u32>, _: Span, _: &str) {}
+    fn float_overflow(&mut self, _: Key, _: u32, _: Span, _: &str, _: bool) {}
     fn duplicate_tour(&mut self, _: Span, _: Span) {}
     fn mixed_dialect(&mut self, _: (Span, usize), _: (Span, usize)) {}
     fn append(&mut self, _: Unheeded) {}
@@ -769,7 +772,12 @@ fn numbers(
             syntax::decimal::f64_of_word(syntax::swar::word_at(text.as_bytes(), at), token.len())
         });
         match short.flatten().or_else(|| parse_number(token)) {
-            Some(n) if count < 3 => values[count] = n,
+            Some(n) if count < 3 => {
+                if overflows_float(n, token) {
+                    out.float_overflow(key, id, token_span, token, count == 0);
+                }
+                values[count] = n
+            }
             Some(_) => {}
             None => {
                 out.invalid_number(key, Some(id), token_span, token);
@@ -785,6 +793,13 @@ fn numbers(
     valid.then_some(values)
 }
 
+/// Whether the decimal `token`, which reads as the finite `value`, is too large for the
+/// reader's C `float`: rounded to one (from the decimal, not through `value`, which would
+/// round twice) it is an infinity, which the reader loads (SPEC §2.15).
+pub fn overflows_float(value: f64, token: &str) -> bool {
+    value.abs() > f64::from(f32::MAX) && token.parse::<f32>().is_ok_and(f32::is_infinite)
+}
+
 /// The id at the start of a line's arguments, if there is a valid one: what a finding about a
 /// line the robot ignores (a miscased, unknown or legacy key) says is lost.
 pub(crate) fn leading_id(args: &str) -> Option<u32> {
@@ -796,6 +811,18 @@ pub(crate) fn leading_id(args: &str) -> Option<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn past_the_largest_float_is_an_overflow() {
+        for token in ["1e39", "-1e39", "3.4028236e38", "+1E39"] {
+            let value: f64 = token.parse().unwrap();
+            assert!(overflows_float(value, token), "{token}");
+        }
+        for token in ["3.4028234e38", "1e38", "-3.4e38", "2.6"] {
+            let value: f64 = token.parse().unwrap();
+            assert!(!overflows_float(value, token), "{token}");
+        }
+    }
 
     /// Everything a builder reports, in order, one entry a call: what the rules are given.
     #[derive(Debug, Default, PartialEq)]
@@ -873,6 +900,9 @@ mod tests {
         }
         fn invalid_number(&mut self, key: Key, id: Option<u32>, span: Span, token: &str) {
             record!(self, "invalid_number", key, id, span, token);
+        }
+        fn float_overflow(&mut self, key: Key, id: u32, span: Span, token: &str, first: bool) {
+            record!(self, "float_overflow", key, id, span, token, first);
         }
         fn duplicate_tour(&mut self, later: Span, earlier: Span) {
             record!(self, "duplicate_tour", later, earlier);

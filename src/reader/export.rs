@@ -1,8 +1,9 @@
 //! `ekb export --as-loaded`: what a version of the reader loads, in the JSON shape of SPEC
 //! §5. Each field holds what the robot holds: a field no line set is the robot's empty text
 //! or 0; `gestureArm` and `culturalKnowledge` are `null` where the version does not read
-//! them; a value the reader took from past the end of its line (undefined), or a number
-//! JSON cannot hold, is `null`.
+//! them; a value the reader took from bytes of its buffer that no line wrote (undefined) is
+//! `null`. A number JSON cannot hold, which the robot does hold (`1e39` loads as an
+//! infinity), is the string `"inf"`, `"-inf"` or `"nan"`.
 
 use std::borrow::Cow;
 
@@ -60,16 +61,36 @@ pub struct LoadedLocationExport<'a> {
 
 #[derive(Debug, Serialize)]
 pub struct LoadedPose {
-    pub x: Option<f64>,
-    pub y: Option<f64>,
-    pub theta: Option<f64>,
+    pub x: LoadedNumber,
+    pub y: LoadedNumber,
+    pub theta: LoadedNumber,
 }
 
 #[derive(Debug, Serialize)]
 pub struct LoadedPoint {
-    pub x: Option<f64>,
-    pub y: Option<f64>,
-    pub z: Option<f64>,
+    pub x: LoadedNumber,
+    pub y: LoadedNumber,
+    pub z: LoadedNumber,
+}
+
+/// A C `float` as the robot holds it: a JSON number where JSON has one (see [`shortest`]),
+/// else the name C's `printf` gives it, `"inf"`, `"-inf"` or `"nan"`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum LoadedNumber {
+    Finite(f64),
+    NotFinite(&'static str),
+}
+
+impl LoadedNumber {
+    pub fn of(value: f32) -> LoadedNumber {
+        match value {
+            _ if value.is_nan() => LoadedNumber::NotFinite("nan"),
+            f32::INFINITY => LoadedNumber::NotFinite("inf"),
+            f32::NEG_INFINITY => LoadedNumber::NotFinite("-inf"),
+            _ => LoadedNumber::Finite(shortest(value)),
+        }
+    }
 }
 
 #[derive(Debug, Serialize)]
@@ -106,8 +127,8 @@ impl<'a> LoadedLocationExport<'a> {
             Some(value) => loaded_text(&value, text),
         };
         let numbers = |key: Key| match value(key) {
-            None => Some([Some(0.0); 3]),
-            Some(LoadedValue::Numbers(numbers)) => Some(numbers.map(json_number)),
+            None => Some([LoadedNumber::Finite(0.0); 3]),
+            Some(LoadedValue::Numbers(numbers)) => Some(numbers.map(LoadedNumber::of)),
             Some(_) => None,
         };
         let messages = |phase: Phase| {
@@ -154,19 +175,17 @@ fn loaded_text<'a>(value: &LoadedValue, text: &'a [u8]) -> Option<Cow<'a, str>> 
     }
 }
 
-/// A C `float` as JSON (see [`shortest`]), or `None` for an infinity or NaN.
-fn json_number(value: f32) -> Option<f64> {
-    value.is_finite().then(|| shortest(value))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
-    fn floats_print_as_their_shortest_decimal() {
-        assert_eq!(json_number(2.6), Some(2.6));
-        assert_eq!(json_number(-90.0), Some(-90.0));
-        assert_eq!(json_number(f32::INFINITY), None);
+    fn floats_print_as_their_shortest_decimal_or_their_c_name() {
+        let json = |value: f32| serde_json::to_string(&LoadedNumber::of(value)).unwrap();
+        assert_eq!(json(2.6), "2.6");
+        assert_eq!(json(-90.0), "-90.0");
+        assert_eq!(json(f32::INFINITY), r#""inf""#);
+        assert_eq!(json(f32::NEG_INFINITY), r#""-inf""#);
+        assert_eq!(json(f32::NAN), r#""nan""#);
     }
 }

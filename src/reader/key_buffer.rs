@@ -5,8 +5,8 @@
 use super::scan;
 
 /// The size of the reader's key buffer, its closing NUL included, in every version but
-/// `2026-03` (see [`super::Reader::key_buffer`]): a word of this many bytes or more is
-/// written past its end.
+/// `2026-03` and `2026-04` (see [`super::Reader::key_buffer`]): a word of this many bytes
+/// or more is written past its end.
 pub const KEY_BUFFER: usize = 100;
 
 /// Where the first word of `line` is, as `%s` reads it.

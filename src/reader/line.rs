@@ -3,9 +3,12 @@
 //! It reads a key and an integer with `sscanf("%s %d")`; a line without both is skipped. A
 //! key it knows then finds its value by counting from the *start of the line*: `strlen(key)`,
 //! then past everything that is not a letter or digit, past the id's letters and digits,
-//! and past everything that is not a letter or digit again. Numbers are read from there with
-//! `%f`; a text is the rest of the line less its last byte (taken to be the newline).
+//! and past everything that is not a letter or digit again, on past a NUL and the line's
+//! end into what earlier lines left in the buffer ([`super::buffer`]). Numbers are read
+//! from there with `%f`; a text is the C string there less its last byte (taken to be the
+//! newline).
 
+use super::buffer::InBuffer;
 use super::load::TOUR_BUFFER;
 use super::scan::{self, is_alnum};
 use super::Reader;
@@ -20,14 +23,14 @@ pub enum LineRead {
     Skipped,
     /// A key that this version does not read, spelled as written.
     Ignored { key: Span },
-    /// `key` of location `id` loads `value`, which starts at `value_start` in the file
-    /// (`None`: past the end of the line).
+    /// `key` of location `id` loads `value`, which is the C string at `value_at` in the
+    /// buffer (`None`: undefined, or no culturalKnowledge word).
     Value {
         key: Key,
         key_span: Span,
         id: i32,
         value: LoadedValue,
-        value_start: Option<usize>,
+        value_at: Option<ValueAt>,
     },
     /// A value the reader could not read (`unsuccessful attempt to assign …`): the line
     /// changes nothing.
@@ -38,6 +41,14 @@ pub enum LineRead {
     Tour { count: i32, stops: Vec<Option<i32>> },
     /// A tour whose count could not be read: nothing changes.
     TourFailed,
+}
+
+/// Where a value is in the buffer: at `at`, in bytes that the line starting at `piece` in
+/// the file wrote (the line read, or an earlier, longer one).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ValueAt {
+    pub piece: usize,
+    pub at: usize,
 }
 
 /// A value as the reader loads it.
@@ -54,19 +65,17 @@ pub enum LoadedValue {
 }
 
 /// Reads `line` (one `fgets` call's bytes: at most a buffer less one, newline included if
-/// it fitted), which starts at `offset` in the file.
+/// it fitted), which starts at `offset` in the file, with nothing known of what the buffer
+/// held before (a value found past the line is undefined).
 pub fn read(line: &[u8], offset: usize, reader: Reader) -> LineRead {
-    // A C string ends at its first NUL.
-    read_c_string(
-        &line[..memchr::memchr(0, line).unwrap_or(line.len())],
-        offset,
-        reader,
-    )
+    read_in(&InBuffer::alone(line, offset), reader)
 }
 
-/// [`read`] of a line without a NUL byte (a text without one need not be searched line by
-/// line).
-pub fn read_c_string(line: &[u8], offset: usize, reader: Reader) -> LineRead {
+/// Reads the line of `buffer`, over what earlier lines left in it.
+pub fn read_in(buffer: &InBuffer<'_>, reader: Reader) -> LineRead {
+    // `sscanf` reads the key and the id from the line as a C string, up to its first NUL.
+    let line = buffer.c_line();
+    let offset = buffer.offset();
     let at = |range: std::ops::Range<usize>| Span::new(offset + range.start, offset + range.end);
     let Some(key_range) = scan::word(line, 0) else {
         return LineRead::Skipped;
@@ -87,18 +96,22 @@ pub fn read_c_string(line: &[u8], offset: usize, reader: Reader) -> LineRead {
     // The reader counts the key's length from the start of the line, not from the key.
     let key_length = key_range.len();
     if key == Key::TourSpecification {
-        return tour(line, key_length);
+        return tour(buffer, key_length);
     }
-    let Some(start) = value_start(line, key_length) else {
+    let value_string = value_start(buffer, key_length)
+        // The culturalKnowledge words are read only within the line (`i < strlen(line)`).
+        .filter(|&start| key.value_kind() != ValueKind::Words || start < line.len())
+        .and_then(|start| buffer.c_string(start));
+    let Some(string) = value_string else {
         return LineRead::Value {
             key,
             key_span,
             id,
             value: past_the_line(key),
-            value_start: None,
+            value_at: None,
         };
     };
-    let Some(value) = value(key, line, start, offset) else {
+    let Some(value) = value(key, string.bytes, 0, string.file_offset()) else {
         return LineRead::Failed { key, id };
     };
     LineRead::Value {
@@ -106,7 +119,10 @@ pub fn read_c_string(line: &[u8], offset: usize, reader: Reader) -> LineRead {
         key_span,
         id,
         value,
-        value_start: Some(offset + start),
+        value_at: Some(ValueAt {
+            piece: string.piece,
+            at: string.at,
+        }),
     }
 }
 
@@ -118,7 +134,9 @@ pub fn value(key: Key, line: &[u8], start: usize, offset: usize) -> Option<Loade
         ValueKind::Pose | ValueKind::Point => LoadedValue::Numbers(three_floats(line, start)?),
         ValueKind::Words => LoadedValue::Words(words(line, start).into_iter().map(at).collect()),
         // A text (and on 2026-03 the arm) is the rest of the line less its last byte.
-        ValueKind::Text | ValueKind::Arm => LoadedValue::Text(at(start..line.len() - 1)),
+        ValueKind::Text | ValueKind::Arm => {
+            LoadedValue::Text(at(start..(line.len() - 1).max(start)))
+        }
         ValueKind::Tour => unreachable!("the tour is not a location's value"),
     })
 }
@@ -133,12 +151,60 @@ pub fn past_the_line(key: Key) -> LoadedValue {
     }
 }
 
-/// Where a location key's value starts: past `strlen(key)` bytes, then past non-alphanumerics,
-/// alphanumerics (the id) and non-alphanumerics again.
-fn value_start(line: &[u8], key_length: usize) -> Option<usize> {
-    let after_key = scan::skip_while(line, key_length, |b| !is_alnum(b))?;
-    let after_id = scan::skip_while(line, after_key, is_alnum)?;
-    scan::skip_while(line, after_id, |b| !is_alnum(b))
+/// Whether `a`, read from `a_line`, and `b`, read from `b_line` (each read at offset 0),
+/// change what the robot holds in the same way: the same value of the same key of the same
+/// location, or nothing at all (a skipped line and an ignored one alike).
+pub fn same_load(a: &LineRead, a_line: &[u8], b: &LineRead, b_line: &[u8]) -> bool {
+    use LineRead::{Failed, Ignored, Skipped, Tour, TourFailed, Value};
+    let bytes_of = |span: &Span, line: &[u8]| line.get(span.range()).map(<[u8]>::to_vec);
+    let same_value = |x: &LoadedValue, y: &LoadedValue| match (x, y) {
+        (LoadedValue::Text(x), LoadedValue::Text(y)) => bytes_of(x, a_line) == bytes_of(y, b_line),
+        (LoadedValue::Numbers(x), LoadedValue::Numbers(y)) => {
+            x.map(f32::to_bits) == y.map(f32::to_bits)
+        }
+        (LoadedValue::Words(x), LoadedValue::Words(y)) => {
+            x.len() == y.len()
+                && x.iter()
+                    .zip(y)
+                    .all(|(x, y)| bytes_of(x, a_line) == bytes_of(y, b_line))
+        }
+        (LoadedValue::Undefined, LoadedValue::Undefined) => true,
+        _ => false,
+    };
+    match (a, b) {
+        (Skipped | Ignored { .. }, Skipped | Ignored { .. }) | (TourFailed, TourFailed) => true,
+        (
+            Value {
+                key: a_key,
+                id: a_id,
+                value: a_value,
+                ..
+            },
+            Value {
+                key: b_key,
+                id: b_id,
+                value: b_value,
+                ..
+            },
+        ) => a_key == b_key && a_id == b_id && same_value(a_value, b_value),
+        (Failed { .. }, Failed { .. }) | (Tour { .. }, Tour { .. }) => a == b,
+        _ => false,
+    }
+}
+
+/// Whether what `read` does changes nothing the robot holds (a blank line, a comment, a key
+/// the version ignores).
+pub fn loads_nothing(read: &LineRead) -> bool {
+    matches!(read, LineRead::Skipped | LineRead::Ignored { .. })
+}
+
+/// Where a location key's value starts in the buffer: past `strlen(key)` bytes, then past
+/// non-alphanumerics, alphanumerics (the id) and non-alphanumerics again, on past the line's
+/// end if need be.
+fn value_start(buffer: &InBuffer<'_>, key_length: usize) -> Option<usize> {
+    let after_key = buffer.skip(key_length, |b| !is_alnum(b))?;
+    let after_id = buffer.skip(after_key, is_alnum)?;
+    buffer.skip(after_id, |b| !is_alnum(b))
 }
 
 /// `sscanf("%f %f %f") == 3`, or nothing.
@@ -182,33 +248,41 @@ pub fn word_pieces(word: &str) -> Vec<&str> {
 }
 
 /// The tour's line: the count after the key, then one id after each run of letters and
-/// digits; an id that cannot be read leaves its slot, and every later one, as it was; the
-/// slots after the line's last id are read from past its end, undefined.
-fn tour(line: &[u8], key_length: usize) -> LineRead {
-    let Some(at) = scan::skip_while(line, key_length, |b| !is_alnum(b)) else {
+/// digits, on past the line's end into what earlier lines left in the buffer; an id that
+/// cannot be read leaves its slot, and every later one, as it was; where the reader runs
+/// into bytes no line wrote, the slots it has room for are undefined.
+fn tour(buffer: &InBuffer<'_>, key_length: usize) -> LineRead {
+    // Within the line, read from it: a C string searched for its end at every id would
+    // make a line of a million ids quadratic.
+    let line = buffer.c_line();
+    let number_at = |at: usize| match at < line.len() {
+        true => scan::int(line, at).map(|(n, _)| n),
+        false => scan::int(buffer.c_string(at)?.bytes, 0).map(|(n, _)| n),
+    };
+    let Some(at) = buffer.skip(key_length, |b| !is_alnum(b)) else {
         return LineRead::TourFailed;
     };
-    let Some((count, _)) = scan::int(line, at) else {
+    let Some(count) = number_at(at) else {
         return LineRead::TourFailed;
+    };
+    let next = |at: usize| {
+        buffer
+            .skip(at, is_alnum)
+            .and_then(|after| buffer.skip(after, |b| !is_alnum(b)))
     };
     let mut stops = Vec::new();
-    let mut at = scan::skip_while(line, at, is_alnum)
-        .and_then(|after_count| scan::skip_while(line, after_count, |b| !is_alnum(b)));
+    let mut at = next(at);
     for _ in 0..count.max(0) {
-        let Some(start) = at else {
-            // Past the end of the line the reader reads on into what its buffer held
-            // before: the slots it has room for are undefined.
+        let Some(id) = at.map(|start| (start, number_at(start))) else {
             let room = usize::try_from(count).map_or(TOUR_BUFFER, |count| count.min(TOUR_BUFFER));
             stops.resize(stops.len().max(room), None);
             break;
         };
-        let Some((id, _)) = scan::int(line, start) else {
+        let (start, Some(id)) = id else {
             break;
         };
         stops.push(Some(id));
-        at = at
-            .and_then(|start| scan::skip_while(line, start, is_alnum))
-            .and_then(|after_id| scan::skip_while(line, after_id, |b| !is_alnum(b)));
+        at = next(start);
     }
     LineRead::Tour { count, stops }
 }

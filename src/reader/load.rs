@@ -1,6 +1,7 @@
 //! A whole file, loaded as one version of the robot's reader loads it.
 
-use super::line::{self, LineRead, LoadedValue};
+use super::buffer::{InBuffer, LineBuffer};
+use super::line::{self, LineRead, LoadedValue, ValueAt};
 use super::scan::is_space;
 use super::tree::{ShapeBuilder, TreeShape};
 use super::Reader;
@@ -20,6 +21,9 @@ pub struct Loaded<'a> {
     text: &'a [u8],
     /// The keys whose lines were read ([`load_fields`]), or `None`: every key's.
     only: Option<Vec<Key>>,
+    /// Each line that set a field to what an earlier, longer line left in the buffer, as
+    /// where it starts and where that earlier line starts, in file order.
+    leftovers: Vec<(u32, u32)>,
 }
 
 /// One location as the robot holds it: each field set by a line, or never set (the
@@ -39,7 +43,8 @@ struct SetFields {
     /// Where the `fgets` call that last set each field starts, plus one (0: none), by
     /// [`Key::order`].
     lines: [u32; Key::ALL.len()],
-    /// Where the value starts in that line ([`UNDEFINED`]: past its end).
+    /// Where the value starts in the buffer ([`UNDEFINED`]: undefined), in bytes that line
+    /// wrote or, for a line in [`Loaded::leftovers`], an earlier one.
     values: [u16; Key::ALL.len()],
 }
 
@@ -53,12 +58,12 @@ impl SetFields {
         values: [0; Key::ALL.len()],
     };
 
-    /// Records that the line at `line` set `key` to a value that starts at `value_start`.
-    fn set(&mut self, key: Key, line: usize, value_start: Option<usize>) {
+    /// Records that the line at `line` set `key` to the value at `value_at`.
+    fn set(&mut self, key: Key, line: usize, value_at: Option<ValueAt>) {
         let slot = key.order();
         self.lines[slot] = u32::try_from(line + 1).expect("a file is less than 4 GiB");
-        self.values[slot] = value_start.map_or(UNDEFINED, |start| {
-            u16::try_from(start - line).expect("a line is shorter than a reader's buffer")
+        self.values[slot] = value_at.map_or(UNDEFINED, |value| {
+            u16::try_from(value.at).expect("a value is within a reader's buffer")
         });
     }
 
@@ -131,14 +136,31 @@ impl<'a> Loaded<'a> {
         let line = Span::new(start, start + chunk.len());
         let value = match location.fields.values[slot] {
             UNDEFINED => line::past_the_line(key),
-            // Read again from where it starts: a C string ends at its first NUL.
-            value_start => {
-                let text = &chunk[..memchr::memchr(0, chunk).unwrap_or(chunk.len())];
-                line::value(key, text, usize::from(value_start), start)
+            // Read again from where it starts, in the line that wrote it: a C string ends
+            // at its first NUL.
+            at => {
+                let at = usize::from(at);
+                let piece = self.leftover_of(start).unwrap_or(start);
+                let (_, bytes) = chunks(&self.text[piece..], self.reader.line_buffer()).next()?;
+                let rest = &bytes[at..];
+                let string = &rest[..memchr::memchr(0, rest).unwrap_or(rest.len())];
+                line::value(key, string, 0, piece + at)
                     .expect("the line set this field when it was read")
             }
         };
         Some(Field { line, value })
+    }
+}
+
+impl Loaded<'_> {
+    /// Where the earlier line starts whose leftovers the line at `line` loaded, if it did.
+    fn leftover_of(&self, line: usize) -> Option<usize> {
+        let line = u32::try_from(line).ok()?;
+        let index = self
+            .leftovers
+            .binary_search_by_key(&line, |&(at, _)| at)
+            .ok()?;
+        Some(self.leftovers[index].1 as usize)
     }
 }
 
@@ -149,8 +171,8 @@ pub struct LoadedTour {
     pub line: Span,
     /// `numberOfLocations`.
     pub count: i32,
-    /// The first `count` slots (at most those ever written, or the 20 of its buffer); `None`
-    /// where a slot holds whatever was in memory.
+    /// The first `count` slots (at most those ever written, or the 20 of its buffer): 0
+    /// where no line read one; `None` where a slot holds whatever was in memory.
     pub stops: Vec<Option<i32>>,
 }
 
@@ -196,6 +218,11 @@ fn load_in_parts(text: &[u8], reader: Reader, only: Option<Vec<Key>>, parts: usi
         None => read_part(text, range, reader, |_| true),
         Some(names) => read_part(text, range, reader, |line| starts_with_one_of(line, names)),
     });
+    // A part that read what lines before it left in the buffer is read again, with them:
+    // the whole file in one part (no file written as the robot reads it has such a line).
+    if parts.len() > 1 && parts.iter().any(|part| part.missed) {
+        return load_in_parts(text, reader, only, 1);
+    }
     // The runs of the first part grow to hold the others' (not copied to a new list: the
     // runs of a large file are megabytes), at once to the size of them all (growing by
     // doubling left a quarter of 100,000 locations' list unused).
@@ -205,7 +232,9 @@ fn load_in_parts(text: &[u8], reader: Reader, only: Option<Vec<Key>>, parts: usi
     let mut tour_line = None;
     let mut count = 0;
     let mut slots: Vec<Option<i32>> = Vec::new();
+    let mut leftovers = Vec::new();
     for part in parts {
+        leftovers.extend(part.leftovers);
         for (run, &lines) in part.runs.iter().zip(&part.lines) {
             tree.add(run.id, lines);
         }
@@ -241,8 +270,10 @@ fn load_in_parts(text: &[u8], reader: Reader, only: Option<Vec<Key>>, parts: usi
         LoadedTour {
             line,
             count,
+            // The tour is zero-filled when loading starts (SPEC §2.17): a slot that no
+            // line read is 0.
             stops: (0..shown)
-                .map(|k| slots.get(k).copied().flatten())
+                .map(|k| slots.get(k).copied().unwrap_or(Some(0)))
                 .collect(),
         }
     });
@@ -253,6 +284,7 @@ fn load_in_parts(text: &[u8], reader: Reader, only: Option<Vec<Key>>, parts: usi
         tree: tree.shape(),
         text,
         only,
+        leftovers,
     }
 }
 
@@ -266,6 +298,10 @@ struct Part {
     lines: Vec<u32>,
     /// Each tour line read: where, its count, and its stops.
     tours: Vec<(Span, i32, Vec<Option<i32>>)>,
+    /// Each line that set a field to what an earlier line left ([`Loaded::leftovers`]).
+    leftovers: Vec<(u32, u32)>,
+    /// Whether a line looked past its end for what lines before the part left.
+    missed: bool,
 }
 
 /// Reads the whole lines of `text` in `range` that `wanted` says may set a field.
@@ -278,23 +314,30 @@ fn read_part(
     let mut part = Part::default();
     let start = range.start;
     let part_text = &text[range];
-    let read = match memchr::memchr(0, part_text) {
-        Some(_) => line::read,
-        None => line::read_c_string,
-    };
+    // A text without a NUL byte need not be searched for one line by line.
+    let has_nul = memchr::memchr(0, part_text).is_some();
+    let mut history = LineBuffer::new(reader.line_buffer(), start == 0);
     for (offset, chunk) in chunks(part_text, reader.line_buffer()) {
+        let offset = start + offset;
         if !wanted(chunk) {
+            history.push(offset, chunk.len());
             continue;
         }
-        let offset = start + offset;
         let line = Span::new(offset, offset + chunk.len());
-        match read(chunk, offset, reader) {
+        let buffer = InBuffer::new(chunk, offset, text, &history);
+        let buffer = match has_nul {
+            true => buffer,
+            false => buffer.without_nul(),
+        };
+        match line::read_in(&buffer, reader) {
             LineRead::Value {
-                key,
-                id,
-                value_start,
-                ..
+                key, id, value_at, ..
             } => {
+                if let Some(value) = value_at.filter(|value| value.piece != offset) {
+                    let at =
+                        |offset: usize| u32::try_from(offset).expect("a file is less than 4 GiB");
+                    part.leftovers.push((at(offset), at(value.piece)));
+                }
                 if part.runs.last().is_none_or(|run| run.id != id) {
                     part.runs.push(LoadedLocation {
                         id,
@@ -303,7 +346,7 @@ fn read_part(
                     part.lines.push(0);
                 }
                 let run = part.runs.last_mut().expect("a run was just pushed");
-                run.fields.set(key, offset, value_start);
+                run.fields.set(key, offset, value_at);
                 *part.lines.last_mut().expect("a run was just pushed") += 1;
             }
             LineRead::Tour { count, stops } => part.tours.push((line, count, stops)),
@@ -312,7 +355,9 @@ fn read_part(
             | LineRead::Failed { .. }
             | LineRead::TourFailed => {}
         }
+        history.push(offset, chunk.len());
     }
+    part.missed = history.missed();
     part
 }
 
@@ -418,10 +463,11 @@ mod tests {
             (tour.count, tour.stops),
             (3, vec![Some(7), Some(2), Some(3)])
         );
-        // The end of the line does not: the reader reads on into its buffer's old bytes.
+        // The end of the line does not: the reader reads on into its buffer's old bytes,
+        // the `3` the longer line before left at 24, then bytes no line wrote.
         let text = "tourSpecification 3 1 2 3\ntourSpecification 3 7\n";
         let tour = load(text.as_bytes(), Reader::V2025_06).tour.unwrap();
-        assert_eq!(tour.stops, vec![Some(7), None, None]);
+        assert_eq!(tour.stops, vec![Some(7), Some(3), None]);
         assert_eq!(load(b"", Reader::V2025_06).tour, None);
     }
 
@@ -436,6 +482,18 @@ mod tests {
             let mut text = crate::generate::generate(&spec);
             // A later tour that overwrites some of the first one's stops.
             text.push_str("tourSpecification 3 7\nrobotLocationDescription 5 Again\n");
+            // Lines that load what the line before them left in the buffer, where the second
+            // of two parts starts, without the lines before it.
+            let short = "robotLocationDescription 9\ntourSpecification 9 1\n";
+            let starts = (text.len() / 2..).filter(|&at| text.as_bytes()[at - 1] == b'\n');
+            let at = starts
+                .take(100)
+                .find(|&at| {
+                    let with = [&text[..at], short, &text[at..]].concat();
+                    parallel::line_ranges(with.as_bytes(), 2)[1].start == at
+                })
+                .expect("a line where the second part starts");
+            text.insert_str(at, short);
             for reader in Reader::ALL {
                 let whole = load_in_parts(text.as_bytes(), reader, None, 1);
                 for parts in 2..=5 {

@@ -6,6 +6,7 @@
 //! `export --as-loaded` and the views; the compatibility rules ask the same questions of
 //! single lines ([`line::read`]) and of the written model.
 
+pub mod buffer;
 pub mod export;
 pub mod key_buffer;
 pub mod line;

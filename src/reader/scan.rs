@@ -64,18 +64,15 @@ pub fn int(line: &[u8], at: usize) -> Option<(i32, usize)> {
     if digits == 0 {
         return None;
     }
-    let mut value: i64 = 0;
+    // Held past a `long`'s range on either side, so that each side saturates to its own
+    // limit: `-99999999999999999999` is `LONG_MIN`, whose low 32 bits are 0.
+    let mut magnitude: i128 = 0;
     for &byte in &line[digits_start..digits_start + digits] {
-        value = value
-            .saturating_mul(10)
-            .saturating_add(i64::from(byte - b'0'));
+        magnitude = (magnitude * 10 + i128::from(byte - b'0')).min(1 << 64);
     }
-    let value = if negative {
-        value.saturating_neg()
-    } else {
-        value
-    };
-    Some((value as i32, digits_start + digits))
+    let value = if negative { -magnitude } else { magnitude };
+    let long = value.clamp(i128::from(i64::MIN), i128::from(i64::MAX)) as i64;
+    Some((long as i32, digits_start + digits))
 }
 
 /// `%f`: a `float` at or after `at` (after whitespace), as glibc's `scanf` reads it, and
@@ -267,6 +264,11 @@ mod tests {
         assert_eq!(int(line, 15), None);
         assert_eq!(word(b"   \n", 0), None);
         assert_eq!(int(b"99999999999", 0), Some((99999999999i64 as i32, 11)));
+        // glibc's `strtol` saturates to `LONG_MIN` and `LONG_MAX`, then `%d` keeps 32 bits.
+        assert_eq!(int(b"-99999999999999999999", 0), Some((0, 21)));
+        assert_eq!(int(b"99999999999999999999", 0), Some((-1, 20)));
+        assert_eq!(int(b"-9223372036854775808", 0), Some((0, 20)));
+        assert_eq!(int(b"-9223372036854775807", 0), Some((1, 20)));
     }
 
     #[test]

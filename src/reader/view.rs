@@ -17,7 +17,7 @@ pub enum Held<'a> {
     Words(Vec<Cow<'a, str>>),
     /// No line set it: the robot's empty text, or 0.
     Nothing,
-    /// The reader took it from past the end of its line.
+    /// The reader took it from bytes of its buffer that no line wrote.
     Undefined,
     /// This version does not read the key at all.
     NotRead,

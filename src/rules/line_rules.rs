@@ -154,6 +154,10 @@ impl LineFindings for LineRules {
             .push_with(&INVALID_VALUE, || diagnostic(key, id, span, text));
     }
 
+    fn float_overflow(&mut self, key: Key, id: u32, span: Span, token: &str, first: bool) {
+        compat::compat_float_overflow::check(key, id, span, token, first, &mut self.found);
+    }
+
     fn invalid_number(&mut self, key: Key, id: Option<u32>, span: Span, token: &str) {
         use structure::invalid_number::{diagnostic, INVALID_NUMBER};
         self.found

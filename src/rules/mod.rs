@@ -159,6 +159,7 @@ pub static ALL: &[&Rule] = &[
     &content::gesture_behind_robot::GESTURE_BEHIND_ROBOT,
     &compat::compat_line_too_long::COMPAT_LINE_TOO_LONG,
     &compat::compat_leading_symbol::COMPAT_LEADING_SYMBOL,
+    &compat::compat_float_overflow::COMPAT_FLOAT_OVERFLOW,
     &compat::compat_no_final_newline::COMPAT_NO_FINAL_NEWLINE,
     &compat::compat_crlf::COMPAT_CRLF,
     &compat::compat_bom::COMPAT_BOM,
@@ -279,10 +280,12 @@ pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, reader: Reader, out: &m
     // The tree's shape is a pass over every location in order, on one core (on the 100k
     // file, 9.6 M instructions after the rest of the check): on a large file, made on
     // another thread meanwhile (if one can be started).
+    let from_model = compat::model_tree_is_the_readers(kb, source, reader, out);
+    let tree_shape = || compat::tree_shape(kb, source, reader, from_model);
     let shape = std::thread::scope(|scope| {
         let on_a_thread = match ranges.len() > 1 {
             true => std::thread::Builder::new()
-                .spawn_scoped(scope, || compat::tree_shape(kb))
+                .spawn_scoped(scope, tree_shape)
                 .ok(),
             false => None,
         };
@@ -291,7 +294,7 @@ pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, reader: Reader, out: &m
             Some(shape) => shape
                 .join()
                 .expect("the tree's shape is made without panicking"),
-            None => compat::tree_shape(kb),
+            None => tree_shape(),
         }
     });
     // Its findings first, as if made first: findings at one place are listed in the order

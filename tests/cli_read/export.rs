@@ -203,7 +203,9 @@ fn as_loaded_keeps_what_the_reader_keeps_and_drops_what_it_drops() {
         serde_json::json!(["Bow's", "s"])
     );
     assert_eq!(location["postGestureMessage"]["isiZulu"], "Sawubon");
-    assert_eq!(loaded["tour"], serde_json::json!([1, null]));
+    // The second stop is read past the line's end, where the longer line before left the
+    // `s` of `Bow's`: `%d` fails there, and the slot keeps the 0 it started with.
+    assert_eq!(loaded["tour"], serde_json::json!([1, 0]));
     assert_eq!(
         export("2025-06")["locations"][0]["gestureArm"],
         serde_json::Value::Null
@@ -218,7 +220,8 @@ fn as_loaded_keeps_what_the_reader_keeps_and_drops_what_it_drops() {
 fn as_loaded_refuses_a_file_the_reader_crashes_on() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("deep.dat");
-    let text: String = (1..=1_800)
+    // 2026-04 crashes from a depth of 1,932 (the lowest measured over both builds).
+    let text: String = (1..=2_000)
         .map(|id| format!("robotLocationDescription {id} Exhibit {id}\n"))
         .collect();
     std::fs::write(&path, text).unwrap();
@@ -240,7 +243,7 @@ fn as_loaded_refuses_a_file_the_reader_crashes_on() {
     assert_eq!(deeper.code, 0, "{}", deeper.stderr);
     assert_eq!(
         json(&deeper.stdout)["locations"].as_array().unwrap().len(),
-        1_800
+        2_000
     );
 }
 

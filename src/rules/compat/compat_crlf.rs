@@ -1,5 +1,7 @@
 use crate::check::Diagnostics;
-use crate::diagnostic::{Diagnostic, Edit};
+use crate::diagnostic::{Diagnostic, Edit, Severity};
+use crate::reader::line::{self, LineRead, LoadedValue};
+use crate::reader::{chunks, Reader};
 use crate::rules::declare_rule;
 use crate::syntax::{Line, LineEnding, Span};
 
@@ -8,6 +10,10 @@ declare_rule! {
     /// Flags a file with Windows (CRLF) line endings, once, and converts them to LF. A
     /// line whose text ends in another `\r` (`\r\r\n`) is flagged on its own and left for
     /// a person: converting its ending would make that `\r` the next one.
+    ///
+    /// An error where the chosen reader keeps a `\r` in a text value; a warning where it
+    /// keeps none (the `\r`s end tour, number or culturalKnowledge lines, blank lines,
+    /// comments, or a cut drops them): the robot loads the same, yet the fix still helps.
     ///
     /// ## Why it matters
     /// The robot's reader removes only the `\n`: the `\r` stays at the end of every text
@@ -95,4 +101,44 @@ pub fn check(endings: &CrlfEndings, out: &mut Diagnostics) {
             endings.convertible.iter().map(|&span| Edit::replace(span, "\n")).collect(),
         ),
     );
+}
+
+/// Makes a warning of each finding about `\r`s that `reader` keeps in no text value, and
+/// says so: the robot loads the same from those lines as it would with LF endings.
+pub fn grade(text: &str, reader: Reader, out: &mut Diagnostics) {
+    let bytes = text.as_bytes();
+    for diagnostic in out.iter_mut() {
+        if !std::ptr::eq(diagnostic.rule, &COMPAT_CRLF) {
+            continue;
+        }
+        let kept = match diagnostic.fix.is_some() {
+            // The finding for every CRLF ending of the file.
+            true => memchr::memmem::find_iter(bytes, b"\r\n").any(|at| is_kept(bytes, at, reader)),
+            false => is_kept(bytes, diagnostic.span.start as usize, reader),
+        };
+        if !kept {
+            diagnostic.set_severity(Severity::Warning);
+            diagnostic.message = format!(
+                "{}; but reader {reader} keeps no such `\\r` in a text value (they end tour, number or culturalKnowledge lines, blank lines or comments, or a cut drops them): it loads the same as with LF endings",
+                diagnostic.message.split(": the robot").next().unwrap_or_default()
+            );
+        }
+    }
+}
+
+/// Whether `reader` keeps the `\r` at `at` in a text value it loads.
+fn is_kept(bytes: &[u8], at: usize, reader: Reader) -> bool {
+    let line_start = memchr::memrchr(b'\n', &bytes[..at]).map_or(0, |newline| newline + 1);
+    let Some((offset, piece)) = chunks(&bytes[line_start..], reader.line_buffer())
+        .find(|(offset, piece)| line_start + offset + piece.len() > at)
+    else {
+        return false;
+    };
+    match line::read(piece, line_start + offset, reader) {
+        LineRead::Value {
+            value: LoadedValue::Text(span),
+            ..
+        } => span.range().contains(&at),
+        _ => false,
+    }
 }

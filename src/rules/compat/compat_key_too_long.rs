@@ -11,7 +11,7 @@ use crate::syntax::{self, Body, Span};
 declare_rule! {
     /// ## What it does
     /// Flags a word of 100 bytes or more where the robot's reader copies a word into a
-    /// 100-byte buffer (200 bytes on `2026-03`): the first word of every line it reads (a
+    /// 100-byte buffer (200 bytes on `2026-03` and `2026-04`): the first word of every line it reads (a
     /// comment's too, and the rest of a line it cut), and each `culturalKnowledge` word.
     ///
     /// ## Why it matters
@@ -29,7 +29,7 @@ declare_rule! {
         category: Compat,
         severity: Error,
         fixable: false,
-        summary: "a first word of a line, or a culturalKnowledge word, of 100 bytes or more (200 on 2026-03): it overflows the reader's word buffer",
+        summary: "a first word of a line, or a culturalKnowledge word, of 100 bytes or more (200 on 2026-03 and 2026-04): it overflows the reader's word buffer",
     };
 }
 

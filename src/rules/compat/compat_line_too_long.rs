@@ -2,7 +2,8 @@ use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
 use crate::model::build::leading_id;
 use crate::model::{Key, KnowledgeBase, ValueKind};
-use crate::reader::Reader;
+use crate::reader::line as reader_line;
+use crate::reader::{chunks, Reader};
 use crate::rules::{declare_rule, excerpt};
 use crate::syntax::{self, Body, Line, Span};
 
@@ -12,6 +13,9 @@ declare_rule! {
     /// newline: 200 bytes for `d5.4.2` and `2025-06`, 300 for `2026-02`, 600 for `2026-03`
     /// and `2026-04`. Bytes, not characters: an isiZulu or Kinyarwanda letter with an
     /// accent takes two.
+    ///
+    /// Not a line whose cut changes nothing the reader loads: a line of blanks, a comment
+    /// whose rest is no line the reader reads, a CRLF line cut between its `\r` and `\n`.
     ///
     /// ## Why it matters
     /// The robot's reader reads lines into a fixed buffer. A longer line is cut after 199
@@ -36,7 +40,7 @@ declare_rule! {
 pub fn check(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagnostics) {
     let buffer = reader.line_buffer();
     for &span in &kb.lines.long_lines {
-        if span.len() < buffer {
+        if span.len() < buffer || !cut_changes_what_loads(&text.as_bytes()[span.range()], reader) {
             continue;
         }
         out.push_with(&COMPAT_LINE_TOO_LONG, || {
@@ -46,6 +50,28 @@ pub fn check(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagn
             diagnostic(&line, text, reader)
         });
     }
+}
+
+/// Whether cutting `line` (its ending included) into the pieces that `reader` reads
+/// changes what it loads: a piece after the first loads something, or the first loads
+/// other than the line whole would, with a `\n` for its ending (the `\r` of a CRLF ending
+/// is `compat-crlf`'s).
+fn cut_changes_what_loads(line: &[u8], reader: Reader) -> bool {
+    let mut pieces = chunks(line, reader.line_buffer());
+    let Some((_, first)) = pieces.next() else {
+        return false;
+    };
+    if pieces.any(|(offset, piece)| {
+        !reader_line::loads_nothing(&reader_line::read(piece, offset, reader))
+    }) {
+        return true;
+    }
+    let content = line
+        .strip_suffix(b"\n")
+        .map_or(line, |line| line.strip_suffix(b"\r").unwrap_or(line));
+    let whole = [content, b"\n"].concat();
+    let cut = reader_line::read(first, 0, reader);
+    !reader_line::same_load(&cut, first, &reader_line::read(&whole, 0, reader), &whole)
 }
 
 /// The finding about `line`, which is too long for `reader`.
@@ -91,11 +117,10 @@ fn diagnostic(line: &Line, text: &str, reader: Reader) -> Diagnostic {
             tail(&text[content.start as usize..kept_end]),
             excerpt(&text[cut..content_end])
         )
-    } else if drops_letter {
-        "only its newline does not fit, so the robot's reader drops its last character instead"
-            .to_string()
     } else {
-        "only its line ending does not fit, and the robot's reader reads it as an empty line"
+        // A line whose content fits and that is still reported is a text that loses its
+        // last letter ([`cut_changes_what_loads`]).
+        "only its newline does not fit, so the robot's reader drops its last character instead"
             .to_string()
     };
     // Point at what the robot loses; when that is only the newline, at the last character.

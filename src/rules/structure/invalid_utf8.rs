@@ -1,11 +1,14 @@
 use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::encoding::Detected;
 use crate::rules::declare_rule;
 use crate::source::SourceFile;
+use crate::syntax::Span;
 
 declare_rule! {
     /// ## What it does
-    /// Flags bytes that are not valid UTF-8, with their line and byte offset.
+    /// Flags bytes that are not valid UTF-8, with their line and byte offset; or, once, a
+    /// whole file in UTF-16 or UTF-32, from which the robot's reader loads nothing.
     ///
     /// ## Why it matters
     /// The knowledge base is UTF-8 text. A file saved in another encoding (Latin-1, UTF-16)
@@ -57,4 +60,21 @@ pub fn check(source: &SourceFile, out: &mut Diagnostics) {
             ),
         );
     }
+}
+
+/// The finding about a file in a wide encoding (UTF-16 or UTF-32): the robot's reader reads
+/// its bytes as if they were single-byte text, finds the first word of each line cut short
+/// by a NUL byte (`r\0o\0b…`), and loads nothing.
+pub fn wide(wide: Detected) -> Diagnostic {
+    let name = wide.encoding.name();
+    Diagnostic::new(
+        &INVALID_UTF8,
+        Span::empty_at(0),
+        format!(
+            "this file is {name} text, not UTF-8: the robot's reader reads it byte by byte, finds no key on any line (each is cut short by a NUL byte), and loads nothing from it"
+        ),
+    )
+    .with_help(format!(
+        "convert it to UTF-8, e.g. `iconv -f {name} -t UTF-8 FILE > NEW` (ekb rewrites no such file)"
+    ))
 }
