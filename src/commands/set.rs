@@ -41,6 +41,8 @@ pub struct Args {
 pub fn run(args: &Args, context: &Context) -> CommandResult {
     let edit = parse(args)?;
     let path = context.file_to_rewrite(args.file.as_deref())?;
+    let mode = if args.diff { Mode::Diff } else { Mode::Write };
+    let _lock = rewrite::lock(&path, mode)?;
     let options = context.read_options(&path)?;
     let source = context.read(&path)?;
     rewrite::ensure_rewritable(&source)?;
@@ -65,7 +67,6 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         );
         return Ok(Exit::Findings);
     }
-    let mode = if args.diff { Mode::Diff } else { Mode::Write };
     let style = DiffStyle {
         color: context.color_stdout(),
     };
