@@ -172,6 +172,63 @@ fn a_map_image_needs_its_size() {
     );
 }
 
+/// A PNG whose header declares `width` × `height` grey pixels, one bit each, with a scrap of
+/// image data: what a decompression bomb looks like before its data is inflated.
+fn declared_png(width: u32, height: u32) -> Vec<u8> {
+    fn crc32(bytes: &[u8]) -> u32 {
+        let mut crc = !0u32;
+        for &byte in bytes {
+            crc ^= u32::from(byte);
+            for _ in 0..8 {
+                crc = (crc >> 1) ^ (0xEDB8_8320 & (crc & 1).wrapping_neg());
+            }
+        }
+        !crc
+    }
+    fn chunk(png: &mut Vec<u8>, kind: &[u8], data: &[u8]) {
+        png.extend_from_slice(&(data.len() as u32).to_be_bytes());
+        let start = png.len();
+        png.extend_from_slice(kind);
+        png.extend_from_slice(data);
+        let crc = crc32(&png[start..]);
+        png.extend_from_slice(&crc.to_be_bytes());
+    }
+    let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
+    let mut header = Vec::new();
+    header.extend_from_slice(&width.to_be_bytes());
+    header.extend_from_slice(&height.to_be_bytes());
+    header.extend_from_slice(&[1, 0, 0, 0, 0]);
+    chunk(&mut png, b"IHDR", &header);
+    // zlib of nothing much: the header alone must be enough to refuse.
+    chunk(
+        &mut png,
+        b"IDAT",
+        &[0x78, 0x9c, 0x03, 0x00, 0x00, 0x00, 0x00, 0x01],
+    );
+    chunk(&mut png, b"IEND", &[]);
+    png
+}
+
+#[test]
+fn an_image_declaring_too_many_pixels_is_refused_before_decoding() {
+    let dir = tempfile::tempdir().unwrap();
+    let bomb = dir.path().join("bomb.png");
+    std::fs::write(&bomb, declared_png(40_000, 40_000)).unwrap();
+    let bomb = bomb.to_str().unwrap();
+    for command in ["map", "check"] {
+        let run = ekb(&[command, SEED, "--map-image", bomb, "--map-size", "10", "10"]);
+        assert_eq!(run.code, 2, "{}", run.stderr);
+        assert!(
+            run.stderr.contains(
+                "the image declares 40000 × 40000 pixels, past ekb's cap of 16777216 pixels \
+                 (4096 × 4096)"
+            ),
+            "{}",
+            run.stderr
+        );
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // Checking against the map
 
