@@ -128,13 +128,16 @@ type Broken = (&'static str, fn(&str) -> String, &'static [&'static str]);
 
 #[test]
 fn a_bad_map_is_an_error_at_its_file_line_and_column() {
-    let cases: [Broken; 8] = [
+    let cases: [Broken; 10] = [
         ("obstacles.dat", |t| t.replace("3.31  5.525", "3.31  5,525"), &["obstacles.dat:5:18: the centre's y `5,525` is not a number"]),
         ("obstacles.dat", |t| format!("{t}WALL 1 2 3 4\n"), &["obstacles.dat:12:1: expected `OBSTACLE cx cy width height`"]),
         ("obstacles.dat", |t| t.replace("0.40  4.965  0.80 9.93", "0.40 4.965 0.80"), &["obstacles.dat:8:1: an obstacle has 4 numbers"]),
         ("mapGenerationConfiguration.ini", |t| t.replace("0.01", "-0.01"), &["mapGenerationConfiguration.ini:3:12: the resolution `-0.01` is not a positive number"]),
         ("mapGenerationConfiguration.ini", |t| t.replace("robotRadius 0.3\n", ""), &["no `robotRadius` line; add one, e.g. `robotRadius 0.3`"]),
-        ("mapGenerationInput.dat", |t| t.replace("6.80", "7.00"), &["mapGenerationInput.dat:4:20: ", "is 680 × 993 pixels, which at a resolution of 0.01 m is 6.80 × 9.93 m, not the 7 × 9.93 m"]),
+        ("mapGenerationInput.dat", |t| t.replace("6.80", "7.00"), &["mapGenerationInput.dat:4:20: ", "is 680 × 993 pixels, which at a resolution of 0.01 m is 6.80 × 9.93 m, not the 7.00 × 9.93 m"]),
+        // Numbers as written, not with their 300 digits.
+        ("mapGenerationInput.dat", |t| t.replace("6.80", "1e308"), &["at a resolution of 0.01 m is 6.80 × 9.93 m, not the 1e308 × 9.93 m of"]),
+        ("mapGenerationConfiguration.ini", |t| t.replace("0.01", "1e-300"), &["at a resolution of 1e-300 m is 6.80e-298 × 9.93e-298 m, not the 6.80 × 9.93 m of"]),
         ("mapGenerationInput.dat", |t| t.replace("obstacles.dat", "gone.dat"), &["gone.dat (named at ", "mapGenerationInput.dat:3:14): no such file"]),
         ("environmentMap.png", |_| "not a picture".to_string(), &["environmentMap.png: not a PNG image that ekb can read"]),
     ];
