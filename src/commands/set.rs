@@ -105,7 +105,7 @@ fn parse(args: &Args) -> Result<ValueEdit, CommandError> {
         }
         Some(key) => key,
         None => {
-            let hint = match crate::rules::structure::unknown_key::nearest(&args.key) {
+            let hint = match Key::nearest_to(&args.key) {
                 Some(near) => format!("did you mean `{}`?", near.name()),
                 None => "`ekb explain unknown-key` lists the keys".to_string(),
             };
