@@ -815,3 +815,33 @@ fn each_format_says_which_reader_it_checked_against() {
         human.stdout
     );
 }
+
+#[test]
+fn the_human_report_shows_errors_before_warnings_each_in_line_order() {
+    // A warning (repeated word) on line 2, before the error (a key in the wrong case) on 3.
+    let dir = tempfile::tempdir().unwrap();
+    let kb = dir.path().join("kb.dat");
+    fs::write(
+        &kb,
+        seed_text().replacen(" This is the Roomba", " This is the the Roomba", 1),
+    )
+    .unwrap();
+    let out = run(ekb_in(dir.path()).args(["check", "--color", "never", "kb.dat"]));
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    let headings: Vec<&str> = out
+        .stdout
+        .lines()
+        .filter(|line| line.starts_with("error[") || line.starts_with("warning["))
+        .collect();
+    let first_warning = headings
+        .iter()
+        .position(|h| h.starts_with("warning["))
+        .expect("warnings");
+    assert!(first_warning > 0, "{headings:?}");
+    assert!(
+        headings[first_warning..]
+            .iter()
+            .all(|h| h.starts_with("warning[")),
+        "{headings:?}"
+    );
+}

@@ -284,7 +284,10 @@ mod tests {
         );
         assert!(MissionPaths::from_config_dir(&data).is_err());
         let hint = paths.not_found_hint("--mission").unwrap();
-        assert!(hint.contains("name them: --mission, --culture-kb"), "{hint}");
+        assert!(
+            hint.contains("name them: --mission, --culture-kb"),
+            "{hint}"
+        );
         // Files kept beside the configuration, with no data folder, are found there.
         std::fs::write(config.join("labTour.xml"), "<root/>").unwrap();
         let paths = MissionPaths::from_config_dir(&config).unwrap();
