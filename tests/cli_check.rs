@@ -462,7 +462,7 @@ fn human_is_the_default_and_says_what_to_change() {
     // The summary leads with what matters: each severity, broken down by rule.
     assert!(out.ends_with(
         "\nFound 2 errors: key-case, missing-field · 21 warnings: 20 untranslated-message, \
-         1 repeated-word (1 fixable with ekb fix), checked against reader d5.4.2\n"
+         1 repeated-word (1 fixable with ekb fix: key-case), checked against reader d5.4.2\n"
     ));
     assert_eq!(run.stderr, "");
 }

@@ -334,7 +334,7 @@ fn unsafe_fixes_wait_for_the_flag_and_the_safe_ones_do_not() {
     );
     // Locations 1 and 5 have the decimal comma.
     assert!(
-        report.contains("3 with ekb fix --unsafe-fixes)"),
+        report.contains("3 with ekb fix --unsafe-fixes: invalid-number)"),
         "{report}"
     );
     let json = ekb()
