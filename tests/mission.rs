@@ -612,6 +612,25 @@ fn the_culture_reader_of_2026_02_holds_lines_of_up_to_299_bytes() {
 }
 
 #[test]
+fn an_untranslated_stop_is_named_by_its_location_and_its_place_on_the_tour() {
+    // The tour is `2 2 1` (two stops): location 1 is its second stop.
+    let bad = fixtures().join("rules/mission-untranslated-tour/bad");
+    let all = check_set(&set_up(Some(&bad)));
+    let first = all
+        .iter()
+        .find(|f| f.rule == "mission-untranslated-tour")
+        .expect("a finding");
+    assert_eq!((first.file.as_str(), first.line), (KB, 6));
+    assert!(
+        first
+            .message
+            .contains("the message of location 1 (stop 2 of the tour) before the gesture"),
+        "{}",
+        first.message
+    );
+}
+
+#[test]
 fn an_empty_include_path_is_said_to_be_empty() {
     let bad = fixtures().join("rules/mission-bad-include/bad");
     let all = check_set(&set_up(Some(&bad)));
