@@ -146,7 +146,7 @@ fn write_table(checked: &Checked<'_>, loaded: Loaded<'_>, out: &mut impl Write) 
 /// (a row takes about 13,000 instructions; a thread, about as many as 50 rows).
 const MIN_ROWS_PER_PART: usize = 1024;
 
-/// `before EN ✓ ZU ~ RW ~` and `after` on a second line.
+/// `before EN ✓ ZU ~ RW ~` and `after` on a second line, each code held to its mark.
 fn message_marks(location: &Location<'_>) -> String {
     let mut marks = String::with_capacity(64);
     for (i, &phase) in Phase::ALL.iter().enumerate() {
@@ -161,7 +161,8 @@ fn message_marks(location: &Location<'_>) -> String {
         for &lang in Language::ALL.iter() {
             marks.push(' ');
             marks.push_str(language::code(lang));
-            marks.push(' ');
+            // A no-break space: a narrow table wraps between languages, never inside `RW ~`.
+            marks.push('\u{a0}');
             marks.push_str(Message::of(location, phase, lang).mark());
         }
     }
