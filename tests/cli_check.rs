@@ -845,3 +845,34 @@ fn the_human_report_shows_errors_before_warnings_each_in_line_order() {
         "{headings:?}"
     );
 }
+
+#[test]
+fn a_unicode_minus_is_explained_by_its_consequence_in_check_show_and_tour() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(
+        dir.path().join("kb.dat"),
+        seed_text().replace(" 2.0 6.3 -45", " 2.0 6.3 \u{2212}45"),
+    )
+    .unwrap();
+    let said = |args: &[&str]| run(ekb_in(dir.path()).env_remove("COLUMNS").args(args)).stdout;
+    let check = said(&["check", "--format", "concise", "kb.dat"]);
+    assert!(
+        check.contains(
+            "is not a finite decimal number: the robot's reader loses the line's whole value, \
+             so the robot will stand at (0, 0) facing 0° at location 3"
+        ),
+        "{check}"
+    );
+    let show = said(&["show", "3", "kb.dat"]);
+    assert!(
+        show.contains(
+            "0.0, 0.0, 0.0° (the line's value is invalid, so the robot's reader holds this"
+        ),
+        "{show}"
+    );
+    let tour = said(&["tour", "kb.dat"]);
+    assert!(
+        tour.contains("stands at    0, 0, 0°: the pose line's numbers are invalid"),
+        "{tour}"
+    );
+}
