@@ -129,7 +129,9 @@ fn write_table(checked: &Checked<'_>, loaded: Loaded<'_>, out: &mut impl Write) 
         }
         rows
     });
-    let table = table::Rows::join(parts).unwrap_or_else(|| table::Rows::new(&header));
+    let mut table = table::Rows::join(parts).unwrap_or_else(|| table::Rows::new(&header));
+    // A narrow table wraps other columns, never the marks (`RW` on one line, `~` below).
+    table.keep_unbroken(header.len() - 2);
     // The rows hold what the table shows: what the reader holds goes before it is drawn.
     drop(loaded);
     table.write(out)?;
@@ -146,7 +148,7 @@ fn write_table(checked: &Checked<'_>, loaded: Loaded<'_>, out: &mut impl Write) 
 /// (a row takes about 13,000 instructions; a thread, about as many as 50 rows).
 const MIN_ROWS_PER_PART: usize = 1024;
 
-/// `before EN ✓ ZU ~ RW ~` and `after` on a second line, each code held to its mark.
+/// `before EN ✓ ZU ~ RW ~` and `after` on a second line.
 fn message_marks(location: &Location<'_>) -> String {
     let mut marks = String::with_capacity(64);
     for (i, &phase) in Phase::ALL.iter().enumerate() {
@@ -161,8 +163,7 @@ fn message_marks(location: &Location<'_>) -> String {
         for &lang in Language::ALL.iter() {
             marks.push(' ');
             marks.push_str(language::code(lang));
-            // A no-break space: a narrow table wraps between languages, never inside `RW ~`.
-            marks.push('\u{a0}');
+            marks.push(' ');
             marks.push_str(Message::of(location, phase, lang).mark());
         }
     }
