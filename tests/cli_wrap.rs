@@ -113,3 +113,21 @@ fn locations_never_part_a_language_from_its_mark() {
         }
     }
 }
+
+#[test]
+fn show_wraps_its_title_and_findings_at_columns() {
+    let dir = setup();
+    let long = FILE.replace("Entrance", &"Entrance hall ".repeat(12));
+    std::fs::write(dir.path().join("kb.dat"), long).unwrap();
+    let output = ekb(dir.path())
+        .env("COLUMNS", "60")
+        .args(["show", "1", "kb.dat"])
+        .output()
+        .unwrap();
+    let shown = String::from_utf8(output.stdout).unwrap();
+    assert!(shown.contains("\nFindings at this location"), "{shown}");
+    assert!(
+        shown.lines().all(|line| line.chars().count() <= 60),
+        "a line past 60 columns:\n{shown}"
+    );
+}
