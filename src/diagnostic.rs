@@ -253,35 +253,62 @@ impl Summary {
 
     /// `Found 2 errors, 21 warnings (1 fixable with ekb fix)`, or `No problems found`.
     pub fn sentence(&self) -> String {
-        self.found(|_, count, word| format!("{count} {word}"))
+        self.found(|_, count, word| format!("{count} {word}"), false)
     }
 
     /// [`Summary::sentence`] with each severity broken down by rule: `Found 2 errors:
     /// key-case, missing-field · 21 warnings: 20 untranslated-message, 1 repeated-word (1
-    /// fixable with ekb fix)`. A severity whose rules have one finding each lists only their
-    /// names; otherwise each rule comes with its count, the most frequent first.
+    /// fixable with ekb fix: key-case)`. A severity whose rules have one finding each lists
+    /// only their names; otherwise each rule comes with its count, the most frequent first.
+    /// The fixable ones are named, or the count would read as the last rule's.
     pub fn breakdown(&self) -> String {
-        self.found(|severity, count, word| {
-            let mut rules: Vec<&RuleCount> = self
-                .by_rule
-                .iter()
-                .filter(|c| c.severity == severity && c.count > 0)
-                .collect();
-            rules.sort_by_key(|c| std::cmp::Reverse(c.count));
-            let singles = rules.iter().all(|c| c.count == 1);
-            let named: Vec<String> = rules
-                .iter()
-                .map(|c| match singles {
-                    true => c.rule.name.to_string(),
-                    false => format!("{} {}", c.count, c.rule.name),
-                })
-                .collect();
-            format!("{count} {word}: {}", named.join(", "))
-        })
+        self.found(
+            |severity, count, word| {
+                let mut rules: Vec<&RuleCount> = self
+                    .by_rule
+                    .iter()
+                    .filter(|c| c.severity == severity && c.count > 0)
+                    .collect();
+                rules.sort_by_key(|c| std::cmp::Reverse(c.count));
+                let singles = rules.iter().all(|c| c.count == 1);
+                let named: Vec<String> = rules
+                    .iter()
+                    .map(|c| match singles {
+                        true => c.rule.name.to_string(),
+                        false => format!("{} {}", c.count, c.rule.name),
+                    })
+                    .collect();
+                format!("{count} {word}: {}", named.join(", "))
+            },
+            true,
+        )
+    }
+
+    /// The rules with findings that `ekb fix` fixes (`unsafe_fixes`: only with
+    /// `--unsafe-fixes`), in catalogue order: `: key-case`, or nothing if none is known.
+    fn fixable_rules(&self, unsafe_fixes: bool) -> String {
+        let mut names: Vec<&str> = self
+            .by_rule
+            .iter()
+            .filter(|c| match unsafe_fixes {
+                true => c.unsafe_fixable > 0,
+                false => c.fixable > 0,
+            })
+            .map(|c| c.rule.name)
+            .collect();
+        names.dedup();
+        match names.is_empty() {
+            true => String::new(),
+            false => format!(": {}", names.join(", ")),
+        }
     }
 
     /// `Found …`, each severity with findings described by `part`.
-    fn found(&self, part: impl Fn(Severity, usize, String) -> String) -> String {
+    fn found(
+        &self,
+        part: impl Fn(Severity, usize, String) -> String,
+        name_fixable: bool,
+    ) -> String {
         let mut parts = Vec::new();
         for (severity, count) in [
             (Severity::Error, self.errors),
@@ -309,12 +336,20 @@ impl Summary {
             format!("Found {}", parts.join(separator))
         };
         let mut notes = Vec::new();
+        let rules = |unsafe_fixes| match name_fixable {
+            true => self.fixable_rules(unsafe_fixes),
+            false => String::new(),
+        };
         if self.fixable > 0 {
-            notes.push(format!("{} fixable with ekb fix", self.fixable));
+            notes.push(format!(
+                "{} fixable with ekb fix{}",
+                self.fixable,
+                rules(false)
+            ));
         }
         if self.unsafe_fixable > 0 {
             let n = self.unsafe_fixable;
-            notes.push(format!("{n} with ekb fix --unsafe-fixes"));
+            notes.push(format!("{n} with ekb fix --unsafe-fixes{}", rules(true)));
         }
         if let Some(hidden) = self.hidden.filter(|hidden| hidden.count > 0) {
             let level = hidden.level.name();

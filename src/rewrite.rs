@@ -4,7 +4,8 @@
 //! A command that rewrites a knowledge base (`fix`, `fmt`, and `set` or `import --po` to
 //! come) takes its files from [`crate::commands::Context::files_to_rewrite`] (which will
 //! not rewrite a configured file outside the configuration's project unless it is named),
-//! reads each with [`crate::commands::Context::read`], calls [`ensure_rewritable`], then
+//! takes [`lock`] before it reads each with [`crate::commands::Context::read`] (and holds it
+//! until the file is written), calls [`ensure_rewritable`], then
 //! [`deliver`], which writes through [`crate::write::rewrite`]: refused if the file changed
 //! since it was read, and every other guard of [`crate::write`]. [`for_each_file`] goes
 //! on after a file that failed.
@@ -56,6 +57,16 @@ pub fn ensure_rewritable(source: &SourceFile) -> Result<(), CommandError> {
             foreign.message
         ))),
         None => Ok(()),
+    }
+}
+
+/// The lock a command holds on `path` from reading it to writing it back, if `mode` writes
+/// ([`crate::write::lock_to_rewrite`]): two ekb rewriting one file take turns, the second
+/// reading what the first wrote.
+pub fn lock(path: &Path, mode: Mode) -> Result<Option<write::RewriteLock>, CommandError> {
+    match mode {
+        Mode::Write => Ok(write::lock_to_rewrite(path)?),
+        Mode::Diff => Ok(None),
     }
 }
 

@@ -193,8 +193,7 @@ impl Settings {
     fn parse_in(text: &str, folder: &Path) -> Result<Settings, String> {
         let document = ImDocument::parse(text).map_err(|error| {
             let at = error.span().map_or(0, |span| span.start);
-            let message = error.message().trim_end().to_string();
-            Parser { text, folder }.error(at, &message)
+            Parser { text, folder }.error(at, &describe_syntax_error(error.message(), text, at))
         })?;
         Parser { text, folder }.settings(document.as_table())
     }
@@ -511,6 +510,28 @@ impl Parser<'_> {
     }
 }
 
+/// The TOML parser's message on one line (it writes `invalid table header` and `expected
+/// …` on two), saying so when the mistake is a line break (inside a string, say), which
+/// would otherwise show as an escape or not at all.
+fn describe_syntax_error(message: &str, text: &str, at: usize) -> String {
+    let mut message = message
+        .lines()
+        .map(str::trim)
+        .filter(|line| !line.is_empty())
+        .collect::<Vec<_>>()
+        .join("; ");
+    if text
+        .get(at..)
+        .is_some_and(|rest| rest.starts_with(['\n', '\r']))
+    {
+        message.push_str(match message.contains("string") {
+            true => " (found a line break: a string between \"…\" is one line)",
+            false => " (found a line break)",
+        });
+    }
+    message
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -634,6 +655,14 @@ config-dir = "../behaviorController/config"
         );
         assert!(error("\nreader = \"2027\"\n").starts_with("2:10: `reader` must be one of d5.4.2,"));
         assert!(error("reader = [").starts_with("1:"));
+        assert_eq!(
+            error("[rules\nx = 1\n"),
+            "1:7: invalid table header; expected `.`, `]` (found a line break)"
+        );
+        assert_eq!(
+            error("reader = \"2026\n02\"\n"),
+            "1:15: invalid basic string (found a line break: a string between \"…\" is one line)"
+        );
         assert!(Settings::parse("").unwrap().reader.is_none());
     }
 

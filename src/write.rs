@@ -12,6 +12,9 @@
 //!   knowledge base calls `deliver` too.
 //! - [`rewrite_streamed`]`(path, read_as, produce)`: the same, `produce` writing the new
 //!   contents (`fmt` streams a formatted file; see [`crate::rewrite::deliver_streamed`]).
+//! - [`lock_to_rewrite`]`(path)`: taken by a command before it reads a file it will write
+//!   back, and held until that file is replaced, so that two ekb rewriting one file take
+//!   turns: the second waits, then reads what the first wrote (no change is lost).
 //!
 //! # What is refused, the file left unchanged and the error saying why
 //! - a path that is not a regular file: a folder, a FIFO, a socket, a device (`-o
@@ -39,6 +42,7 @@ use std::fmt;
 use std::fs::{self, Metadata};
 use std::io::{self, BufWriter, Seek, Write};
 use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
 
 use tempfile::NamedTempFile;
 
@@ -93,6 +97,125 @@ pub fn rewrite_streamed(
     produce: impl FnOnce(&mut dyn Write) -> io::Result<()>,
 ) -> Result<(), WriteError> {
     write(path, Some(read_as), produce)
+}
+
+/// An advisory lock (`flock`) on a file ekb is rewriting, held until it is dropped.
+///
+/// The lock is on the file itself, not on a lock file beside it (which would be left behind
+/// in the user's folder). A rename replaces the file's inode, so a second writer may lock
+/// the inode the first has just replaced: once locked, the path must still name the locked
+/// inode, or the lock is let go and taken again on the new file. Advisory: it keeps ekb
+/// from ekb, and an editor's save is still caught by the check that the file is unchanged.
+#[derive(Debug)]
+pub struct RewriteLock {
+    _file: fs::File,
+}
+
+/// How long a second writer waits for the first before giving up.
+const LOCK_WAIT: Duration = Duration::from_secs(30);
+
+/// How often a waiting writer tries the lock again.
+const LOCK_RETRY: Duration = Duration::from_millis(5);
+
+/// Locks `path` (through its symbolic links) for a rewrite, waiting up to [`LOCK_WAIT`] for
+/// another ekb that holds it. `None` for standard input (`-`), a file not there yet, or a
+/// file system without locks: there is nothing to lock, and [`rewrite`] still refuses a
+/// file that changed since it was read.
+pub fn lock_to_rewrite(path: &Path) -> Result<Option<RewriteLock>, WriteError> {
+    if path == Path::new("-") {
+        return Ok(None);
+    }
+    let fail = |reason: String| WriteError {
+        path: path.to_path_buf(),
+        reason,
+        left_unchanged: true,
+    };
+    let deadline = Instant::now() + LOCK_WAIT;
+    loop {
+        let target = resolve(path).map_err(fail)?;
+        if !target.existing.as_ref().is_some_and(Metadata::is_file) {
+            // Not there, or not a regular file: the write refuses it with the reason.
+            return Ok(None);
+        }
+        let file = match fs::File::open(&target.path) {
+            Ok(file) => file,
+            Err(err) if err.kind() == io::ErrorKind::NotFound => continue,
+            // Unreadable: reading it fails next, with the reason.
+            Err(_) => return Ok(None),
+        };
+        loop {
+            match try_lock(&file) {
+                Ok(Locked::Yes) => break,
+                Ok(Locked::HeldElsewhere) if Instant::now() < deadline => {
+                    std::thread::sleep(LOCK_RETRY);
+                }
+                Ok(Locked::HeldElsewhere) => {
+                    return Err(fail(format!(
+                        "another program (another ekb?) has been writing it for {} s and \
+                         still holds its lock; nothing was changed: run ekb again once it is \
+                         done",
+                        LOCK_WAIT.as_secs()
+                    )))
+                }
+                Ok(Locked::Unsupported) => return Ok(None),
+                Err(err) => return Err(fail(describe(&err))),
+            }
+        }
+        if still_names(&target.path, &file) {
+            return Ok(Some(RewriteLock { _file: file }));
+        }
+        // Replaced while we waited: lock the file that is there now, and read that.
+    }
+}
+
+/// What one try at the lock gave.
+enum Locked {
+    Yes,
+    HeldElsewhere,
+    /// The file system (or the platform) has no locks.
+    Unsupported,
+}
+
+/// One try at an exclusive `flock` on `file`, not waiting. (`File::try_lock` does this from
+/// Rust 1.89, past this crate's minimum.)
+fn try_lock(file: &fs::File) -> io::Result<Locked> {
+    #[cfg(unix)]
+    {
+        use std::os::fd::AsRawFd;
+        // SAFETY: `flock` on a descriptor `file` owns and keeps open; it touches no memory.
+        if unsafe { libc::flock(file.as_raw_fd(), libc::LOCK_EX | libc::LOCK_NB) } == 0 {
+            return Ok(Locked::Yes);
+        }
+        let err = io::Error::last_os_error();
+        match err.raw_os_error() {
+            Some(libc::EWOULDBLOCK) => Ok(Locked::HeldElsewhere),
+            Some(libc::EINTR) => try_lock(file),
+            Some(libc::ENOLCK | libc::EOPNOTSUPP) => Ok(Locked::Unsupported),
+            _ => Err(err),
+        }
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = file;
+        Ok(Locked::Unsupported)
+    }
+}
+
+/// Whether `path` still names the file `file` has open.
+fn still_names(path: &Path, file: &fs::File) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        match (fs::metadata(path), file.metadata()) {
+            (Ok(now), Ok(locked)) => (now.dev(), now.ino()) == (locked.dev(), locked.ino()),
+            _ => false,
+        }
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = (path, file);
+        true
+    }
 }
 
 /// How many symbolic links a path may go through (as Linux allows).

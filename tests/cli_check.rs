@@ -462,7 +462,7 @@ fn human_is_the_default_and_says_what_to_change() {
     // The summary leads with what matters: each severity, broken down by rule.
     assert!(out.ends_with(
         "\nFound 2 errors: key-case, missing-field · 21 warnings: 20 untranslated-message, \
-         1 repeated-word (1 fixable with ekb fix), checked against reader d5.4.2\n"
+         1 repeated-word (1 fixable with ekb fix: key-case), checked against reader d5.4.2\n"
     ));
     assert_eq!(run.stderr, "");
 }
@@ -813,5 +813,66 @@ fn each_format_says_which_reader_it_checked_against() {
         ),
         "{}",
         human.stdout
+    );
+}
+
+#[test]
+fn the_human_report_shows_errors_before_warnings_each_in_line_order() {
+    // A warning (repeated word) on line 2, before the error (a key in the wrong case) on 3.
+    let dir = tempfile::tempdir().unwrap();
+    let kb = dir.path().join("kb.dat");
+    fs::write(
+        &kb,
+        seed_text().replacen(" This is the Roomba", " This is the the Roomba", 1),
+    )
+    .unwrap();
+    let out = run(ekb_in(dir.path()).args(["check", "--color", "never", "kb.dat"]));
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    let headings: Vec<&str> = out
+        .stdout
+        .lines()
+        .filter(|line| line.starts_with("error[") || line.starts_with("warning["))
+        .collect();
+    let first_warning = headings
+        .iter()
+        .position(|h| h.starts_with("warning["))
+        .expect("warnings");
+    assert!(first_warning > 0, "{headings:?}");
+    assert!(
+        headings[first_warning..]
+            .iter()
+            .all(|h| h.starts_with("warning[")),
+        "{headings:?}"
+    );
+}
+
+#[test]
+fn a_unicode_minus_is_explained_by_its_consequence_in_check_show_and_tour() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(
+        dir.path().join("kb.dat"),
+        seed_text().replace(" 2.0 6.3 -45", " 2.0 6.3 \u{2212}45"),
+    )
+    .unwrap();
+    let said = |args: &[&str]| run(ekb_in(dir.path()).env_remove("COLUMNS").args(args)).stdout;
+    let check = said(&["check", "--format", "concise", "kb.dat"]);
+    assert!(
+        check.contains(
+            "is not a finite decimal number: the robot's reader loses the line's whole value, \
+             so the robot will stand at (0, 0) facing 0° at location 3"
+        ),
+        "{check}"
+    );
+    let show = said(&["show", "3", "kb.dat"]);
+    assert!(
+        show.contains(
+            "0.0, 0.0, 0.0° (the line's value is invalid, so the robot's reader holds this"
+        ),
+        "{show}"
+    );
+    let tour = said(&["tour", "kb.dat"]);
+    assert!(
+        tour.contains("stands at    0, 0, 0°: the pose line's numbers are invalid"),
+        "{tour}"
     );
 }

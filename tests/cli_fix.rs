@@ -334,7 +334,7 @@ fn unsafe_fixes_wait_for_the_flag_and_the_safe_ones_do_not() {
     );
     // Locations 1 and 5 have the decimal comma.
     assert!(
-        report.contains("3 with ekb fix --unsafe-fixes)"),
+        report.contains("3 with ekb fix --unsafe-fixes: invalid-number)"),
         "{report}"
     );
     let json = ekb()
@@ -385,6 +385,50 @@ fn unsafe_fixes_wait_for_the_flag_and_the_safe_ones_do_not() {
         fixed.contains(" 6.3 -45\n") && fixed.contains(" 8.1 -90\n"),
         "{fixed}"
     );
+}
+
+#[test]
+fn a_misspelled_key_is_reported_where_the_fix_is_and_renamed_by_an_unsafe_fix() {
+    let text = seed().replace(
+        "preGestureMessageEnglish      3 ",
+        "preGestureMesageEnglish       3 ",
+    );
+    let (_dir, path) = temp_file("kb.dat", text.as_bytes());
+    let json = ekb()
+        .args(["check", "--format", "json"])
+        .arg(&path)
+        .output()
+        .unwrap();
+    let json: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    let of_location_3: Vec<&serde_json::Value> = json["diagnostics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|d| d["rule"] == "missing-field" || d["rule"] == "unknown-key")
+        .filter(|d| d["message"].as_str().unwrap().contains("location 3"))
+        .collect();
+    assert_eq!(of_location_3.len(), 2, "{of_location_3:?}");
+    let help = of_location_3[0]["help"].as_str().unwrap();
+    assert_eq!(of_location_3[0]["rule"], "missing-field");
+    assert!(
+        !help.contains("add a line"),
+        "a second line would be a duplicate: {help}"
+    );
+    assert!(
+        help.contains("with the key misspelled: correct the key there"),
+        "{help}"
+    );
+    let typo = of_location_3[1];
+    assert_eq!(typo["rule"], "unknown-key");
+    assert_eq!(typo["fix"]["applicability"], "unsafe");
+    ekb()
+        .args(["fix", "--unsafe-fixes"])
+        .arg(&path)
+        .assert()
+        .stderr(contains("1 unknown-key"));
+    // Line 34's key in the wrong case is fixed too.
+    let fixed = seed().replace("postGestureMessageenglish", "postGestureMessageEnglish");
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), fixed);
 }
 
 #[test]

@@ -345,3 +345,24 @@ proptest! {
         prop_assert_eq!(Document::parse(&text).unwrap().render(), text);
     }
 }
+
+#[test]
+fn export_allow_errors_says_by_line_what_it_leaves_out() {
+    // Line 3's key is in the wrong case: the robot does not read it, nor does the export.
+    let kb = "robotLocationDescription 1 Entrance\n\
+              preGestureMessageEnglish 1 Welcome to the lab\n\
+              postGestureMessageenglish 1 We use it for teaching\n\
+              tourSpecification 1 1\n";
+    let output = ekb()
+        .args(["export", "--allow-errors", "-"])
+        .write_stdin(kb)
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(0));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("<stdin>:3:1: error[key-case]"), "{stderr}");
+    assert!(
+        stderr.contains("ekb: exported with 2 errors: the export holds what the robot would load, and leaves out"),
+        "{stderr}"
+    );
+}

@@ -128,13 +128,16 @@ type Broken = (&'static str, fn(&str) -> String, &'static [&'static str]);
 
 #[test]
 fn a_bad_map_is_an_error_at_its_file_line_and_column() {
-    let cases: [Broken; 8] = [
+    let cases: [Broken; 10] = [
         ("obstacles.dat", |t| t.replace("3.31  5.525", "3.31  5,525"), &["obstacles.dat:5:18: the centre's y `5,525` is not a number"]),
         ("obstacles.dat", |t| format!("{t}WALL 1 2 3 4\n"), &["obstacles.dat:12:1: expected `OBSTACLE cx cy width height`"]),
         ("obstacles.dat", |t| t.replace("0.40  4.965  0.80 9.93", "0.40 4.965 0.80"), &["obstacles.dat:8:1: an obstacle has 4 numbers"]),
         ("mapGenerationConfiguration.ini", |t| t.replace("0.01", "-0.01"), &["mapGenerationConfiguration.ini:3:12: the resolution `-0.01` is not a positive number"]),
         ("mapGenerationConfiguration.ini", |t| t.replace("robotRadius 0.3\n", ""), &["no `robotRadius` line; add one, e.g. `robotRadius 0.3`"]),
-        ("mapGenerationInput.dat", |t| t.replace("6.80", "7.00"), &["mapGenerationInput.dat:4:20: ", "is 680 × 993 pixels, which at a resolution of 0.01 m is 6.80 × 9.93 m, not the 7 × 9.93 m"]),
+        ("mapGenerationInput.dat", |t| t.replace("6.80", "7.00"), &["mapGenerationInput.dat:4:20: ", "is 680 × 993 pixels, which at a resolution of 0.01 m is 6.80 × 9.93 m, not the 7.00 × 9.93 m"]),
+        // Numbers as written, not with their 300 digits.
+        ("mapGenerationInput.dat", |t| t.replace("6.80", "1e308"), &["at a resolution of 0.01 m is 6.80 × 9.93 m, not the 1e308 × 9.93 m of"]),
+        ("mapGenerationConfiguration.ini", |t| t.replace("0.01", "1e-300"), &["at a resolution of 1e-300 m is 6.80e-298 × 9.93e-298 m, not the 6.80 × 9.93 m of"]),
         ("mapGenerationInput.dat", |t| t.replace("obstacles.dat", "gone.dat"), &["gone.dat (named at ", "mapGenerationInput.dat:3:14): no such file"]),
         ("environmentMap.png", |_| "not a picture".to_string(), &["environmentMap.png: not a PNG image that ekb can read"]),
     ];
@@ -170,6 +173,63 @@ fn a_map_image_needs_its_size() {
         "{}",
         run.stderr
     );
+}
+
+/// A PNG whose header declares `width` × `height` grey pixels, one bit each, with a scrap of
+/// image data: what a decompression bomb looks like before its data is inflated.
+fn declared_png(width: u32, height: u32) -> Vec<u8> {
+    fn crc32(bytes: &[u8]) -> u32 {
+        let mut crc = !0u32;
+        for &byte in bytes {
+            crc ^= u32::from(byte);
+            for _ in 0..8 {
+                crc = (crc >> 1) ^ (0xEDB8_8320 & (crc & 1).wrapping_neg());
+            }
+        }
+        !crc
+    }
+    fn chunk(png: &mut Vec<u8>, kind: &[u8], data: &[u8]) {
+        png.extend_from_slice(&(data.len() as u32).to_be_bytes());
+        let start = png.len();
+        png.extend_from_slice(kind);
+        png.extend_from_slice(data);
+        let crc = crc32(&png[start..]);
+        png.extend_from_slice(&crc.to_be_bytes());
+    }
+    let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
+    let mut header = Vec::new();
+    header.extend_from_slice(&width.to_be_bytes());
+    header.extend_from_slice(&height.to_be_bytes());
+    header.extend_from_slice(&[1, 0, 0, 0, 0]);
+    chunk(&mut png, b"IHDR", &header);
+    // zlib of nothing much: the header alone must be enough to refuse.
+    chunk(
+        &mut png,
+        b"IDAT",
+        &[0x78, 0x9c, 0x03, 0x00, 0x00, 0x00, 0x00, 0x01],
+    );
+    chunk(&mut png, b"IEND", &[]);
+    png
+}
+
+#[test]
+fn an_image_declaring_too_many_pixels_is_refused_before_decoding() {
+    let dir = tempfile::tempdir().unwrap();
+    let bomb = dir.path().join("bomb.png");
+    std::fs::write(&bomb, declared_png(40_000, 40_000)).unwrap();
+    let bomb = bomb.to_str().unwrap();
+    for command in ["map", "check"] {
+        let run = ekb(&[command, SEED, "--map-image", bomb, "--map-size", "10", "10"]);
+        assert_eq!(run.code, 2, "{}", run.stderr);
+        assert!(
+            run.stderr.contains(
+                "the image declares 40000 × 40000 pixels, past ekb's cap of 16777216 pixels \
+                 (4096 × 4096)"
+            ),
+            "{}",
+            run.stderr
+        );
+    }
 }
 
 // ---------------------------------------------------------------------------------------

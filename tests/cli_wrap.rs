@@ -91,3 +91,43 @@ fn wraps_at_the_terminals_width() {
     assert!(lines.len() > 8, "{report}");
     assert!((60..=70).contains(&widest(&lines)), "{report}");
 }
+
+#[test]
+fn locations_never_part_a_language_from_its_mark() {
+    let dir = setup();
+    for columns in ["60", "80", "100"] {
+        let output = ekb(dir.path())
+            .env("COLUMNS", columns)
+            .args(["locations", "kb.dat"])
+            .output()
+            .unwrap();
+        let table = String::from_utf8(output.stdout).unwrap();
+        for line in table.lines() {
+            let cells: Vec<&str> = line.split(['│', '┆']).map(str::trim).collect();
+            assert!(
+                !cells.iter().any(|cell| ["EN", "ZU", "RW"]
+                    .iter()
+                    .any(|code| cell.ends_with(&format!(" {code}")) || cell == code)),
+                "a code parted from its mark at {columns} columns:\n{table}"
+            );
+        }
+    }
+}
+
+#[test]
+fn show_wraps_its_title_and_findings_at_columns() {
+    let dir = setup();
+    let long = FILE.replace("Entrance", &"Entrance hall ".repeat(12));
+    std::fs::write(dir.path().join("kb.dat"), long).unwrap();
+    let output = ekb(dir.path())
+        .env("COLUMNS", "60")
+        .args(["show", "1", "kb.dat"])
+        .output()
+        .unwrap();
+    let shown = String::from_utf8(output.stdout).unwrap();
+    assert!(shown.contains("\nFindings at this location"), "{shown}");
+    assert!(
+        shown.lines().all(|line| line.chars().count() <= 60),
+        "a line past 60 columns:\n{shown}"
+    );
+}

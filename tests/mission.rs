@@ -150,7 +150,8 @@ rule_tests! {
         (MISSION, 5, 43), (MISSION, 8, 26), (MISSION, 11, 27), (MISSION, 12, 27), (MISSION, 13, 22)
     ];
     mission_bad_include: "mission-bad-include" => [
-        (MISSION, 4, 4), (MISSION, 5, 18), (MISSION, 6, 40), (MISSION, 7, 18), (MISSION, 8, 18)
+        (MISSION, 4, 4), (MISSION, 5, 18), (MISSION, 6, 40), (MISSION, 7, 18), (MISSION, 8, 18),
+        (MISSION, 9, 18)
     ];
     mission_unknown_tree: "mission-unknown-tree" => [(MISSION, 2, 46), (MISSION, 5, 20), (MISSION, 6, 8)];
     mission_missing_format: "mission-missing-format" => [(MISSION, 2, 2)];
@@ -608,6 +609,40 @@ fn the_culture_reader_of_2026_02_holds_lines_of_up_to_299_bytes() {
     assert_eq!(too_long(None), [(2, 200)]);
     assert_eq!(too_long(Some(ekb::reader::Reader::V2025_06)), [(2, 200)]);
     assert_eq!(too_long(Some(ekb::reader::Reader::V2026_02)), []);
+}
+
+#[test]
+fn an_untranslated_stop_is_named_by_its_location_and_its_place_on_the_tour() {
+    // The tour is `2 2 1` (two stops): location 1 is its second stop.
+    let bad = fixtures().join("rules/mission-untranslated-tour/bad");
+    let all = check_set(&set_up(Some(&bad)));
+    let first = all
+        .iter()
+        .find(|f| f.rule == "mission-untranslated-tour")
+        .expect("a finding");
+    assert_eq!((first.file.as_str(), first.line), (KB, 6));
+    assert!(
+        first
+            .message
+            .contains("the message of location 1 (stop 2 of the tour) before the gesture"),
+        "{}",
+        first.message
+    );
+}
+
+#[test]
+fn an_empty_include_path_is_said_to_be_empty() {
+    let bad = fixtures().join("rules/mission-bad-include/bad");
+    let all = check_set(&set_up(Some(&bad)));
+    let empty: Vec<&Finding> = all.iter().filter(|f| f.line == 9).collect();
+    assert_eq!(empty.len(), 1, "{}", show(&all));
+    assert!(
+        empty[0]
+            .message
+            .starts_with("an <include> whose path is empty: BehaviorTree.CPP stops loading"),
+        "{}",
+        empty[0].message
+    );
 }
 
 #[test]

@@ -92,9 +92,14 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     // the exit is 2 then. If none can be read, there is no report.
     let mut unreadable = false;
     let mut read = Vec::with_capacity(paths.len());
+    // `--add-ignore` holds each file's lock from reading it to writing it back.
+    let mut locks = Vec::new();
     for path in &paths {
         let plan = context.read_options(path).and_then(|options| {
             let rules = context.rules_for(path, &choice)?;
+            if args.add_ignore {
+                locks.push(rewrite::lock(path, Mode::Write)?);
+            }
             Ok((path.clone(), options, rules, context.read_to_report(path)?))
         });
         match plan {

@@ -88,6 +88,18 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         return report_to_stderr(checked.errors_only(), &why, context);
     }
     write_output(args.output.as_deref(), &ExportView::new(&checked.kb))?;
+    if checked.has_errors() {
+        // What the robot would not load is not in the export, and `import` of it would not
+        // write it back (a line whose key is in the wrong case, say): it is said, by line.
+        let why = format!(
+            "ekb: exported with {}: the export holds what the robot would load, and leaves \
+             out what the lines above say that the robot would not read; `ekb import` of it \
+             would not write them back (correct them first: `ekb fix` mends a key in the \
+             wrong case)",
+            plural(checked.summary().errors, "error")
+        );
+        write_errors(checked.errors_only(), &why, context)?;
+    }
     Ok(Exit::Clean)
 }
 
@@ -156,6 +168,12 @@ fn export_as_loaded(args: &Args, context: &Context, mut checked: Checked<'_>) ->
 
 /// Shows `checked`'s findings on standard error, concisely, then `why`: exit 1.
 fn report_to_stderr(checked: Checked<'_>, why: &str, context: &Context) -> CommandResult {
+    write_errors(checked, why, context)?;
+    Ok(Exit::Findings)
+}
+
+/// Writes the findings of `checked`, then `why`, to standard error.
+fn write_errors(checked: Checked<'_>, why: &str, context: &Context) -> Result<(), CommandError> {
     let summary = checked.summary();
     let mut stderr = streams::stderr();
     let render_options = RenderOptions {
@@ -171,7 +189,7 @@ fn report_to_stderr(checked: Checked<'_>, why: &str, context: &Context) -> Comma
         &render_options,
     )?;
     writeln!(stderr, "{why}")?;
-    Ok(Exit::Findings)
+    Ok(())
 }
 
 fn plural(count: usize, word: &str) -> String {

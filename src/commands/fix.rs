@@ -71,6 +71,8 @@ fn fix_file(
     options: &Options,
     choice: &fixing::Choice,
 ) -> Result<Exit, CommandError> {
+    let mode = if args.diff { Mode::Diff } else { Mode::Write };
+    let _lock = rewrite::lock(path, mode)?;
     let read = context.read(path)?;
     // Read as Latin-1, the file is UTF-8 text to fix further; `read` is what is replaced.
     let converted = match args.unsafe_fixes && !read.invalid_utf8().is_empty() {
@@ -82,7 +84,6 @@ fn fix_file(
     if let Some(target) = args.dialect {
         refuse_inexpressible(source, target)?;
     }
-    let mode = if args.diff { Mode::Diff } else { Mode::Write };
     let style = DiffStyle {
         color: context.color_stdout(),
     };

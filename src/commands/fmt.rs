@@ -51,6 +51,7 @@ fn format_file(
     mode: Mode,
     style: DiffStyle,
 ) -> Result<bool, CommandError> {
+    let _lock = rewrite::lock(path, mode)?;
     let source = context.read(path)?;
     rewrite::ensure_rewritable(&source)?;
     let cannot = |reason: String| {

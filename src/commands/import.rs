@@ -134,6 +134,8 @@ fn import_po(args: &Args, po_path: &Path, context: &Context) -> CommandResult {
         CommandError::Failed(format!("{po_name}:{line}: {}", escape(message)))
     };
     let path = context.file_to_rewrite(args.input.as_deref())?;
+    let mode = if args.diff { Mode::Diff } else { Mode::Write };
+    let _lock = rewrite::lock(&path, mode)?;
     let options = context.read_options(&path)?;
     let source = context.read(&path)?;
     rewrite::ensure_rewritable(&source)?;
@@ -161,7 +163,6 @@ fn import_po(args: &Args, po_path: &Path, context: &Context) -> CommandResult {
         }
         changes = kept;
     };
-    let mode = if args.diff { Mode::Diff } else { Mode::Write };
     let style = DiffStyle {
         color: context.color_stdout(),
     };

@@ -129,7 +129,9 @@ fn write_table(checked: &Checked<'_>, loaded: Loaded<'_>, out: &mut impl Write) 
         }
         rows
     });
-    let table = table::Rows::join(parts).unwrap_or_else(|| table::Rows::new(&header));
+    let mut table = table::Rows::join(parts).unwrap_or_else(|| table::Rows::new(&header));
+    // A narrow table wraps other columns, never the marks (`RW` on one line, `~` below).
+    table.keep_unbroken(header.len() - 2);
     // The rows hold what the table shows: what the reader holds goes before it is drawn.
     drop(loaded);
     table.write(out)?;

@@ -145,9 +145,26 @@ impl Read {
                 crate::stderr_line!("ekb: warning: {}", escape(warning));
             }
         }
-        let read = |path: &Option<PathBuf>| path.as_deref().map(|p| context.read(p)).transpose();
+        // A file found through the configuration folder that cannot be read: where it was
+        // looked for, and the flag that names it instead.
+        let read_one = |path: &Path, named: bool, flag: &str| {
+            context.read(path).map_err(|error| {
+                match paths.not_found_hint(flag).filter(|_| !named) {
+                    Some(hint) => CommandError::Failed(format!("{error}; {hint}")),
+                    None => error,
+                }
+            })
+        };
+        let read = |path: &Option<PathBuf>, named: &Option<PathBuf>, flag: &str| {
+            path.as_deref()
+                .map(|p| read_one(p, named.is_some(), flag))
+                .transpose()
+        };
         let kb = match &paths.kb {
-            Some(path) => Some((context.read(path)?, context.read_options(path)?)),
+            Some(path) => Some((
+                read_one(path, files.kb.is_some(), "--kb")?,
+                context.read_options(path)?,
+            )),
             None => None,
         };
         // The culture reader is the environment reader's robot's: named by the settings
@@ -159,9 +176,13 @@ impl Read {
         };
         Ok(Read {
             reader,
-            mission: read(&paths.mission)?,
-            culture_kb: read(&paths.culture_kb)?,
-            culture_types: read(&paths.culture_types)?,
+            mission: read(&paths.mission, &files.mission, "--mission")?,
+            culture_kb: read(&paths.culture_kb, &files.culture_kb, "--culture-kb")?,
+            culture_types: read(
+                &paths.culture_types,
+                &files.culture_types,
+                "--culture-types",
+            )?,
             kb,
             paths,
         })

@@ -41,6 +41,8 @@ pub struct Args {
 pub fn run(args: &Args, context: &Context) -> CommandResult {
     let edit = parse(args)?;
     let path = context.file_to_rewrite(args.file.as_deref())?;
+    let mode = if args.diff { Mode::Diff } else { Mode::Write };
+    let _lock = rewrite::lock(&path, mode)?;
     let options = context.read_options(&path)?;
     let source = context.read(&path)?;
     rewrite::ensure_rewritable(&source)?;
@@ -65,7 +67,6 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         );
         return Ok(Exit::Findings);
     }
-    let mode = if args.diff { Mode::Diff } else { Mode::Write };
     let style = DiffStyle {
         color: context.color_stdout(),
     };
@@ -104,7 +105,7 @@ fn parse(args: &Args) -> Result<ValueEdit, CommandError> {
         }
         Some(key) => key,
         None => {
-            let hint = match crate::rules::structure::unknown_key::nearest(&args.key) {
+            let hint = match Key::nearest_to(&args.key) {
                 Some(near) => format!("did you mean `{}`?", near.name()),
                 None => "`ekb explain unknown-key` lists the keys".to_string(),
             };

@@ -70,12 +70,18 @@ fn render(checked: &Checked<'_>, location: &Location<'_>) -> String {
         || "(no description)".to_string(),
         |d| present::text(d.value).into_owned(),
     );
+    // Wrapped as the table is fitted: to `COLUMNS`, the terminal, or 100 columns.
+    let width = crate::render::stdout_width();
+    let wrap = |text: String| present::wrap::wrap(&text, width, "  ");
     let mut out = format!(
-        "Location {}: {title}\n{}, {}; {}\nAs reader {} loads it.\n\n",
-        location.id,
-        escape(checked.source.name()),
-        present::line_range(lines.range(location)),
-        tour_sentence(checked, location.id),
+        "{}\n{}\nAs reader {} loads it.\n\n",
+        wrap(format!("Location {}: {title}", location.id)),
+        wrap(format!(
+            "{}, {}; {}",
+            escape(checked.source.name()),
+            present::line_range(lines.range(location)),
+            tour_sentence(checked, location.id)
+        )),
         checked.reader,
     );
     let text = checked.source.text().as_bytes();
@@ -96,13 +102,15 @@ fn render(checked: &Checked<'_>, location: &Location<'_>) -> String {
     if !findings.is_empty() {
         out.push_str("\nFindings at this location (`ekb check`):\n");
         for diagnostic in findings {
-            out.push_str(&format!(
-                "  line {}: {}[{}] {}\n",
+            let line = format!(
+                "  line {}: {}[{}] {}",
                 lines.of(diagnostic.span),
                 diagnostic.severity().name(),
                 diagnostic.rule.name,
                 escape(&diagnostic.message)
-            ));
+            );
+            out.push_str(&crate::present::wrap::wrap(&line, width, "      "));
+            out.push('\n');
         }
     }
     out

@@ -300,6 +300,10 @@ impl<'a> Stops<'a> {
                 &held(Key::RobotLocationPose),
                 checked.reader,
             ),
+            // A pose line whose numbers the reader cannot read is lost as a missing one is.
+            None if location.is_some_and(|l| l.has_line(Key::RobotLocation) || l.has_line(Key::RobotLocationPose)) => {
+                "0, 0, 0°: the pose line's numbers are invalid, so the robot's reader does not read the pose (`ekb check` shows the line)".to_string()
+            }
             None => "MISSING pose: the robot's reader leaves it at 0, 0, 0°".to_string(),
         };
         let target = location.and_then(|l| l.gesture_target).map(|t| t.value);

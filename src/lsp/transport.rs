@@ -5,6 +5,11 @@
 //! sends one (or a person typing into `ekb lsp`) would lose its server. This reader
 //! answers each malformed message with the JSON-RPC error it deserves (a parse error, an
 //! invalid request, `"id": null` when the id cannot be read) and reads on.
+//!
+//! Both queues are bounded: a client that sends requests and never reads the answers
+//! fills the outgoing queue, the server then waits to send, stops taking requests, the
+//! incoming queue fills and the reader stops reading, so the client's own writes wait.
+//! The server's memory stays what the queues hold, however long the client stalls.
 
 use std::io::{self, BufRead, Read, Write};
 use std::thread;
@@ -18,6 +23,13 @@ const MAX_HEADER_LINE: u64 = 8 * 1024;
 
 /// The largest message read (a 512 MiB knowledge base, JSON-escaped, fits).
 const MAX_CONTENT_LENGTH: usize = 1 << 30;
+
+/// How many messages wait to be written at most: an answer can be large (the symbols of a
+/// file of 3,000 locations), so few.
+const OUTGOING_CAPACITY: usize = 16;
+
+/// How many messages read wait for the server at most.
+const INCOMING_CAPACITY: usize = 256;
 
 /// What the reader passes on.
 #[derive(Debug)]
@@ -59,8 +71,8 @@ impl Transport {
         input: impl BufRead + Send + 'static,
         output: impl Write + Send + 'static,
     ) -> Transport {
-        let (incoming_sender, incoming) = crossbeam_channel::unbounded();
-        let (outgoing, outgoing_receiver) = crossbeam_channel::unbounded();
+        let (incoming_sender, incoming) = crossbeam_channel::bounded(INCOMING_CAPACITY);
+        let (outgoing, outgoing_receiver) = crossbeam_channel::bounded(OUTGOING_CAPACITY);
         thread::Builder::new()
             .name("ekb-lsp-reader".into())
             .spawn(move || read_messages(input, &incoming_sender))
@@ -272,6 +284,39 @@ mod tests {
                 frame => frames.push(frame),
             }
         }
+    }
+
+    /// An output whose client never reads: every write waits until the test ends.
+    struct Stalled(crossbeam_channel::Receiver<()>);
+
+    impl Write for Stalled {
+        fn write(&mut self, _: &[u8]) -> io::Result<usize> {
+            let _ = self.0.recv();
+            Err(io::ErrorKind::BrokenPipe.into())
+        }
+
+        fn flush(&mut self) -> io::Result<()> {
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn answers_to_a_client_that_never_reads_wait_in_a_bounded_queue() {
+        let (release, stalled) = crossbeam_channel::bounded(0);
+        let transport = Transport::new(io::empty(), Stalled(stalled));
+        let answer = || {
+            Outgoing::Message(Message::Response(Response::new_ok(
+                RequestId::from(1),
+                "x".repeat(1000),
+            )))
+        };
+        // The writer holds one answer, blocked; the queue holds the rest, then is full.
+        let queued = (0..10_000)
+            .position(|_| transport.outgoing.try_send(answer()).is_err())
+            .expect("the queue fills");
+        assert!(queued <= OUTGOING_CAPACITY + 1, "{queued} answers queued");
+        drop(release);
+        let _ = transport.finish();
     }
 
     #[test]

@@ -120,7 +120,12 @@ impl LabMap {
         let image = match input.value("environmentMapFile") {
             Some(name) => {
                 let image = Occupancy::read(&input.resolve(name), Some(&input.place(name)))?;
-                check_image_size(&image, resolution, (width, height), &input, name)?;
+                let written = Written {
+                    resolution: (resolution, resolution_value.text),
+                    width: (width, width_value.text),
+                    height: (height, height_value.text),
+                };
+                check_image_size(&image, &written, &input, name)?;
                 Some(image)
             }
             None => None,
@@ -246,14 +251,24 @@ fn read_obstacles(file: &MapFile) -> Result<Vec<Obstacle>, MapError> {
         .collect()
 }
 
-/// Fails unless the image at `resolution` metres per pixel is the map's size, to a pixel.
+/// The map's resolution and size: each number, and its text as the file writes it (which a
+/// message quotes: `1e308` printed as a number has 309 digits).
+struct Written<'a> {
+    resolution: (f64, &'a str),
+    width: (f64, &'a str),
+    height: (f64, &'a str),
+}
+
+/// Fails unless the image at the resolution's metres per pixel is the map's size, to a
+/// pixel.
 fn check_image_size(
     image: &Occupancy,
-    resolution: f64,
-    (width, height): (f64, f64),
+    written: &Written<'_>,
     input: &MapFile,
     named: Located<'_>,
 ) -> Result<(), MapError> {
+    let (resolution, resolution_text) = written.resolution;
+    let ((width, width_text), (height, height_text)) = (written.width, written.height);
     let (image_width, image_height) = (
         image.width as f64 * resolution,
         image.height as f64 * resolution,
@@ -264,10 +279,22 @@ fn check_image_size(
     Err(input.error_at(
         named,
         format!(
-            "{} is {} × {} pixels, which at a resolution of {resolution} m is {image_width:.2} × {image_height:.2} m, not the {width} × {height} m of mapWidth and mapHeight",
+            "{} is {} × {} pixels, which at a resolution of {resolution_text} m is {} × {} m, not the {width_text} × {height_text} m of mapWidth and mapHeight",
             image.path.display(),
             image.width,
             image.height,
+            metres(image_width),
+            metres(image_height),
         ),
     ))
+}
+
+/// A computed length for a message: to the centimetre, or in scientific notation when
+/// that would print many digits or none.
+fn metres(length: f64) -> String {
+    match length.abs() {
+        0.0 => "0".to_string(),
+        size if (0.01..1e6).contains(&size) => format!("{length:.2}"),
+        _ => format!("{length:.2e}"),
+    }
 }

@@ -20,6 +20,11 @@ pub const OCCUPIED_BELOW: u8 = 64;
 /// The most bytes decoding an image may use (a 680 × 993 map needs under 1 MB).
 const DECODE_LIMIT_BYTES: usize = 256 << 20;
 
+/// The most pixels a map image may have: 4096 × 4096, 24 times the lab's 680 × 993 (a
+/// 200 × 200 m floor at 5 cm a pixel). Checked from the header, before anything is
+/// allocated: a small PNG can declare 40,000 × 40,000 pixels (1.6 GB once decoded).
+pub const MAX_PIXELS: u64 = 4096 * 4096;
+
 /// An occupancy image, as grey levels (composited on white where it is transparent).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Occupancy {
@@ -44,11 +49,17 @@ impl Occupancy {
     /// Reads and decodes the PNG at `path`; `named_by` says which file and line named it.
     pub fn read(path: &Path, named_by: Option<&str>) -> Result<Occupancy, MapError> {
         let png = std::fs::read(path).map_err(|e| MapError::cannot_read(path, &e, named_by))?;
-        let (width, height, grey) = decode(&png).map_err(|reason| {
-            MapError(format!(
+        let (width, height, grey) = decode(&png).map_err(|refusal| match refusal {
+            Refusal::Unreadable(reason) => MapError(format!(
                 "{}: not a PNG image that ekb can read ({reason}); the map must be a PNG (white free, black occupied)",
                 path.display()
-            ))
+            )),
+            Refusal::TooLarge { width, height } => MapError(format!(
+                "{}: the image declares {width} × {height} pixels, past ekb's cap of {MAX_PIXELS} \
+                 pixels (4096 × 4096) for a map image; nothing was decoded: scale the map down \
+                 (the lab's is 680 × 993)",
+                path.display()
+            )),
         })?;
         Ok(Occupancy {
             path: path.to_path_buf(),
@@ -112,19 +123,37 @@ fn axis_distance(at: f64, index: usize) -> f64 {
     (start - at).max(at - (start + 1.0)).max(0.0)
 }
 
+/// Why an image was not decoded.
+#[derive(Debug)]
+enum Refusal {
+    Unreadable(String),
+    /// More than [`MAX_PIXELS`], or more decoded bytes than [`DECODE_LIMIT_BYTES`].
+    TooLarge {
+        width: u32,
+        height: u32,
+    },
+}
+
 /// The width, height and grey levels of a PNG image.
-fn decode(png: &[u8]) -> Result<(usize, usize, Vec<u8>), String> {
+fn decode(png: &[u8]) -> Result<(usize, usize, Vec<u8>), Refusal> {
+    let unreadable = |e: png::DecodingError| Refusal::Unreadable(e.to_string());
     let limits = png::Limits {
         bytes: DECODE_LIMIT_BYTES,
     };
     let mut decoder = png::Decoder::new_with_limits(std::io::Cursor::new(png), limits);
     decoder.set_transformations(png::Transformations::normalize_to_color8());
-    let mut reader = decoder.read_info().map_err(|e| e.to_string())?;
-    let size = reader
-        .output_buffer_size()
-        .ok_or("the image is too large")?;
+    let mut reader = decoder.read_info().map_err(unreadable)?;
+    let (width, height) = (reader.info().width, reader.info().height);
+    let too_large = Refusal::TooLarge { width, height };
+    if u64::from(width) * u64::from(height) > MAX_PIXELS {
+        return Err(too_large);
+    }
+    let size = match reader.output_buffer_size() {
+        Some(size) if size <= DECODE_LIMIT_BYTES => size,
+        _ => return Err(too_large),
+    };
     let mut buffer = vec![0; size];
-    let frame = reader.next_frame(&mut buffer).map_err(|e| e.to_string())?;
+    let frame = reader.next_frame(&mut buffer).map_err(unreadable)?;
     let (width, height) = (frame.width as usize, frame.height as usize);
     let channels = frame.color_type.samples();
     let bytes = &buffer[..frame.buffer_size()];

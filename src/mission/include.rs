@@ -19,6 +19,8 @@ use crate::syntax::Span;
 pub enum Problem {
     /// No `path` attribute.
     NoPath,
+    /// A `path` attribute with nothing in it (or only blanks).
+    EmptyPath,
     /// A `ros_pkg` attribute with a relative path: only a BehaviorTree.CPP built for ROS 2
     /// resolves it, and the robot runs ROS 1.
     RosPackage { package: String },
@@ -82,6 +84,9 @@ fn follow(
     included: &mut Included,
 ) -> Result<(), Problem> {
     let path = include.value("path").ok_or(Problem::NoPath)?;
+    if path.trim().is_empty() {
+        return Err(Problem::EmptyPath);
+    }
     let path = Path::new(path);
     if let Some(package) = include.value("ros_pkg").filter(|_| path.is_relative()) {
         return Err(Problem::RosPackage {

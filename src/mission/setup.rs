@@ -54,8 +54,8 @@ impl MissionPaths {
             let robot = RobotIni::BehaviorController;
             let values = robot.values(&text);
             let get = |key| robot.value(&values, key);
-            paths.mission =
-                get("scenarioSpecification").map(|scenario| data.join(format!("{scenario}.xml")));
+            paths.mission = get("scenarioSpecification")
+                .map(|scenario| in_data_or_beside(dir, &data, &format!("{scenario}.xml")));
             paths.asr_enabled = get("asrEnabled").map(|v| v == "true");
             paths
                 .warnings
@@ -65,8 +65,8 @@ impl MissionPaths {
             let robot = RobotIni::Culture;
             let values = robot.values(&text);
             let get = |key| robot.value(&values, key);
-            paths.culture_kb = get("knowledgeBase").map(|name| data.join(name));
-            paths.culture_types = get("valueTypes").map(|name| data.join(name));
+            paths.culture_kb = get("knowledgeBase").map(|name| in_data_or_beside(dir, &data, name));
+            paths.culture_types = get("valueTypes").map(|name| in_data_or_beside(dir, &data, name));
             paths.warnings.extend(robot.warnings(&text, CULTURE_INI));
         }
         let environment = dir.join(ENVIRONMENT_INI);
@@ -91,6 +91,19 @@ impl MissionPaths {
         }
     }
 
+    /// What to add to the error of a file these paths name that cannot be read: where it
+    /// was looked for, and the flag that names it instead (`None` if it was not found
+    /// through a configuration folder).
+    pub fn not_found_hint(&self, flag: &str) -> Option<String> {
+        let dir = self.config_dir.as_ref()?;
+        Some(format!(
+            "the configuration in {} names it, and ekb looked for it in the robot's data \
+             folder beside that folder and in the folder itself; if the files are laid out \
+             otherwise, name them: --mission, --culture-kb, --culture-types, --kb (here {flag})",
+            dir.display()
+        ))
+    }
+
     /// Why a file a command needs is not known, and what to give for it.
     pub fn missing(&self, what: &str, flag: &str, ini: &str) -> String {
         match &self.config_dir {
@@ -100,6 +113,17 @@ impl MissionPaths {
             ),
             None => format!("no {what}: give {flag}, or --config-dir with the robot's {ini}"),
         }
+    }
+}
+
+/// A file a configuration in `dir` names: in the robot's `data` folder beside `dir`, or,
+/// if it is not there but in `dir` itself (a copy of the files in one folder), there.
+fn in_data_or_beside(dir: &Path, data: &Path, name: &str) -> PathBuf {
+    let in_data = data.join(name);
+    let beside = dir.join(name);
+    match !in_data.exists() && beside.is_file() {
+        true => beside,
+        false => in_data,
     }
 }
 
@@ -259,5 +283,15 @@ mod tests {
             "{error}"
         );
         assert!(MissionPaths::from_config_dir(&data).is_err());
+        let hint = paths.not_found_hint("--mission").unwrap();
+        assert!(
+            hint.contains("name them: --mission, --culture-kb"),
+            "{hint}"
+        );
+        // Files kept beside the configuration, with no data folder, are found there.
+        std::fs::write(config.join("labTour.xml"), "<root/>").unwrap();
+        let paths = MissionPaths::from_config_dir(&config).unwrap();
+        assert_eq!(paths.mission, Some(config.join("labTour.xml")));
+        assert_eq!(paths.culture_kb, Some(data.join("c.dat")));
     }
 }

@@ -12,6 +12,11 @@ pub const MAX_DEPTH: usize = 200;
 /// bounded on any input.
 const MAX_NODES: u32 = 4_000_000;
 
+/// An element with more attributes than this is refused before the XML is parsed:
+/// roxmltree compares each attribute with those before it (a duplicate is an error), so
+/// 200,000 attributes on one element took minutes. A BehaviorTree.CPP node has a handful.
+pub const MAX_ATTRIBUTES: usize = 256;
+
 /// An attribute as written, its value unescaped.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Attribute {
@@ -71,6 +76,15 @@ const MAX_BARE_AMPERSANDS: usize = 16;
 /// document: each such `&` is escaped and the document parsed again, and every place
 /// mapped back to `text`.
 pub fn parse(text: &str) -> Result<Element, XmlError> {
+    if let Some(name) = first_with_too_many_attributes(text) {
+        return Err(XmlError {
+            message: format!(
+                "this element has more than {MAX_ATTRIBUTES} attributes: no behaviour-tree \
+                 node has, and ekb does not read further"
+            ),
+            span: name,
+        });
+    }
     let mut patched = std::borrow::Cow::Borrowed(text);
     // Where each escaped `&` is in `patched`, in increasing order.
     let mut escaped: Vec<usize> = Vec::new();
@@ -94,6 +108,58 @@ pub fn parse(text: &str) -> Result<Element, XmlError> {
         patched.to_mut().insert_str(bare + 1, "amp;");
         escaped.push(bare);
     }
+}
+
+/// The name of the first start tag with more than [`MAX_ATTRIBUTES`] attributes, in one
+/// pass over `text`: an attribute is counted by its `=` outside quotes. Comments, CDATA,
+/// processing instructions and declarations (`<!DOCTYPE`) are skipped, end tags are not
+/// counted; what is not well-formed is left to the parser to report.
+fn first_with_too_many_attributes(text: &str) -> Option<Span> {
+    let bytes = text.as_bytes();
+    let mut at = 0;
+    while let Some(found) = memchr::memchr(b'<', &bytes[at..]) {
+        let open = at + found;
+        let rest = &text[open..];
+        let skip_to = |end: &str| rest.find(end).map_or(bytes.len(), |i| open + i + end.len());
+        at = if rest.starts_with("<!--") {
+            skip_to("-->")
+        } else if rest.starts_with("<![CDATA[") {
+            skip_to("]]>")
+        } else if rest.starts_with("<?") {
+            skip_to("?>")
+        } else if rest.starts_with("<!") || rest.starts_with("</") {
+            open + 2
+        } else {
+            let (end, attributes) = start_tag_attributes(bytes, open + 1);
+            if attributes > MAX_ATTRIBUTES {
+                let name_end = rest[1..]
+                    .find(|c: char| c.is_whitespace() || c == '>' || c == '/')
+                    .map_or(bytes.len(), |i| open + 1 + i);
+                return Some(Span::new(open + 1, name_end));
+            }
+            end
+        };
+    }
+    None
+}
+
+/// Where the start tag from `from` ends (after its `>`) and how many `=` it has outside
+/// quotes.
+fn start_tag_attributes(bytes: &[u8], from: usize) -> (usize, usize) {
+    let (mut count, mut quote) = (0, None);
+    for (i, &byte) in bytes.iter().enumerate().skip(from) {
+        match (quote, byte) {
+            (Some(open), _) if byte == open => quote = None,
+            (Some(_), _) => {}
+            (None, b'"' | b'\'') => quote = Some(byte),
+            (None, b'=') => count += 1,
+            (None, b'>') => return (i + 1, count),
+            // A `<` outside quotes: not a start tag that ends; the parser says so.
+            (None, b'<') => return (i, count),
+            _ => {}
+        }
+    }
+    (bytes.len(), count)
 }
 
 /// The offset in the original text of `at` in the text with `escaped` escaped.
@@ -282,6 +348,31 @@ mod tests {
         let text = format!("{}{}", "<a>".repeat(depth), "</a>".repeat(depth));
         let error = parse(&text).unwrap_err();
         assert!(error.message.contains("nested"), "{}", error.message);
+    }
+
+    #[test]
+    fn an_element_with_too_many_attributes_is_refused_before_parsing() {
+        let element = |n: usize| {
+            let attributes: String = (0..n).map(|i| format!(" a{i}='x=y'")).collect();
+            format!(
+                "<root><!-- <a {} --><Sequence{attributes}/></root>",
+                "b=1 ".repeat(300)
+            )
+        };
+        assert!(parse(&element(MAX_ATTRIBUTES)).is_ok());
+        for count in [MAX_ATTRIBUTES + 1, 200_000] {
+            let text = element(count);
+            let error = parse(&text).unwrap_err();
+            assert!(
+                error.message.contains("more than 256 attributes"),
+                "{}",
+                error.message
+            );
+            assert_eq!(
+                &text[error.span.start as usize..error.span.end as usize],
+                "Sequence"
+            );
+        }
     }
 
     #[test]

@@ -22,6 +22,15 @@ use crate::render::escape::escape;
 use crate::source::LineStart;
 use crate::syntax::{self, Body, Line, Span};
 
+/// The key an unknown key is likely a typo of. Only a word of letters of about a key's
+/// length is compared (an edit distance to every key): a binary file, or a million lines
+/// of `k 1 v`, costs nothing.
+fn likely_typo(written: &str) -> Option<Key> {
+    let plausible =
+        (7..=36).contains(&written.len()) && written.bytes().all(|byte| byte.is_ascii_alphabetic());
+    plausible.then(|| Key::nearest_to(written)).flatten()
+}
+
 /// How to read a file.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Options {
@@ -222,6 +231,9 @@ struct Builder<'a> {
     /// the locations when the whole file is read, since such a line may come before any
     /// other of its location.
     miscased: IdMap<u16>,
+    /// The keys written misspelled (an unknown key near a known one), by location id, as
+    /// [`Location::misspelled`].
+    misspelled: IdMap<u16>,
 }
 
 impl<'a> Builder<'a> {
@@ -263,6 +275,7 @@ impl<'a> Builder<'a> {
             },
             rejected: HashMap::new(),
             miscased: IdMap::default(),
+            misspelled: IdMap::default(),
         };
         let mut next_noted = super::next_noted_line_start(text.as_bytes(), range.start);
         for line in syntax::lines_from(&text[..range.end], range.start) {
@@ -309,6 +322,9 @@ impl<'a> Builder<'a> {
         self.facts.append(later.facts);
         for (id, keys) in later.miscased {
             *self.miscased.entry(id).or_default() |= keys;
+        }
+        for (id, keys) in later.misspelled {
+            *self.misspelled.entry(id).or_default() |= keys;
         }
         true
     }
@@ -433,7 +449,14 @@ impl<'a> Builder<'a> {
                     }
                     out.key_case(key_span, key_text, key, id)
                 }
-                None => out.unknown_key(key_span, key_text, id),
+                None => {
+                    let meant = id.zip(likely_typo(key_text));
+                    if let Some((id, key)) = meant.filter(|&(_, key)| key != Key::TourSpecification)
+                    {
+                        *self.misspelled.entry(id).or_default() |= 1 << key.order();
+                    }
+                    out.unknown_key(key_span, key_text, id)
+                }
             }
             return;
         };
@@ -653,9 +676,10 @@ impl<'a> Builder<'a> {
         };
         let mut runs = self.runs;
         runs.push(self.locations);
-        if !self.miscased.is_empty() {
+        if !self.miscased.is_empty() || !self.misspelled.is_empty() {
             for location in runs.iter_mut().flatten() {
                 location.miscased = self.miscased.get(&location.id).copied().unwrap_or(0);
+                location.misspelled = self.misspelled.get(&location.id).copied().unwrap_or(0);
             }
         }
         let mut kb = KnowledgeBase::from_runs(dialect, runs, self.tour);

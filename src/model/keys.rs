@@ -233,6 +233,25 @@ impl Key {
             .find(|key| key.name().eq_ignore_ascii_case(name))
     }
 
+    /// The key `written` is likely a typo of (`preGestureMesageEnglish`): the closest by
+    /// edit distance, ignoring case, if close enough.
+    pub fn nearest_to(written: &str) -> Option<Key> {
+        // Long garbage (a pasted paragraph) is no typo, and comparing it would be slow.
+        if written.len() > 64 {
+            return None;
+        }
+        let lower = written.to_ascii_lowercase();
+        Key::ALL
+            .into_iter()
+            .map(|candidate| {
+                let name = candidate.name().to_ascii_lowercase();
+                (strsim::damerau_levenshtein(&lower, &name), candidate)
+            })
+            .filter(|&(distance, candidate)| distance <= 3.max(candidate.name().len() / 5))
+            .min_by_key(|&(distance, _)| distance)
+            .map(|(_, candidate)| candidate)
+    }
+
     pub fn value_kind(self) -> ValueKind {
         match self {
             Key::RobotLocation | Key::RobotLocationPose => ValueKind::Pose,

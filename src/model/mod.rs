@@ -109,6 +109,9 @@ pub struct Location<'a> {
     /// Which keys have a line for this location written in the wrong case (which the robot
     /// ignores, and `key-case` reports): bit `1 << Key::order()`.
     pub miscased: u16,
+    /// Which keys have a line for this location whose key is misspelled (an unknown key
+    /// close to this one, which `unknown-key` reports): bit `1 << Key::order()`.
+    pub misspelled: u16,
 }
 
 impl<'a> Location<'a> {
@@ -125,6 +128,7 @@ impl<'a> Location<'a> {
             gesture_arm: None,
             given: 0,
             miscased: 0,
+            misspelled: 0,
         }
     }
 
@@ -141,6 +145,11 @@ impl<'a> Location<'a> {
     /// Whether the file has a line for this location with this key in the wrong case.
     pub fn has_miscased_line(&self, key: Key) -> bool {
         self.miscased & (1 << key.order()) != 0
+    }
+
+    /// Whether a line of this location has `key` misspelled.
+    pub fn has_misspelled_line(&self, key: Key) -> bool {
+        self.misspelled & (1 << key.order()) != 0
     }
 
     pub fn description(&self) -> Option<Value<&'a str>> {
@@ -182,6 +191,7 @@ impl<'a> Location<'a> {
         self.gesture_arm = self.gesture_arm.or(later.gesture_arm);
         self.given |= later.given;
         self.miscased |= later.miscased;
+        self.misspelled |= later.misspelled;
         true
     }
 

@@ -9,6 +9,7 @@ pub mod field;
 pub mod language;
 pub mod robot;
 pub mod table;
+pub mod wrap;
 
 use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};

@@ -37,7 +37,8 @@ pub fn rows(
         let held = view::held(loaded, text, location.id, key);
         let (span, value) = match field.get(location) {
             Some((value, span)) => (Some(span), as_loaded(field, &value, &held, loaded.reader)),
-            None if given => (None, "invalid: see the finding on its line".into()),
+            // What the robot holds then, as `check` and `tour` say it.
+            None if given => (None, invalid(field, &held, loaded.reader)),
             None if field.is_current_only() => (None, "(not given)".into()),
             None => (None, "MISSING".into()),
         };
@@ -49,6 +50,19 @@ pub fn rows(
         });
     }
     rows
+}
+
+/// What the robot holds of a field whose line the model could not read (a number that is
+/// none, such as `−45` with a Unicode minus): what the reader leaves there.
+fn invalid(field: Field, held: &Held, reader: Reader) -> String {
+    match held {
+        Held::NotRead => format!("invalid (and reader {reader} does not read this line)"),
+        held => format!(
+            "{} (the line's value is invalid, so the robot's reader holds this; see the \
+             finding on the line)",
+            shown(field, held)
+        ),
+    }
 }
 
 /// What the robot holds of a field the file gives as `written`, and, where that is not

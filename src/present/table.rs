@@ -31,6 +31,8 @@ pub fn new(header: &[&str]) -> Table {
 /// the rows to comfy-table.
 pub struct Rows {
     header: Vec<String>,
+    /// The columns a table of a given width never wraps (each as wide as its widest line).
+    unbroken: Vec<usize>,
     /// The rows in parts, each made apart (on a core of its own: see [`Rows::join`]).
     parts: Vec<Cells>,
 }
@@ -69,6 +71,7 @@ impl Rows {
         let cells = Cells::new(header.len(), rows);
         Rows {
             header: header.iter().map(|cell| cell.to_string()).collect(),
+            unbroken: Vec::new(),
             parts: vec![cells],
         }
     }
@@ -113,12 +116,31 @@ impl Rows {
         );
     }
 
+    /// Keeps `column` whole when the table is fitted to a width: its lines are never
+    /// wrapped (the marks `EN ✓ ZU ~ RW ~`, which a break would part from their codes).
+    pub fn keep_unbroken(&mut self, column: usize) {
+        self.unbroken.push(column);
+    }
+
     /// Writes the table, without a newline after its last line (as comfy-table's `Display`).
     pub fn write(&self, out: &mut impl Write) -> io::Result<()> {
         let mut table = new(&self.header.iter().map(String::as_str).collect::<Vec<_>>());
+        let widths = self.widths();
         if table.width().is_none() {
-            if let Some(widths) = self.widths() {
+            if let Some(widths) = widths {
                 return self.write_plain(&widths, out);
+            }
+        }
+        for &column in &self.unbroken {
+            let widest = widths
+                .as_ref()
+                .and_then(|widths| widths.get(column).copied());
+            if let (Some(widest), Some(cells)) = (widest, table.column_mut(column)) {
+                // The width with the padding of one space each side.
+                let width = u16::try_from(widest + 2).unwrap_or(u16::MAX);
+                cells.set_constraint(comfy_table::ColumnConstraint::LowerBoundary(
+                    comfy_table::Width::Fixed(width),
+                ));
             }
         }
         for row in self.rows() {

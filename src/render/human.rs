@@ -50,18 +50,20 @@ pub fn render(
     options: &RenderOptions,
 ) -> io::Result<()> {
     let handlers = Handlers::new(options.color, options.width);
-    for report in reports.iter().filter(|r| !r.diagnostics.is_empty()) {
-        let source = Source::new(report.checked.source.name(), report.checked.source.text());
-        // Findings are cut from the file in order (each is located from the one before),
-        // then drawn on every core: drawing is most of the cost, and each is drawn alone.
-        for batch in report.diagnostics.chunks(FINDINGS_PER_BATCH) {
-            let findings: Vec<Finding> = batch.iter().map(|d| source.finding(d)).collect();
-            let ranges = parallel::item_ranges(findings.len(), MIN_FINDINGS_PER_PART);
-            let cut = |rest: Range<usize>| parallel::cut_in_middle(rest, MIN_FINDINGS_PER_PART);
-            for drawn in parallel::map_shared(ranges, cut, |share| handlers.draw(&findings, share))
-            {
-                out.write_all(drawn?.as_bytes())?;
+    // A person reads from the top: every file's errors first, then the other findings,
+    // each in line order.
+    for errors_pass in [true, false] {
+        for report in reports.iter().filter(|r| !r.diagnostics.is_empty()) {
+            let mut part = report
+                .diagnostics
+                .iter()
+                .filter(|d| (d.severity == Severity::Error) == errors_pass)
+                .peekable();
+            if part.peek().is_none() {
+                continue;
             }
+            let source = Source::new(report.checked.source.name(), report.checked.source.text());
+            draw_in_order(&source, part, &handlers, out)?;
         }
     }
     if !options.quiet {
@@ -71,6 +73,29 @@ pub fn render(
             summary.breakdown(),
             super::reader_note(reports)
         )?;
+    }
+    Ok(())
+}
+
+/// Draws `diagnostics`, in the order of the file, of `source`. They are cut from the file
+/// in order (each is located from the one before), then drawn on every core: drawing is
+/// most of the cost, and each is drawn alone.
+fn draw_in_order<'d>(
+    source: &Source<'_>,
+    diagnostics: impl Iterator<Item = &'d LocatedDiagnostic<'d>>,
+    handlers: &Handlers,
+    out: &mut dyn Write,
+) -> io::Result<()> {
+    let mut diagnostics = diagnostics.peekable();
+    while diagnostics.peek().is_some() {
+        let batch: Vec<&LocatedDiagnostic> =
+            diagnostics.by_ref().take(FINDINGS_PER_BATCH).collect();
+        let findings: Vec<Finding> = batch.iter().map(|d| source.finding(d)).collect();
+        let ranges = parallel::item_ranges(findings.len(), MIN_FINDINGS_PER_PART);
+        let cut = |rest: Range<usize>| parallel::cut_in_middle(rest, MIN_FINDINGS_PER_PART);
+        for drawn in parallel::map_shared(ranges, cut, |share| handlers.draw(&findings, share)) {
+            out.write_all(drawn?.as_bytes())?;
+        }
     }
     Ok(())
 }

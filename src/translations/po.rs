@@ -224,7 +224,7 @@ pub struct Entry {
     pub line: u32,
     pub msgctxt: Option<String>,
     pub msgid: String,
-    /// The translation (the first form, for an entry with plural forms).
+    /// The translation.
     pub msgstr: String,
     /// `#, fuzzy`: a translation to review, not to use.
     pub fuzzy: bool,
@@ -242,10 +242,7 @@ pub struct ParseError {
 enum Field {
     Context,
     Id,
-    IdPlural,
     Str,
-    /// A form of `msgstr[N]` other than the first, which is not kept.
-    OtherForm,
 }
 
 /// An entry being read.
@@ -256,8 +253,6 @@ struct Pending {
     has_id: bool,
     has_str: bool,
     field: Option<Field>,
-    /// Where the strings of fields that are not kept go.
-    discarded: String,
 }
 
 /// Reads a PO file. Lines may end in CRLF; strings may continue on lines of their own.
@@ -303,9 +298,12 @@ pub fn parse(text: &str) -> Result<PoFile, ParseError> {
         let field = match keyword {
             "msgctxt" => Field::Context,
             "msgid" => Field::Id,
-            "msgid_plural" => Field::IdPlural,
-            "msgstr" | "msgstr[0]" => Field::Str,
-            _ if keyword.starts_with("msgstr[") && keyword.ends_with(']') => Field::OtherForm,
+            "msgstr" => Field::Str,
+            // Importing the first form would drop the others, and mean one of them.
+            "msgid_plural" => return Err(fail(PLURAL.to_string())),
+            _ if keyword.starts_with("msgstr[") && keyword.ends_with(']') => {
+                return Err(fail(format!("`{keyword}`: {PLURAL}")))
+            }
             _ => {
                 return Err(fail(format!(
                     "`{}` is no PO keyword (msgctxt, msgid, msgid_plural, msgstr)",
@@ -327,11 +325,10 @@ pub fn parse(text: &str) -> Result<PoFile, ParseError> {
         match field {
             Field::Context => pending.has_context = true,
             Field::Id => pending.has_id = true,
-            Field::Str | Field::OtherForm | Field::IdPlural if !pending.has_id => {
+            Field::Str if !pending.has_id => {
                 return Err(fail(format!("`{keyword}` before the entry's `msgid`")))
             }
             Field::Str => pending.has_str = true,
-            _ => {}
         }
         pending.field = Some(field);
         *field_text(&mut pending, field) = value;
@@ -349,17 +346,17 @@ pub fn parse(text: &str) -> Result<PoFile, ParseError> {
     Ok(file)
 }
 
-/// The text a field's strings go to (a form of `msgstr[N]` past the first goes nowhere).
+/// Why an entry with plural forms is refused.
+const PLURAL: &str = "an entry with plural forms (`msgid_plural`, `msgstr[N]`): a message of \
+                      the robot has no plural, and ekb writes none; give the entry one \
+                      `msgstr` (nothing was imported)";
+
+/// The text a field's strings go to.
 fn field_text(pending: &mut Pending, field: Field) -> &mut String {
     match field {
         Field::Context => pending.entry.msgctxt.get_or_insert_with(String::new),
         Field::Id => &mut pending.entry.msgid,
         Field::Str => &mut pending.entry.msgstr,
-        // ekb's entries have no plural forms: the others are read, and dropped.
-        Field::IdPlural | Field::OtherForm => {
-            pending.discarded.clear();
-            &mut pending.discarded
-        }
     }
 }
 
@@ -459,7 +456,7 @@ mod tests {
                   msgid \"Hello\"\nmsgstr \"\"\n\"Saw\"\n\"ubona\"\n\n\
                   #~ msgid \"gone\"\n#~ msgstr \"\"\n\n\
                   msgctxt \"location 1 postGestureMessage\"\nmsgid \"Say \\\"bye\\\"\"\n\
-                  msgid_plural \"x\"\nmsgstr[0] \"Hamba\\tkahle\"\nmsgstr[1] \"y\"\n";
+                  msgstr \"Hamba\\tkahle\"\n";
         let file = parse(po).unwrap();
         assert_eq!(file.language.as_deref(), Some("zu"));
         assert_eq!(file.entries.len(), 2);
@@ -470,6 +467,28 @@ mod tests {
         assert_eq!((second.line, second.fuzzy), (16, false));
         assert_eq!(second.msgid, "Say \"bye\"");
         assert_eq!(second.msgstr, "Hamba\tkahle");
+    }
+
+    #[test]
+    fn an_entry_with_plural_forms_is_refused_at_its_line() {
+        let po = "msgctxt \"location 1 preGestureMessage\"\nmsgid \"Hello\"\n\
+                  msgid_plural \"Hellos\"\nmsgstr[0] \"Sawubona\"\nmsgstr[1] \"Sanibonani\"\n";
+        let error = parse(po).unwrap_err();
+        assert_eq!(error.line, 3);
+        assert!(
+            error.message.starts_with("an entry with plural forms"),
+            "{}",
+            error.message
+        );
+        let error = parse("msgid \"Hello\"\nmsgstr[0] \"Sawubona\"\n").unwrap_err();
+        assert_eq!(error.line, 2);
+        assert!(
+            error
+                .message
+                .starts_with("`msgstr[0]`: an entry with plural"),
+            "{}",
+            error.message
+        );
     }
 
     #[test]

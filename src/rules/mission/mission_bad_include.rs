@@ -55,6 +55,10 @@ fn finding(IncludeProblem { at, chain, problem }: IncludeProblem) -> Diagnostic 
             "an <include> without a path".to_string(),
             "name the file: <include path=\"trees.xml\"/>".to_string(),
         ),
+        Problem::EmptyPath => (
+            "an <include> whose path is empty".to_string(),
+            "name the file: <include path=\"trees.xml\"/>".to_string(),
+        ),
         Problem::RosPackage { package } => (
             format!(
                 "an <include> from the ROS package `{package}`, which only a BehaviorTree.CPP \

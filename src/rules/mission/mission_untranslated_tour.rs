@@ -31,7 +31,8 @@ declare_rule! {
 
 pub fn check(kb: &KnowledgeBase<'_>, language: Language, out: &mut Diagnostics) {
     let mut seen = Vec::new();
-    for id in kb.tour_stops() {
+    for (index, id) in kb.tour_stops().enumerate() {
+        let stop = index + 1;
         if seen.contains(&id) {
             continue;
         }
@@ -59,8 +60,8 @@ pub fn check(kb: &KnowledgeBase<'_>, language: Language, out: &mut Diagnostics) 
                     &MISSION_UNTRANSLATED_TOUR,
                     span,
                     format!(
-                        "the mission speaks {}, and the message of tour stop {id} {} the \
-                         gesture {what}",
+                        "the mission speaks {}, and the message of location {id} (stop {stop} \
+                         of the tour) {} the gesture {what}",
                         language.name(),
                         phase.name()
                     ),

@@ -1,6 +1,6 @@
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::model::Key;
-use crate::rules::{declare_rule, excerpt};
+use crate::rules::{consequence, declare_rule, excerpt};
 use crate::syntax::Span;
 
 declare_rule! {
@@ -45,8 +45,10 @@ pub fn diagnostic(key: Key, id: Option<u32>, span: Span, token: &str) -> Diagnos
     } else {
         (
             format!(
-                "`{token}` in `{}` is not a finite decimal number: the robot would read some other value here",
-                key.name()
+                "`{token}` in `{}` is not a finite decimal number: the robot's reader loses the \
+                 line's whole value, so {}",
+                key.name(),
+                consequence::lost(key, id)
             ),
             if token.contains(',') {
                 "write decimals with a point, e.g. `8.1`"

@@ -12,8 +12,9 @@ declare_rule! {
     /// The robot's reader fills a missing field with nothing: a missing pose sends the
     /// robot to (0, 0), a missing message is silence at that point of the tour. A field
     /// whose line has a misspelled key counts as missing, because that is what the robot
-    /// loads; when its key is only in the wrong case, the help points at that line's
-    /// `key-case` finding, where the fix is.
+    /// loads; when its key is in the wrong case or misspelled, the help points at that
+    /// line's `key-case` or `unknown-key` finding, where the fix is, rather than ask for
+    /// a line that would be a duplicate.
     ///
     /// ## Example
     /// ```text
@@ -58,9 +59,12 @@ pub fn check(location: &Location<'_>, context: &LocationContext<'_>, out: &mut D
                 consequence::lost(first, Some(id))
             ),
         };
-        let (miscased, absent): (Vec<Key>, Vec<Key>) = missing
+        let (miscased, rest): (Vec<Key>, Vec<Key>) = missing
             .iter()
             .partition(|&&key| location.has_miscased_line(key));
+        let (misspelled, absent): (Vec<Key>, Vec<Key>) = rest
+            .into_iter()
+            .partition(|&key| location.has_misspelled_line(key));
         let mut help = Vec::new();
         if !absent.is_empty() {
             let lines: Vec<String> = absent
@@ -76,6 +80,13 @@ pub fn check(location: &Location<'_>, context: &LocationContext<'_>, out: &mut D
             let keys: Vec<String> = miscased.iter().map(|key| format!("`{}`", key.name())).collect();
             help.push(format!(
                 "the file has a line of {} with the key in the wrong case: correct the case there (see its key-case finding; `ekb fix` does it)",
+                keys.join(", ")
+            ));
+        }
+        if !misspelled.is_empty() {
+            let keys: Vec<String> = misspelled.iter().map(|key| format!("`{}`", key.name())).collect();
+            help.push(format!(
+                "the file has a line meant as {} with the key misspelled: correct the key there (see its unknown-key finding; `ekb fix --unsafe-fixes` renames it)",
                 keys.join(", ")
             ));
         }

@@ -1,4 +1,4 @@
-use crate::diagnostic::Diagnostic;
+use crate::diagnostic::{Diagnostic, Edit};
 use crate::model::build::parse_id;
 use crate::model::Key;
 use crate::render::escape::{escape, is_odd_space};
@@ -17,8 +17,13 @@ declare_rule! {
     /// ```text
     /// preGestureMesageEnglish       2 This is the Pepper humanoid robot
     /// ```
-    /// Use `preGestureMessageEnglish`. A key run into its id by a space that is not a plain
-    /// one, such as a no-break space (U+00A0) that a word processor put there, is no key
+    /// Use `preGestureMessageEnglish`.
+    ///
+    /// ## Fix (unsafe)
+    /// `ekb fix --unsafe-fixes` renames the key to the nearest one: a guess at what was
+    /// meant.
+    ///
+    /// A key run into its id by a space that is not a plain one, such as a no-break space (U+00A0) that a word processor put there, is no key
     /// either: the message shows the space as `\u{00A0 NO-BREAK SPACE}`.
     pub static UNKNOWN_KEY = {
         name: "unknown-key",
@@ -37,7 +42,7 @@ pub fn diagnostic(span: Span, key: &str, id: Option<u32>) -> Diagnostic {
         "`{}` is not a key of the knowledge base: the robot's reader ignores this line",
         escape(&excerpt(key))
     );
-    match nearest(key) {
+    match Key::nearest_to(key) {
         Some(near) => Diagnostic::new(
             &UNKNOWN_KEY,
             span,
@@ -47,7 +52,11 @@ pub fn diagnostic(span: Span, key: &str, id: Option<u32>) -> Diagnostic {
                 consequence::lost(near, id.filter(|_| near != Key::TourSpecification))
             ),
         )
-        .with_help(format!("did you mean `{}`?", near.name())),
+        .with_help(format!("did you mean `{}`?", near.name()))
+        .with_unsafe_fix(
+            format!("rename to `{}`", near.name()),
+            vec![Edit::replace(span, near.name())],
+        ),
         None => Diagnostic::new(&UNKNOWN_KEY, span, ignored).with_help(format!(
             "the keys are: {}",
             Key::ALL.map(Key::name).join(", ")
@@ -95,24 +104,6 @@ fn key_before_odd_space(span: Span, written: &str) -> Option<Diagnostic> {
     )
 }
 
-/// The known key closest to `key`, if one is close enough to be a likely typo.
-pub(crate) fn nearest(key: &str) -> Option<Key> {
-    // Long garbage (a pasted paragraph) is no typo, and comparing it would be slow.
-    if key.len() > 64 {
-        return None;
-    }
-    let lower = key.to_ascii_lowercase();
-    Key::ALL
-        .into_iter()
-        .map(|candidate| {
-            let name = candidate.name().to_ascii_lowercase();
-            (strsim::damerau_levenshtein(&lower, &name), candidate)
-        })
-        .filter(|&(distance, candidate)| distance <= 3.max(candidate.name().len() / 5))
-        .min_by_key(|&(distance, _)| distance)
-        .map(|(_, candidate)| candidate)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -120,11 +111,14 @@ mod tests {
     #[test]
     fn suggests_the_nearest_key() {
         assert_eq!(
-            nearest("preGestureMesageEnglish"),
+            Key::nearest_to("preGestureMesageEnglish"),
             Some(Key::PreGestureMessageEnglish)
         );
-        assert_eq!(nearest("robotLocationPos"), Some(Key::RobotLocationPose));
-        assert_eq!(nearest("colour"), None);
+        assert_eq!(
+            Key::nearest_to("robotLocationPos"),
+            Some(Key::RobotLocationPose)
+        );
+        assert_eq!(Key::nearest_to("colour"), None);
     }
 
     #[test]

@@ -6,8 +6,9 @@ declare_rule! {
     /// ## What it does
     /// Flags a translation whose final punctuation differs from its English: the English
     /// ends in `.`, `?`, `!`, `:` or `…` (three dots count as `…`) and the translation does
-    /// not, or ends in another of them, or the other way round. Closing quotes and brackets
-    /// after the mark are looked through. English messages of 4 characters or fewer are
+    /// not, or ends in another of them, or the other way round. `…` and `.` both end a
+    /// sentence, as Weblate's checks take them: one against the other is no finding.
+    /// Closing quotes and brackets after the mark are looked through. English messages of 4 characters or fewer are
     /// not compared (`OK`, `Hi!`). Weblate's checks of the same kind: *Mismatched full
     /// stop* (`end_stop`), *question mark* (`end_question`), *exclamation mark*
     /// (`end_exclamation`), *colon* (`end_colon`) and *ellipsis* (`end_ellipsis`).
@@ -45,7 +46,7 @@ pub fn check(message: &Message<'_>, out: &mut Diagnostics) {
         return;
     }
     let (expected, found) = (end_mark(english.value), end_mark(message.text.value));
-    if expected == found {
+    if ends_alike(expected, found) {
         return;
     }
     let text = message.text.value;
@@ -76,6 +77,13 @@ pub fn check(message: &Message<'_>, out: &mut Diagnostics) {
                 None => "end the translation without a mark, as the English does".to_string(),
             })
     });
+}
+
+/// Whether two end marks end a sentence alike: the same mark, or `…` and `.` (a sentence
+/// trailing off ends all the same; translators often write one for the other).
+fn ends_alike(english: Option<&str>, translation: Option<&str>) -> bool {
+    let full_stop = |mark| matches!(mark, Some("." | "…"));
+    english == translation || (full_stop(english) && full_stop(translation))
 }
 
 /// The punctuation mark a text ends with, closing quotes and brackets looked through:
