@@ -44,10 +44,17 @@
 #include "ekb.hpp"
 
 #if defined(ROS_PACKAGE_NAME) && defined(__has_include)
-#if __has_include(<ros/package.h>)
+#if __has_include(<ros/ros.h>)
 #define EKB_DROP_IN_ROS 1
-#include <ros/package.h>
 #include <ros/ros.h>
+#if __has_include(<ros/package.h>)
+#define EKB_DROP_IN_ROSLIB 1
+#include <ros/package.h>
+#else
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#endif
 #endif
 #endif
 
@@ -187,11 +194,54 @@ private:
     // The configuration the robot's class reads; nullopt: EKB_CONFIG, else the default.
     static std::optional<std::string> configurationPath() {
 #ifdef EKB_DROP_IN_ROS
-        return ros::package::getPath(ROS_PACKAGE_NAME) + "/config/environmentKnowledgeBaseConfiguration.ini";
-#else
+        std::string package = packagePath(ROS_PACKAGE_NAME);
+        if (!package.empty()) return package + "/config/environmentKnowledgeBaseConfiguration.ini";
+        ROS_WARN("package %s not found on ROS_PACKAGE_PATH: reading the configuration that EKB_CONFIG names, "
+                 "else config/environmentKnowledgeBaseConfiguration.ini under the current folder",
+                 ROS_PACKAGE_NAME);
+#endif
         return std::nullopt;
+    }
+
+#ifdef EKB_DROP_IN_ROS
+    // The folder of the ROS package `name`: ros::package::getPath where roslib is, else the
+    // folder on ROS_PACKAGE_PATH whose package.xml names it, as rospack finds it.
+    static std::string packagePath(const std::string &name) {
+#ifdef EKB_DROP_IN_ROSLIB
+        return ros::package::getPath(name);
+#else
+        namespace fs = std::filesystem;
+        auto names = [&name](const fs::path &folder) {
+            std::ifstream file(folder / "package.xml");
+            std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+            return text.find("<name>" + name + "</name>") != std::string::npos;
+        };
+        const char *roots = getenv("ROS_PACKAGE_PATH");
+        std::stringstream paths(roots ? roots : "");
+        std::string root;
+        while (std::getline(paths, root, ':')) {
+            std::error_code error;
+            if (root.empty()) continue;
+            if (fs::exists(fs::path(root) / "package.xml", error)) {
+                if (names(root)) return root;
+                continue;
+            }
+            fs::recursive_directory_iterator walk(root, fs::directory_options::skip_permission_denied, error), end;
+            for (; !error && walk != end; walk.increment(error)) {
+                if (!walk->is_directory(error)) continue;
+                if (fs::exists(walk->path() / "CATKIN_IGNORE", error)) {
+                    walk.disable_recursion_pending();
+                    continue;
+                }
+                if (!fs::exists(walk->path() / "package.xml", error)) continue;
+                walk.disable_recursion_pending();  // no package inside a package
+                if (names(walk->path())) return walk->path().string();
+            }
+        }
+        return std::string();
 #endif
     }
+#endif
 
     static ekb::Options dropInOptions() {
         ekb::Options options;
