@@ -34,6 +34,7 @@ step "the same tests under AddressSanitizer"
 cmake -S crates/ekb-capi -B "$work/asan" -DCMAKE_BUILD_TYPE=Debug -DEKB_SANITIZE=ON >/dev/null
 cmake --build "$work/asan" -j"$jobs"
 ctest --test-dir "$work/asan" --output-on-failure
+rm -rf "$work/asan" # a debug build of ekb is large: keep the disk free as we go
 
 step "a consumer, from the build tree and from an install prefix"
 cmake --install "$work/build" --prefix "$work/prefix" >/dev/null
@@ -42,6 +43,7 @@ cmake --build "$work/consumer-tree" -j"$jobs" >/dev/null
 cmake -S crates/ekb-capi/tests/consumer -B "$work/consumer-prefix" -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
 cmake --build "$work/consumer-prefix" -j"$jobs" >/dev/null
 grep -q "$work/prefix" "$work/consumer-prefix/CMakeCache.txt" || fail "the consumer did not find the installed package"
+rm -rf "$work/prefix"
 
 mkdir -p "$work/robot/config" "$work/robot/data"
 cp data/environmentKnowledgeBaseInput.dat "$work/robot/data/"
