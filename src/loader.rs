@@ -14,6 +14,8 @@
 //! assert!(error.findings().iter().any(|finding| finding.rule == "tour-missing"));
 //! ```
 
+mod fixed_size;
+
 use std::fmt;
 use std::path::{Path, PathBuf};
 
@@ -47,6 +49,11 @@ pub struct Options {
     /// Where the project settings (`ekb.toml`) come from: the file's folder and its parents
     /// (the default, as `ekb check` does), one named file, or none.
     pub settings: Lookup,
+    /// Refuse a value that the document's fixed-size types cannot hold (a text of
+    /// `STRING_LENGTH` bytes or more, more than 20 tour stops, more than 2 culture words),
+    /// with a finding that names the limit: for the drop-in class, which hands out those
+    /// types. Off by default: the library itself has no such limits.
+    pub fixed_size_limits: bool,
 }
 
 impl Default for Options {
@@ -55,6 +62,7 @@ impl Default for Options {
             reader: None,
             dialect: None,
             settings: Lookup::Discover,
+            fixed_size_limits: false,
         }
     }
 }
@@ -237,7 +245,7 @@ pub fn load_configured(
     let options = Options {
         reader: options.reader.or(config.reader),
         dialect: options.dialect.or(config.dialect),
-        settings: options.settings.clone(),
+        ..options.clone()
     };
     load_path(&file, &options)
 }
@@ -273,7 +281,13 @@ fn with_checked<T>(
         verbose: false,
     };
     let rules = settings.rules_for(path, &Default::default());
-    let checked = check_with(source, &build_options, &rules);
+    let mut checked = check_with(source, &build_options, &rules);
+    if options.fixed_size_limits {
+        checked.diagnostics.extend(fixed_size::check(&checked.kb));
+        checked
+            .diagnostics
+            .sort_by_key(|diagnostic| diagnostic.span.start);
+    }
     Ok(then(&checked))
 }
 

@@ -159,3 +159,61 @@ fn the_configuration_names_the_file_and_its_reader() {
     let error = loader::load_configured(Some(&config), &isolated()).unwrap_err();
     assert!(matches!(error, LoadError::Unreadable { .. }), "{error:?}");
 }
+
+#[test]
+fn the_drop_in_limits_refuse_what_the_documents_types_cannot_hold() {
+    // Under 2026-03 (a 600-byte line buffer) with two rules silenced, the file loads: the
+    // library has no 200-byte, 20-stop or 2-word limit.
+    let path = fixture("loader/fixed-size.dat");
+    let options = Options {
+        reader: Some(ekb::reader::Reader::V2026_03),
+        ..isolated()
+    };
+    let kb = loader::load_path(&path, &options).unwrap();
+    assert_eq!(kb.tour().len(), 21);
+    assert_eq!(kb.location(1).unwrap().cultural_knowledge.len(), 3);
+
+    let limited = Options {
+        fixed_size_limits: true,
+        ..options
+    };
+    let error = loader::load_path(&path, &limited).unwrap_err();
+    let errors: Vec<(&str, u32, u32)> = error
+        .findings()
+        .iter()
+        .filter(|f| f.severity == Severity::Error)
+        .map(|f| (f.rule, f.line, f.column))
+        .collect();
+    // The 200-byte text is refused; the 199-byte one (line 18) fits with its NUL.
+    assert_eq!(
+        errors,
+        [
+            ("drop-in-string-length", 5, 33),
+            ("drop-in-culture-keys", 11, 33),
+            ("drop-in-tour-length", 22, 19),
+        ]
+    );
+    let text = &error.findings()[error
+        .findings()
+        .iter()
+        .position(|f| f.rule == "drop-in-string-length")
+        .unwrap()];
+    assert!(
+        text.message.contains("STRING_LENGTH 200"),
+        "{}",
+        text.message
+    );
+    assert_eq!(text.location_id, Some(1));
+
+    // A file within the limits loads the same with them.
+    let clean = fixture("check/clean-current.dat");
+    let plain = loader::load_path(&clean, &isolated()).unwrap();
+    let within = Options {
+        fixed_size_limits: true,
+        ..isolated()
+    };
+    assert_eq!(
+        loader::load_path(&clean, &within).unwrap().export(),
+        plain.export()
+    );
+}
