@@ -26,6 +26,7 @@ use crate::model::build;
 use crate::model::export::{ExportedKnowledgeBase, ExportedLocation, ExportedMessages};
 use crate::model::Dialect;
 use crate::reader::Reader;
+use crate::render::escape::escape;
 use crate::render::FileReport;
 use crate::settings::Lookup;
 use crate::source::SourceFile;
@@ -68,7 +69,9 @@ impl Default for Options {
 }
 
 /// One finding of `ekb check`: 1-based lines and columns (columns in Unicode scalar
-/// values), the end exclusive.
+/// values), the end exclusive. Its texts are for people, in logs and exceptions: what they
+/// quote of the file is escaped as `ekb check` shows it (a control character as
+/// `\u{0000}`), so that no byte of the file reaches a terminal raw.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Finding {
     pub file: String,
@@ -296,16 +299,16 @@ fn findings(checked: &Checked<'_>) -> Vec<Finding> {
         .diagnostics
         .iter()
         .map(|located| Finding {
-            file: located.file.to_string(),
+            file: escape(located.file).into_owned(),
             rule: located.rule,
             severity: located.severity,
-            message: located.message.to_string(),
+            message: escape(located.message).into_owned(),
             line: located.region.line,
             column: located.region.column,
             end_line: located.region.end_line,
             end_column: located.region.end_column,
             location_id: located.location_id,
-            help: located.help.map(str::to_string),
+            help: located.help.map(|help| escape(help).into_owned()),
         })
         .collect()
 }

@@ -217,3 +217,15 @@ fn the_drop_in_limits_refuse_what_the_documents_types_cannot_hold() {
         plain.export()
     );
 }
+
+#[test]
+fn what_a_finding_quotes_of_the_file_is_escaped() {
+    let text = b"robotLocationDescription 1\0Hall\ntourSpecification 1 1\n";
+    let findings = loader::check_bytes("nul.dat", text, &isolated()).unwrap();
+    let quoting = findings.iter().find(|f| f.rule == "invalid-id").unwrap();
+    assert!(quoting.message.contains("\\u{0000}"), "{}", quoting.message);
+    for finding in &findings {
+        let all = format!("{finding} {:?}", finding.help);
+        assert!(!all.contains('\0'), "{all}");
+    }
+}
