@@ -42,7 +42,6 @@ pub mod lsp;
 pub mod map;
 pub mod mission;
 pub mod model;
-mod parallel;
 pub mod present;
 pub mod reader;
 pub mod render;
@@ -55,7 +54,6 @@ pub mod streams;
 pub mod suppression;
 pub mod syntax;
 pub mod translations;
-pub mod unified;
 pub mod write;
 
 pub use check::{check, Checked};
