@@ -15,6 +15,8 @@
 
 #[path = "../tests/lsp/client.rs"]
 mod client;
+#[path = "../tests/support/generate.rs"]
+mod generate;
 
 use std::time::{Duration, Instant};
 
@@ -32,7 +34,7 @@ fn main() {
     ))
     .unwrap();
     measure("the real file (46 lines)", &real, edits);
-    let large = ekb::generate::generate(&ekb::generate::Spec::new(100_000));
+    let large = generate::generate(&generate::Spec::new(100_000));
     measure("100,000 locations (62 MB)", &large, (edits / 10).max(5));
 }
 

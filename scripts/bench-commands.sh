@@ -4,7 +4,7 @@
 #
 #   scripts/bench-commands.sh [WORKDIR]
 #
-# Builds the release binaries, generates the 100,000-location file (ekb-generate, seed
+# Builds the release binaries, generates the 100,000-location file (the ekb-generate example, seed
 # dialect, ascending ids) and a copy of it with four values changed (for `diff A B`), times
 # each command with hyperfine (all in one run, output to /dev/null), measures peak memory
 # with /usr/bin/time -v, and prints each as a ratio to the check's median time and to the
@@ -18,18 +18,18 @@ work="${1:-$(mktemp -d)}"
 mkdir -p "$work"
 runs="${RUNS:-10}"
 
-cargo build --release --quiet --manifest-path "$root/Cargo.toml" --bin ekb --bin ekb-generate
+cargo build --release --quiet --manifest-path "$root/Cargo.toml" --bin ekb --example ekb-generate
 ekb="$root/target/release/ekb"
 a="$work/kb-100k.dat"
 b="$work/kb-100k-changed.dat"
-"$root/target/release/ekb-generate" 100000 > "$a"
+"$root/target/release/examples/ekb-generate" 100000 > "$a"
 # Three descriptions and a pose changed.
 sed -E 's/^(robotLocationDescription +(500|50000|99999) ).*/\1Changed exhibit description/;
         s/^(robotLocation +77777 ).*/\11.00 2.00 90/' "$a" > "$b"
 # The same locations in another order: 100,000 ascending ids crash every version of the
 # robot's reader, so `export --as-loaded` refuses the file above; shuffled, it loads.
 shuffled="$work/kb-100k-shuffled.dat"
-"$root/target/release/ekb-generate" 100000 --shuffle > "$shuffled"
+"$root/target/release/examples/ekb-generate" 100000 --shuffle > "$shuffled"
 size=$(stat -c %s "$a")
 # The configuration is found from the working directory.
 cd "$root"

@@ -16,12 +16,13 @@ repeats=${EKB_BENCH_REPEATS:-10}
 cmake -S crates/ekb-capi -B "$work/build" -DCMAKE_BUILD_TYPE=Release -DEKB_BUILD_TESTS=OFF \
   -DEKB_BUILD_BENCHMARK=ON >/dev/null
 cmake --build "$work/build" -j2 >/dev/null
+cargo build --release --quiet --bin ekb --example ekb-generate
 mkdir -p "$work/files"
 cp data/environmentKnowledgeBaseInput.dat "$work/files/seed.dat"
 "$target/release/ekb" fix --isolated "$work/files/seed.dat" >/dev/null 2>&1
 printf '[check]\nignore = ["compat-reader-crash", "compat-slow-load"]\n' >"$work/files/ekb.toml"
 for n in 1000 10000 100000; do
-  "$target/release/ekb-generate" "$n" >"$work/files/ascending-$n.dat"
+  "$target/release/examples/ekb-generate" "$n" >"$work/files/ascending-$n.dat"
 done
 for file in seed ascending-1000 ascending-10000 ascending-100000; do
   path=$work/files/$file.dat

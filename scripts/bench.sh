@@ -4,7 +4,7 @@
 #   scripts/bench.sh [WORKDIR]
 #
 # Builds the release binaries, generates knowledge bases of 10,000 and 100,000 locations
-# (ekb-generate), times `ekb check` and `wc -l` on each with hyperfine (side by side, in
+# (the ekb-generate example), times `ekb check` and `wc -l` on each with hyperfine (side by side, in
 # one run), measures peak memory with /usr/bin/time -v, and prints a table with the
 # targets of BENCHMARKS.md. Needs hyperfine (Debian: apt-get install hyperfine).
 set -euo pipefail
@@ -14,9 +14,9 @@ work="${1:-$(mktemp -d)}"
 mkdir -p "$work"
 runs="${RUNS:-10}"
 
-cargo build --release --quiet --manifest-path "$root/Cargo.toml" --bin ekb --bin ekb-generate
+cargo build --release --quiet --manifest-path "$root/Cargo.toml" --bin ekb --example ekb-generate
 ekb="$root/target/release/ekb"
-gen="$root/target/release/ekb-generate"
+gen="$root/target/release/examples/ekb-generate"
 
 "$gen" 10000 > "$work/kb-10k.dat"
 "$gen" 100000 > "$work/kb-100k.dat"

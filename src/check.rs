@@ -24,9 +24,7 @@ use crate::syntax::Span;
 /// The most findings of one rule shown for one file; the rest are summed up in a note.
 pub const MAX_SHOWN_PER_RULE: usize = 1000;
 
-/// The most findings of one fixable rule kept in memory for one file; the rest are only
-/// counted.
-pub const MAX_KEPT_PER_RULE: usize = 10_000;
+pub use crate::source::MAX_KEPT_PER_RULE;
 
 /// How many findings of `rule` are kept for one file: those shown and the first one not
 /// shown (where the "… and N more" note stands), or for a fixable rule, the fixes one run

@@ -15,7 +15,6 @@
 //! - [`diff`]: the semantic difference of two knowledge bases;
 //! - [`canonical`]: the canonical layout that `fmt` and `import` write; [`fixing`]: `fix`;
 //!   [`rewrite`] and [`mod@write`]: how both show and safely write their result;
-//! - [`generate`]: synthetic knowledge bases of any size, for benchmarks and tests;
 //! - [`config`] (the robot's INI) and [`settings`] (`ekb.toml`): where the file is and how
 //!   to check it;
 //! - [`cli`]: the `ekb` command line, one module per command under `commands`; [`streams`]:
@@ -39,13 +38,11 @@ pub mod edit;
 pub mod encoding;
 pub mod fix_list;
 pub mod fixing;
-pub mod generate;
 pub mod loader;
 pub mod lsp;
 pub mod map;
 pub mod mission;
 pub mod model;
-mod parallel;
 pub mod present;
 pub mod reader;
 pub mod render;
@@ -58,7 +55,6 @@ pub mod streams;
 pub mod suppression;
 pub mod syntax;
 pub mod translations;
-pub mod unified;
 pub mod write;
 
 pub use check::{check, Checked};

@@ -10,14 +10,17 @@
 //! since it was read, and every other guard of [`crate::write`]. [`for_each_file`] goes
 //! on after a file that failed.
 
-use std::io::{self, Write};
+use std::io::{self, BufWriter, Write};
 use std::path::Path;
+use std::time::Duration;
+
+use similar::{Algorithm, DiffOp, TextDiff};
 
 use crate::commands::{CommandError, Exit};
 use crate::render::escape::escape;
 use crate::rules::structure::not_a_knowledge_base;
 use crate::source::{LineIndex, SourceFile};
-use crate::unified::{self, InOrder, NewLines};
+use crate::stderr_line;
 use crate::write;
 
 /// What to do with a file's new text.
@@ -84,7 +87,7 @@ pub fn deliver(
     let stdin = path == Path::new("-");
     match mode {
         Mode::Diff if changed => {
-            print_diff(source.name(), old, &InOrder { old, new }, style)?;
+            print_diff(source.name(), old, new, style)?;
         }
         Mode::Diff => {}
         Mode::Write if stdin => io::stdout().lock().write_all(new.as_bytes())?,
@@ -138,50 +141,233 @@ pub fn for_each_file(
     worst
 }
 
-/// How many lines a refusal names before it says "and N more".
-pub const NAMED_LINES: usize = 5;
+/// Past this many bytes (the old text and the new together) a diff is not printed: the
+/// lines that would change are told instead ([`tell_changed_lines`]). A real knowledge base
+/// is a few kilobytes; a diff of hundreds of megabytes is read by no one.
+pub const LARGEST_DIFF: usize = 16 << 20;
 
-/// `line 4 (`gestureArm`), line 11 (`culturalKnowledge`) and 3 more`: the lines a refusal is
-/// about, each with a short description.
-pub fn name_lines(lines: &[(u32, String)]) -> String {
-    let named: Vec<String> = lines
-        .iter()
-        .take(NAMED_LINES)
-        .map(|(number, what)| format!("line {number} (`{what}`)"))
-        .collect();
-    match lines.len().saturating_sub(NAMED_LINES) {
-        0 => named.join(", "),
-        more => format!("{} and {more} more", named.join(", ")),
+/// How long a diff may take to be minimal: past it, a coarser diff is printed (still one
+/// that applies). A real file's diff takes a millisecond; the balanced order of 10,000
+/// locations in id order (`compat-reader-crash`) moves every block and took 2 s.
+const DIFF_TIMEOUT: Duration = Duration::from_millis(250);
+
+/// Lines of context around a change.
+const CONTEXT: usize = 3;
+
+/// Prints the unified diff of `old` and `new` on standard output (nothing if they are
+/// equal); past [`LARGEST_DIFF`], the lines that would change on standard error. Returns
+/// whether they differ.
+pub fn print_diff(name: &str, old: &str, new: &str, style: DiffStyle) -> io::Result<bool> {
+    if old == new {
+        return Ok(false);
     }
+    if old.len() + new.len() > LARGEST_DIFF {
+        tell_changed_lines(name, old, new);
+        return Ok(true);
+    }
+    // A line at a time through a buffer: standard output alone is flushed at every line.
+    let mut out = BufWriter::with_capacity(1 << 16, io::stdout().lock());
+    write_diff(&mut out, name, old, new, style)?;
+    out.flush()?;
+    Ok(true)
 }
 
-/// Prints the unified diff of `old` and the new text `new` (nothing if they are equal),
-/// written from where each new line came from ([`crate::unified`]). Returns whether they
-/// differ.
-pub fn print_diff(
+/// Tells on standard error which lines of `old` would change (from the first to the last
+/// that differs), for a text too large to show as a diff.
+fn tell_changed_lines(name: &str, old: &str, new: &str) {
+    let (first, last) = changed_lines(old, new);
+    stderr_line!(
+        "{}: would change lines {first} to {last} of {}; the diff of a file over {} MiB is not \
+         shown (write the result to another file with `ekb fmt - < FILE > OTHER` or \
+         `ekb fix`, and compare)",
+        escape(name),
+        old.lines().count(),
+        LARGEST_DIFF >> 20
+    );
+}
+
+/// The first and the last line (1-based) of `old` that `new` does not have in the same place
+/// counted from the start or from the end: the stretch of `old` that changes. For an
+/// insertion between two lines, the line after it.
+fn changed_lines(old: &str, new: &str) -> (usize, usize) {
+    let (old_lines, new_lines) = (old.split_inclusive('\n'), new.split_inclusive('\n'));
+    let same_start = old_lines
+        .clone()
+        .zip(new_lines.clone())
+        .take_while(|(a, b)| a == b)
+        .count();
+    let old_count = old_lines.clone().count();
+    let same_end = old_lines
+        .rev()
+        .zip(new_lines.rev())
+        .take_while(|(a, b)| a == b)
+        .count()
+        .min(old_count - same_start);
+    let first = same_start + 1;
+    (first, (old_count - same_end).max(first))
+}
+
+/// Writes the unified diff of `old` and `new` (which differ) to `out`, with three lines of
+/// context, each printed line escaped as every output of ekb is, on a terminal or not: a
+/// diff is file text, and a CI log shows it too. (A line with something escaped no longer
+/// applies with `patch`; every other line does.)
+fn write_diff(
+    out: &mut impl Write,
     name: &str,
     old: &str,
-    new: &(impl NewLines + Sync),
+    new: &str,
     style: DiffStyle,
-) -> io::Result<bool> {
-    let style = unified::Style {
-        name,
-        color: style.color,
+) -> io::Result<()> {
+    // Patience anchors on unique lines, so a formatted file (a blank line between every
+    // block) diffs in about linear time; the deadline bounds the rest.
+    let diff = TextDiff::configure()
+        .algorithm(Algorithm::Patience)
+        .timeout(DIFF_TIMEOUT)
+        .diff_lines(old, new);
+    let write_line = |out: &mut dyn Write, line: &str| {
+        let colour = match line.as_bytes().first() {
+            _ if !style.color => "",
+            Some(b'+') => "\x1b[32m",
+            Some(b'-') => "\x1b[31m",
+            Some(b'@') => "\x1b[36m",
+            _ => "",
+        };
+        let reset = if colour.is_empty() { "" } else { "\x1b[0m" };
+        writeln!(out, "{colour}{}{reset}", escape(line))
     };
-    unified::write_diff(&mut io::stdout().lock(), old, new, style)
+    write_line(out, &format!("--- {name}"))?;
+    write_line(out, &format!("+++ {name}"))?;
+    let (old_lines, new_lines) = (diff.old_slices(), diff.new_slices());
+    for group in diff.grouped_ops(CONTEXT) {
+        let (first, last) = (group[0], group[group.len() - 1]);
+        let header = format!(
+            "@@ -{} +{} @@",
+            hunk_range(first.old_range().start, last.old_range().end),
+            hunk_range(first.new_range().start, last.new_range().end)
+        );
+        write_line(out, &header)?;
+        for op in &group {
+            let (equal, taken, put) = match *op {
+                DiffOp::Equal { old_index, len, .. } => (old_index..old_index + len, 0..0, 0..0),
+                DiffOp::Delete {
+                    old_index, old_len, ..
+                } => (0..0, old_index..old_index + old_len, 0..0),
+                DiffOp::Insert {
+                    new_index, new_len, ..
+                } => (0..0, 0..0, new_index..new_index + new_len),
+                DiffOp::Replace {
+                    old_index,
+                    old_len,
+                    new_index,
+                    new_len,
+                } => (
+                    0..0,
+                    old_index..old_index + old_len,
+                    new_index..new_index + new_len,
+                ),
+            };
+            let lines = (equal.map(|i| (' ', old_lines[i])))
+                .chain(taken.map(|i| ('-', old_lines[i])))
+                .chain(put.map(|i| ('+', new_lines[i])));
+            for (tag, line) in lines {
+                match line.strip_suffix('\n') {
+                    Some(content) => write_line(out, &format!("{tag}{content}"))?,
+                    None => {
+                        write_line(out, &format!("{tag}{line}"))?;
+                        write_line(out, "\\ No newline at end of file")?;
+                    }
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A hunk header's range of lines `start..end` (0-based), as `diff -u` writes it:
+/// `start,length` (1-based; an empty range names the line before it), `start` alone for
+/// one line.
+fn hunk_range(start: usize, end: usize) -> String {
+    match end - start {
+        1 => format!("{}", start + 1),
+        0 => format!("{start},0"),
+        length => format!("{},{length}", start + 1),
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    fn diff(old: &str, new: &str) -> String {
+        let mut out = Vec::new();
+        write_diff(&mut out, "kb.dat", old, new, DiffStyle::default()).unwrap();
+        String::from_utf8(out).unwrap()
+    }
+
     #[test]
-    fn names_a_few_lines() {
-        let lines: Vec<(u32, String)> = (1..=7).map(|n| (n, format!("k{n}"))).collect();
-        assert_eq!(name_lines(&lines[..1]), "line 1 (`k1`)");
+    fn a_line_changed_in_place() {
         assert_eq!(
-            name_lines(&lines),
-            "line 1 (`k1`), line 2 (`k2`), line 3 (`k3`), line 4 (`k4`), line 5 (`k5`) and 2 more"
+            diff("a\nb\n", "a\nc\n"),
+            "--- kb.dat\n+++ kb.dat\n@@ -1,2 +1,2 @@\n a\n-b\n+c\n"
         );
+    }
+
+    #[test]
+    fn a_text_without_a_final_newline_says_so() {
+        assert_eq!(
+            diff("a\nb", "a\nb\n"),
+            "--- kb.dat\n+++ kb.dat\n@@ -1,2 +1,2 @@\n a\n-b\n\\ No newline at end of file\n+b\n"
+        );
+    }
+
+    #[test]
+    fn an_empty_side_names_the_line_before() {
+        assert_eq!(
+            diff("", "x\n"),
+            "--- kb.dat\n+++ kb.dat\n@@ -0,0 +1 @@\n+x\n"
+        );
+        assert_eq!(
+            diff("x\n", ""),
+            "--- kb.dat\n+++ kb.dat\n@@ -1 +0,0 @@\n-x\n"
+        );
+    }
+
+    #[test]
+    fn changes_six_lines_apart_share_a_hunk_and_seven_do_not() {
+        let old: String = (0..20).map(|n| format!("{n}\n")).collect();
+        let six = old.replace("\n3\n", "\n3x\n").replace("\n10\n", "\n10x\n");
+        assert_eq!(diff(&old, &six).matches("@@ -").count(), 1);
+        assert!(diff(&old, &six).contains("@@ -1,14 +1,14 @@"));
+        let seven = old.replace("\n3\n", "\n3x\n").replace("\n11\n", "\n11x\n");
+        let seven = diff(&old, &seven);
+        assert!(seven.contains("@@ -1,7 +1,7 @@") && seven.contains("@@ -9,7 +9,7 @@"));
+    }
+
+    #[test]
+    fn lines_are_escaped_and_coloured() {
+        let mut out = Vec::new();
+        let style = DiffStyle { color: true };
+        write_diff(&mut out, "k\u{1b}.dat", "a\n", "b\u{7}\n", style).unwrap();
+        let out = String::from_utf8(out).unwrap();
+        // The headers too, coloured by their first character.
+        assert!(
+            out.starts_with("\x1b[31m--- k\\u{001B}.dat\x1b[0m\n"),
+            "{out}"
+        );
+        assert!(
+            out.contains("\x1b[31m-a\x1b[0m\n\x1b[32m+b\\u{0007}\x1b[0m\n"),
+            "{out}"
+        );
+        assert!(out.contains("\x1b[36m@@ -1 +1 @@\x1b[0m\n"), "{out}");
+    }
+
+    #[test]
+    fn a_text_too_large_for_a_diff_names_the_lines_that_change() {
+        assert_eq!(changed_lines("a\nb\nc\nd\n", "a\nB\nC\nd\n"), (2, 3));
+        assert_eq!(changed_lines("a\nb\n", "x\nb\n"), (1, 1));
+        assert_eq!(changed_lines("a\nb\n", "a\nb\nc\n"), (3, 3));
+        assert_eq!(changed_lines("a\nb\n", "a\n"), (2, 2));
+        // An insertion between two equal lines: the line after it.
+        assert_eq!(changed_lines("a\na\n", "a\nx\na\n"), (2, 2));
     }
 }

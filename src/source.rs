@@ -19,9 +19,12 @@ use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
-use crate::check::MAX_KEPT_PER_RULE;
 use crate::encoding;
 use crate::syntax::Span;
+
+/// The most findings of one fixable rule kept in memory for one file; the rest are only
+/// counted. (Here, below the check, for the lines of invalid UTF-8 a file keeps.)
+pub const MAX_KEPT_PER_RULE: usize = 10_000;
 
 /// The largest file `ekb` reads. Larger inputs (or endless ones such as `/dev/zero`) are
 /// refused with a clear message instead of exhausting memory.
@@ -303,19 +306,12 @@ impl Clone for Text {
     }
 }
 
-/// Whether `bytes` are UTF-8, checked a part per core on a large file, with the processor's
-/// vector instructions (simdutf8 chooses them at run time): this pass stands between
-/// reading the file and everything else. Each core first calls `load` with its part (a
-/// mapped file's pages: [`load_pages`]).
-fn is_utf8(bytes: &[u8], load: impl Fn(Range<usize>) + Sync) -> bool {
-    let parts = crate::parallel::parts_for_text(bytes.len());
-    let ranges = crate::parallel::line_ranges(bytes, parts);
-    crate::parallel::map_ranges(ranges, |range| {
-        load(range.clone());
-        simdutf8::basic::from_utf8(&bytes[range]).is_ok()
-    })
-    .into_iter()
-    .all(|valid| valid)
+/// Whether `bytes` are UTF-8, checked with the processor's vector instructions (simdutf8
+/// chooses them at run time). `load` is first called with the whole range (a mapped
+/// file's pages: [`load_pages`]).
+fn is_utf8(bytes: &[u8], load: impl Fn(Range<usize>)) -> bool {
+    load(0..bytes.len());
+    simdutf8::basic::from_utf8(bytes).is_ok()
 }
 
 /// Loads the pages of `range` of `map` in one system call, where reading them would take a

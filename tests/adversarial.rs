@@ -4,14 +4,17 @@
 //! from a file reaches the terminal raw, whichever command prints it.
 //! Big inputs are generated in a temporary folder, never committed.
 
+#[path = "support/generate.rs"]
+mod generate;
+
 use std::path::Path;
 use std::time::Duration;
 
 use assert_cmd::Command;
 use ekb::check::{check, Checked, MAX_SHOWN_PER_RULE};
-use ekb::generate::{generate, Spec};
 use ekb::model::build::Options;
 use ekb::SourceFile;
+use generate::{generate, Spec};
 use predicates::prelude::*;
 
 /// `ekb` run in an empty folder (no configuration is found there), with a time limit so

@@ -4,13 +4,15 @@
 //! and `fix` are idempotent, `fmt` keeps the model, and a valid file's export imports to the
 //! same model. The inputs the fuzzer once broke on are replayed from `tests/fixtures/fuzz/`.
 
+#[path = "support/generate.rs"]
+mod generate;
 mod invariants;
 
 use ekb::check::check;
-use ekb::generate::{generate, Spec};
 use ekb::model::build::Options;
 use ekb::model::Dialect;
 use ekb::SourceFile;
+use generate::{generate, Spec};
 use invariants::survives;
 use proptest::prelude::*;
 

@@ -8,6 +8,9 @@
 //! Then: the fixes of the fixable rules, applied to the text; the real files of the corpus
 //! (`tests/fixtures/corpus/`, copied unchanged); and the rule table of `docs/rules.md`.
 
+#[path = "support/generate.rs"]
+mod generate;
+
 use std::path::{Path, PathBuf};
 
 use ekb::check::check_on_map;
@@ -829,7 +832,7 @@ fn control_characters_and_unicode_spaces_are_found_far_into_a_large_file() {
 fn findings_at_one_place_keep_their_order_when_the_locations_are_checked_in_parts() {
     // Enough locations to be checked on every core, while the tree's shape is made on
     // another thread; its finding (slow load, at the start) still comes before the tour's.
-    let text: String = ekb::generate::generate(&ekb::generate::Spec::new(6_000))
+    let text: String = generate::generate(&generate::Spec::new(6_000))
         .lines()
         .filter(|line| !line.starts_with("tourSpecification"))
         .map(|line| format!("{line}\n"))
@@ -1343,12 +1346,12 @@ fn the_seed_file_on_todays_robot_stands_at_the_origin() {
 
 /// A generated file of `locations` complete locations, in ascending id order or not.
 fn generated(locations: usize, shuffle: bool) -> SourceFile {
-    let spec = ekb::generate::Spec {
+    let spec = generate::Spec {
         dialect: Dialect::Current,
         shuffle,
-        ..ekb::generate::Spec::new(locations)
+        ..generate::Spec::new(locations)
     };
-    SourceFile::from_bytes("generated", ekb::generate::generate(&spec).into_bytes())
+    SourceFile::from_bytes("generated", generate::generate(&spec).into_bytes())
 }
 
 #[test]

@@ -4,7 +4,10 @@
 use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput};
-use ekb::generate::{generate, Spec};
+use generate::{generate, Spec};
+
+#[path = "../../tests/support/generate.rs"]
+mod generate;
 use ekb::model::build::Options;
 use ekb::SourceFile;
 

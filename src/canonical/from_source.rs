@@ -12,11 +12,10 @@ use std::fmt;
 use super::{
     balance, known_key, padding, slot, BlockOrder, Document, Written, PADDING, UNKNOWN_SLOT,
 };
+use super::{name_lines, NAMED_LINES};
 use crate::model::build::{parse_id, tour_items};
 use crate::model::{IdMap, Key, ValueKind};
-use crate::parallel;
 use crate::render::escape::escape;
-use crate::rewrite::{name_lines, NAMED_LINES};
 use crate::suppression;
 use crate::syntax::{self, is_blank, Body, Line, LineEnding, Span};
 
@@ -208,7 +207,7 @@ fn stray_returns(text: &str) -> Unformattable {
 }
 
 impl Layout {
-    /// The first reading of `text`, its lines read in parts on the cores.
+    /// The first reading of `text`, its lines read in pieces.
     fn read(text: &str) -> Result<Layout, Unformattable> {
         let most_placed = text.len() / PLACED_SHARE / std::mem::size_of::<Placed>();
         let mut layout = Layout {
@@ -259,7 +258,7 @@ impl Layout {
                 }
             }
         };
-        read_in_parts(text, |lines, end| seen_lines(text, lines, end), each);
+        read_in_pieces(text, |lines, end| seen_lines(text, lines, end), each);
         if any_stray_return {
             return Err(stray_returns(text));
         }
@@ -408,63 +407,43 @@ fn arrange(
     (order, written, block_ends)
 }
 
-/// How many bytes of text [`read_in_parts`] reads at a time.
+/// How many bytes of text [`read_in_pieces`] reads at a time.
 const READ_AT_A_TIME: usize = 8 << 20;
 
-/// What `part` makes of each range of lines of `text` (a starting offset and an end), given
-/// to `each` in order: the lines read in parts on the cores, [`READ_AT_A_TIME`] bytes at a
-/// time, given to `each` as the next ones are read (what `part` makes of them is held
-/// meanwhile).
-fn read_in_parts<T: Send>(
+/// What `part` makes of each piece of lines of `text` (a starting offset and an end),
+/// given to `each` in order, [`READ_AT_A_TIME`] bytes at a time: only what `part` makes of
+/// one piece is held.
+fn read_in_pieces<T>(
     text: &str,
-    part: impl Fn(syntax::Lines<'_>, usize) -> Vec<T> + Sync,
+    part: impl Fn(syntax::Lines<'_>, usize) -> Vec<T>,
     each: impl FnMut(T),
 ) {
-    read_in_parts_of(text, READ_AT_A_TIME, part, each);
+    read_in_pieces_of(text, READ_AT_A_TIME, part, each);
 }
 
-/// [`read_in_parts`], `at_a_time` bytes at a time.
-fn read_in_parts_of<T: Send>(
+/// [`read_in_pieces`], `at_a_time` bytes at a time.
+fn read_in_pieces_of<T>(
     text: &str,
     at_a_time: usize,
-    part: impl Fn(syntax::Lines<'_>, usize) -> Vec<T> + Sync,
+    part: impl Fn(syntax::Lines<'_>, usize) -> Vec<T>,
     mut each: impl FnMut(T),
 ) {
     let bytes = text.as_bytes();
-    let read = |at: usize, end: usize| {
-        let ranges = parallel::line_ranges(&bytes[at..end], parallel::parts_for_text(end - at));
-        parallel::map_ranges(ranges, |range| {
-            part(syntax::lines_from(text, at + range.start), at + range.end)
-        })
-    };
     let mut at = 0;
-    let mut read_before: Option<Vec<Vec<T>>> = None;
     while at < bytes.len() {
         let newline = bytes
             .get(at + at_a_time..)
             .and_then(|rest| memchr::memchr(b'\n', rest));
         let end = newline.map_or(bytes.len(), |newline| at + at_a_time + newline + 1);
-        read_before = Some(match read_before.take() {
-            None => read(at, end),
-            // The lines read before are given to `each` here as these are read.
-            Some(before) => std::thread::scope(|scope| {
-                let reading = std::thread::Builder::new().spawn_scoped(scope, || read(at, end));
-                before.into_iter().flatten().for_each(&mut each);
-                match reading {
-                    Ok(reading) => reading
-                        .join()
-                        .unwrap_or_else(|panic| std::panic::resume_unwind(panic)),
-                    Err(_) => read(at, end),
-                }
-            }),
-        });
+        part(syntax::lines_from(text, at), end)
+            .into_iter()
+            .for_each(&mut each);
         at = end;
     }
-    read_before.into_iter().flatten().flatten().for_each(each);
 }
 
 /// Where each located entry line of `text` starts, and its id, given to `each` in order
-/// (read in parts on the cores).
+/// (read in pieces).
 fn each_located(text: &str, each: impl FnMut((u32, u32))) {
     let part = |lines: syntax::Lines<'_>, end: usize| {
         lines
@@ -478,7 +457,7 @@ fn each_located(text: &str, each: impl FnMut((u32, u32))) {
             })
             .collect()
     };
-    read_in_parts(text, part, each);
+    read_in_pieces(text, part, each);
 }
 
 /// Puts the lines starting at `block` in key order ([`slot`]), keeping the order of lines of
@@ -785,7 +764,7 @@ mod tests {
         let expected: Vec<u32> = syntax::lines(&text).map(|line| line.span.start).collect();
         for at_a_time in [1, 10, 100, 10_000] {
             let mut seen = Vec::new();
-            read_in_parts_of(&text, at_a_time, starts, |start| seen.push(start));
+            read_in_pieces_of(&text, at_a_time, starts, |start| seen.push(start));
             assert_eq!(seen, expected, "{at_a_time}");
         }
     }

@@ -35,13 +35,10 @@ pub use from_source::Unformattable;
 use std::borrow::Cow;
 use std::io::{self, Write};
 use std::ops::ControlFlow;
-use std::sync::Mutex;
 
 use crate::model::Key;
-use crate::parallel::{self, lock};
 use crate::reader::Reader;
 use crate::syntax::{self, Body, Line};
-use crate::unified::{NewLine, NewLines, Recorded};
 use from_source::Place;
 
 /// Padding never makes a line as long as the smallest reader's line buffer.
@@ -59,18 +56,25 @@ const UNKNOWN_SLOT: u8 = Key::CulturalKnowledge as u8 + 1;
 /// How many lines [`Document::write_checked`] lays out before it writes them.
 const LINES_AT_A_TIME: usize = 1 << 17;
 
-/// How many blocks [`Document::record`](NewLines::record) lays out at a time (what is
-/// recorded of them in parts is held until it is put together).
-const BLOCKS_RECORDED_AT_A_TIME: usize = 1 << 12;
-
-/// The fewest blocks a core is given to lay out.
-const MIN_BLOCKS_PER_PART: usize = 1 << 9;
-
-/// The fewest lines a core is given to lay out: fewer are not worth starting a thread.
-const MIN_LINES_PER_PART: usize = 1 << 13;
-
 /// The widest padding a key gets (`VALUE_COLUMN - 1` spaces, for a key of one character).
 const PADDING: &str = "                              ";
+
+/// How many lines a refusal names before it says "and N more".
+pub const NAMED_LINES: usize = 5;
+
+/// `line 4 (`gestureArm`), line 11 (`culturalKnowledge`) and 3 more`: the lines a refusal is
+/// about, each with a short description.
+pub fn name_lines(lines: &[(u32, String)]) -> String {
+    let named: Vec<String> = lines
+        .iter()
+        .take(NAMED_LINES)
+        .map(|(number, what)| format!("line {number} (`{what}`)"))
+        .collect();
+    match lines.len().saturating_sub(NAMED_LINES) {
+        0 => named.join(", "),
+        more => format!("{} and {more} more", named.join(", ")),
+    }
+}
 
 /// `text` in the canonical layout, `None` when it is in it already; or why it cannot be.
 /// (`ekb fmt` writing a file streams it with [`Document::write_checked`] instead.)
@@ -297,19 +301,21 @@ impl<'a> Document<'a> {
     /// Writes the canonical text to `out`, each line read back as it is laid out: one that
     /// would not read as the line meant (the layout must keep every line and value) is
     /// [`WriteError::NotReadBack`], and nothing after it is written. The lines are laid out
-    /// [`LINES_AT_A_TIME`] at a time, in parts on the cores: however large the file, only
-    /// those are held.
+    /// [`LINES_AT_A_TIME`] at a time: however large the file, only those are held.
     pub fn write_checked(&self, out: &mut impl Write) -> Result<(), WriteError> {
         let mut lines = Vec::new();
+        let mut text = String::new();
         let mut first = true;
-        let mut failed = None;
-        // The texts of the parts, kept for the next lines (not allocated again each time).
-        let texts = Mutex::new(Vec::new());
         let mut write = |lines: &mut Vec<Unread<'_>>| {
-            let written = self.write_lines(lines, std::mem::take(&mut first), &texts, out);
+            let read_back = self.lay_out_checked(lines, std::mem::take(&mut first), &mut text);
             lines.clear();
-            written
+            out.write_all(&text.as_bytes()[1..])?;
+            match read_back {
+                true => Ok(()),
+                false => Err(WriteError::NotReadBack),
+            }
         };
+        let mut failed = None;
         let _ = self.walk_unread(|line, _| {
             lines.push(line);
             if lines.len() < LINES_AT_A_TIME {
@@ -325,36 +331,6 @@ impl<'a> Document<'a> {
             Some(error) => Err(error),
             None => write(&mut lines),
         }
-    }
-
-    /// Lays out `lines` (the file's first ones if `first`), in parts on the cores, each in
-    /// a text taken from `texts` (and given back), and writes them to `out` in order, up to
-    /// the first line that does not read back.
-    fn write_lines(
-        &self,
-        lines: &[Unread<'_>],
-        first: bool,
-        texts: &Mutex<Vec<String>>,
-        out: &mut impl Write,
-    ) -> Result<(), WriteError> {
-        let ranges = parallel::item_ranges(lines.len(), MIN_LINES_PER_PART);
-        let parts = parallel::map_ranges(ranges, |range| {
-            let mut text = lock(texts).pop().unwrap_or_default();
-            let read_back =
-                self.lay_out_checked(&lines[range.clone()], first && range.start == 0, &mut text);
-            (text, read_back)
-        });
-        let mut failed = None;
-        for (text, read_back) in parts {
-            if failed.is_none() {
-                failed = match out.write_all(&text.as_bytes()[1..]) {
-                    Err(error) => Some(WriteError::Io(error)),
-                    Ok(()) => (!read_back).then_some(WriteError::NotReadBack),
-                };
-            }
-            lock(texts).push(text);
-        }
-        failed.map_or(Ok(()), Err)
     }
 
     /// Lays out `lines` in `text` after a newline, each read back after the newline before
@@ -512,11 +488,7 @@ impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
                 self.line(comment, line, std::mem::take(&mut first))?;
             }
         }
-        let entry = Unread::Entry {
-            start,
-            tour,
-            written,
-        };
+        let entry = Unread::Entry { start, tour };
         self.line(entry, start, first)
     }
 
@@ -545,157 +517,15 @@ impl<'d, V: FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()>> Walk<'d, '_, V> {
 #[derive(Clone)]
 enum Unread<'d> {
     Item(Item<'d>),
-    Entry {
-        start: u32,
-        tour: bool,
-        /// Its length, if it is written as the layout writes it ([`Document::written`]).
-        written: Option<u16>,
-    },
+    Entry { start: u32, tour: bool },
 }
 
 impl<'d> Unread<'d> {
     fn read(self, document: &'d Document<'_>) -> Item<'d> {
         match self {
             Unread::Item(item) => item,
-            Unread::Entry { start, tour, .. } => Item::Entry(document.entry_at(start, tour)),
+            Unread::Entry { start, tour } => Item::Entry(document.entry_at(start, tour)),
         }
-    }
-}
-
-/// The canonical text, each line with the line of the document's text it was made from.
-impl NewLines for Document<'_> {
-    fn each_line(&self, visit: &mut dyn FnMut(NewLine<'_>) -> ControlFlow<()>) -> ControlFlow<()> {
-        self.each_wanted_line(&mut |_| true, &mut |_, line| visit(line))
-    }
-
-    /// The entry lines in the order the layout writes them ascend in the text: then so do
-    /// the comments that go with them (the header's before, the footer's after).
-    fn origins_ascend(&self) -> bool {
-        let order = self.order.iter().copied();
-        let entries = self
-            .unplaced
-            .iter()
-            .copied()
-            .chain(order)
-            .chain(self.tour.iter().copied());
-        entries
-            .clone()
-            .zip(entries.skip(1))
-            .all(|(before, after)| before < after)
-    }
-
-    /// The blocks laid out [`BLOCKS_RECORDED_AT_A_TIME`] at a time, in parts on the cores.
-    fn record<'o>(&self, old: &'o str) -> Recorded<'o> {
-        let mut recorded = Recorded::none(old);
-        let mut head = Walk {
-            document: self,
-            sections: 0,
-            visit: recording(self, old, &mut recorded),
-        };
-        let _ = head.head();
-        let sections = head.sections;
-        drop(head);
-        let blocks = self.block_ends.len();
-        for batch in (0..blocks).step_by(BLOCKS_RECORDED_AT_A_TIME) {
-            let batch = batch..(batch + BLOCKS_RECORDED_AT_A_TIME).min(blocks);
-            let ranges = parallel::item_ranges(batch.len(), MIN_BLOCKS_PER_PART);
-            let ranges = ranges
-                .into_iter()
-                .map(|range| range.start + batch.start..range.end + batch.start);
-            let cut = |rest| parallel::cut_in_middle(rest, MIN_BLOCKS_PER_PART);
-            let parts = parallel::map_shared(ranges.collect(), cut, |share| {
-                let mut part = Recorded::none(old);
-                let mut walk = Walk {
-                    document: self,
-                    sections: sections + share.start(),
-                    visit: recording(self, old, &mut part),
-                };
-                let mut block = share.start();
-                while block < share.end(block) {
-                    let _ = walk.block(block);
-                    block += 1;
-                }
-                drop(walk);
-                part
-            });
-            for part in parts {
-                recorded.append(part);
-            }
-        }
-        let mut tail = Walk {
-            document: self,
-            sections: sections + blocks,
-            visit: recording(self, old, &mut recorded),
-        };
-        let _ = tail.tail();
-        drop(tail);
-        recorded
-    }
-
-    fn each_wanted_line(
-        &self,
-        wanted: &mut dyn FnMut(u32) -> bool,
-        visit: &mut dyn FnMut(u32, NewLine<'_>) -> ControlFlow<()>,
-    ) -> ControlFlow<()> {
-        let mut line = String::new();
-        let mut index = 0;
-        self.walk_unread(|unread, origin| {
-            index += 1;
-            if !wanted(index - 1) {
-                return ControlFlow::Continue(());
-            }
-            line.clear();
-            push_item(&mut line, &unread.read(self));
-            visit(
-                index - 1,
-                NewLine {
-                    text: &line,
-                    origin,
-                },
-            )
-        })
-    }
-}
-
-/// A visit of a [`Walk`] that lays out each line, and records it in `recorded`, of lines
-/// made from `old`: an entry line written as the layout writes it ([`Document::written`])
-/// is recorded as its origin's line without being laid out, if `old` is the document's
-/// text.
-fn recording<'d, 'r, 'o>(
-    document: &'d Document<'_>,
-    old: &'o str,
-    recorded: &'r mut Recorded<'o>,
-) -> impl FnMut(Unread<'d>, Option<u32>) -> ControlFlow<()> + use<'d, 'r, 'o> {
-    let mut text = String::new();
-    let old_is_text = std::ptr::eq(old, document.text());
-    move |line, origin| {
-        if let (
-            Unread::Entry {
-                start,
-                written: Some(length),
-                ..
-            },
-            true,
-        ) = (&line, old_is_text)
-        {
-            if cfg!(debug_assertions) {
-                text.clear();
-                push_item(&mut text, &line.clone().read(document));
-                let written = &document.text()[*start as usize..][..usize::from(*length)];
-                assert_eq!(written, text, "not as written");
-            }
-            // SAFETY: the first reading found the line there, `length` bytes long with its
-            // line ending (`Document::written`), in this text.
-            unsafe { recorded.push_its_origin(*start, u32::from(*length)) };
-            return ControlFlow::Continue(());
-        }
-        text.clear();
-        push_item(&mut text, &line.read(document));
-        recorded.push(NewLine {
-            text: &text,
-            origin,
-        });
-        ControlFlow::Continue(())
     }
 }
 
@@ -758,6 +588,16 @@ fn reads_as(text: &str, line: &Line, item: &Item<'_>) -> bool {
 mod tests {
     use super::*;
 
+    #[test]
+    fn names_a_few_lines() {
+        let lines: Vec<(u32, String)> = (1..=7).map(|n| (n, format!("k{n}"))).collect();
+        assert_eq!(name_lines(&lines[..1]), "line 1 (`k1`)");
+        assert_eq!(
+            name_lines(&lines),
+            "line 1 (`k1`), line 2 (`k2`), line 3 (`k3`), line 4 (`k4`), line 5 (`k5`) and 2 more"
+        );
+    }
+
     fn entry<'a>(key: &'a str, id: Option<&'a str>, value: &'a str) -> Written<'a> {
         Written {
             key,
@@ -797,12 +637,12 @@ mod tests {
     }
 
     #[test]
-    fn a_large_file_is_laid_out_in_parts_as_in_one() {
-        // Lines shorter than a placed line's 8 bytes are read again to be put in place (in
-        // parts, on the cores); and written in several batches.
+    fn a_large_file_is_laid_out_in_batches_as_in_one() {
+        // Lines shorter than a placed line's 8 bytes are read again to be put in place; and
+        // written in several batches.
         let lines = 300_000;
         let text = format!("# head\n\n{}", "a 1 x\nb 2 y\n".repeat(lines));
-        assert!(text.len() > 2 * parallel::MIN_BYTES_PER_PART && lines > LINES_AT_A_TIME);
+        assert!(lines > LINES_AT_A_TIME);
         let document = Document::parse(&text).unwrap();
         let block = |line: &str| line.repeat(lines);
         let expected = format!(
@@ -821,24 +661,7 @@ mod tests {
     }
 
     #[test]
-    fn a_large_file_is_recorded_in_parts_as_in_one() {
-        // Blocks out of order, with comments and lines the layout changes, in more blocks
-        // than are recorded at a time; a header, a line without an id, a tour and a footer
-        // around them.
-        let blocks = 2 * BLOCKS_RECORDED_AT_A_TIME + 100;
-        let text: String = (0..blocks)
-            .map(|n| format!("# {n}\nb {} x\na   {} y\n", blocks - n, blocks - n))
-            .collect();
-        let text = format!("# header\n\nhello\n{text}tourSpecification 1 2\n# end\n");
-        let document = Document::parse(&text).unwrap();
-        let in_parts = document.record(&text);
-        let in_one = crate::unified::lines_of(&document);
-        assert!(in_one.len() > 3 * blocks);
-        assert_eq!(crate::unified::lines_of(&in_parts), in_one);
-    }
-
-    #[test]
-    fn lines_as_written_are_recorded_with_their_lengths_wherever_they_move() {
+    fn lines_as_written_are_marked_with_their_lengths() {
         // Each line as the layout writes it, each block's keys out of order: the lengths
         // the first reading found move with their lines as blocks are sorted and balanced.
         let line = |key: &str, id: usize, value: &str| {
@@ -858,38 +681,6 @@ mod tests {
         let marked = document.written.iter().filter(|&&length| length > 0);
         assert_eq!((document.order.len(), marked.count()), (80, 79));
         assert_ne!(document.render(), text);
-        let recorded = document.record(&text);
-        assert_eq!(
-            crate::unified::lines_of(&recorded),
-            crate::unified::lines_of(&document)
-        );
-    }
-
-    #[test]
-    fn origins_ascend_when_they_do() {
-        let ascend = |document: &Document<'_>| {
-            let mut origins = Vec::new();
-            let _ = document.each_line(&mut |line| {
-                origins.extend(line.origin);
-                ControlFlow::Continue(())
-            });
-            origins.windows(2).all(|pair| pair[0] < pair[1])
-        };
-        let texts = [
-            ("# h\n\nrobotLocationDescription 1 A\n# c\nrobotLocation 1 1  2 3\n\n\
-              robotLocationDescription 2 B\ntourSpecification 1 1\n# end\n", true),
-            ("robotLocation 1 1 2 3\nrobotLocationDescription 1 A\n", false),
-            ("robotLocationDescription 1 A\nrobotLocationDescription 2 B\nrobotLocation 1 1 2 3\n", false),
-            ("tourSpecification 1 1\nrobotLocationDescription 1 A\n", false),
-            ("robotLocationDescription 1 A\nhello\n", false),
-            ("hello\n# c\nrobotLocationDescription 1 A\n", true),
-            ("", true),
-        ];
-        for (text, expected) in texts {
-            let document = Document::parse(text).unwrap();
-            assert_eq!(document.origins_ascend(), expected, "{text:?}");
-            assert_eq!(ascend(&document), expected, "{text:?}");
-        }
     }
 
     #[test]

@@ -21,7 +21,6 @@ use crate::rules::structure::invalid_utf8::INVALID_UTF8;
 use crate::source::SourceFile;
 use crate::stderr_line;
 use crate::syntax::{self, Body};
-use crate::unified::{InOrder, NewLines, Recorded, Through};
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -148,34 +147,20 @@ fn fix_file(
     })
 }
 
-/// Prints the diff of `read` and its blocks put in a balanced order (`document`), from the
-/// layout: the lines of the text the document laid out taken back to the lines of `read`
-/// they came from, when that text is not `read`'s (the fixes edited it, or it was read as
-/// Latin-1). The layout is made once ([`Recorded`], in parts on the cores when it is the
-/// file's own), though the diff reads it twice more.
-/// Returns whether they differ.
+/// Prints the diff of `read` and its blocks put in a balanced order (`document`, laid out
+/// from `read`'s text or from the text the fixes made of it). Returns whether they differ.
 fn print_balanced(
     read: &SourceFile,
     document: &Document<'_>,
     style: DiffStyle,
 ) -> Result<bool, CommandError> {
-    let old = read.text();
-    let new = match std::ptr::eq(document.text(), old) {
-        true => document.record(old),
-        false => {
-            let between = InOrder {
-                old,
-                new: document.text(),
-            }
-            .origins();
-            let through = Through {
-                new: document,
-                between: &between,
-            };
-            Recorded::new(old, &through)
-        }
-    };
-    Ok(rewrite::print_diff(read.name(), old, &new, style)?)
+    let balanced = document.render();
+    Ok(rewrite::print_diff(
+        read.name(),
+        read.text(),
+        &balanced,
+        style,
+    )?)
 }
 
 /// The file at `path`, not UTF-8, read as Latin-1 (Windows-1252): `--unsafe-fixes` guesses
@@ -221,7 +206,7 @@ fn refuse_inexpressible(source: &SourceFile, target: Dialect) -> Result<(), Comm
          first if the robot can do without {}",
         escape(source.name()),
         target.name(),
-        rewrite::name_lines(&lines),
+        crate::canonical::name_lines(&lines),
         if lines.len() == 1 { "has" } else { "have" },
         if lines.len() == 1 { "it" } else { "them" },
         if lines.len() == 1 { "it" } else { "them" },

@@ -63,9 +63,18 @@ fn format_file(
         return rewrite::deliver(path, &source, source.text(), mode, style);
     }
     if mode == Mode::Diff {
-        // Written from the layout, a line at a time: never the formatted text, nor the diff.
-        rewrite::print_diff(source.name(), source.text(), &document, style)?;
-        return Ok(true);
+        // The layout keeps every line and value: each line written is read back.
+        let mut formatted = Vec::with_capacity(source.text().len() + source.text().len() / 4);
+        document
+            .write_checked(&mut formatted)
+            .map_err(|e| cannot(e.to_string()))?;
+        let formatted = String::from_utf8(formatted).expect("the layout writes text");
+        return Ok(rewrite::print_diff(
+            source.name(),
+            source.text(),
+            &formatted,
+            style,
+        )?);
     }
     // A formatted file can be several times the original (every id padded to column 31): it
     // is written as it is made, never held whole; each line is read back as it is written

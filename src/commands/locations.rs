@@ -10,7 +10,6 @@ use super::{CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::export::LocationView;
 use crate::model::{Dialect, Key, KnowledgeBase, Language, Location, Phase};
-use crate::parallel;
 use crate::present::field::Field;
 use crate::present::{
     self, language, robot, table, AllTourPositions, Gesture, Message, PositionsOf, TourPositions,
@@ -119,17 +118,11 @@ fn write_table(checked: &Checked<'_>, loaded: Loaded<'_>, out: &mut impl Write) 
         row.push(tour_cell(&positions, location.id));
         row
     };
-    // The rows of a large file are made in parts, one per core, and drawn in order.
     let locations = kb.locations();
-    let ranges = parallel::item_ranges(locations.len(), MIN_ROWS_PER_PART);
-    let parts = parallel::map_ranges(ranges, |range| {
-        let mut rows = table::Rows::with_capacity(&header, range.len());
-        for location in locations.iter().skip(range.start).take(range.len()) {
-            rows.add_row(row(location));
-        }
-        rows
-    });
-    let mut table = table::Rows::join(parts).unwrap_or_else(|| table::Rows::new(&header));
+    let mut table = table::Rows::with_capacity(&header, locations.len());
+    for location in locations {
+        table.add_row(row(location));
+    }
     // A narrow table wraps other columns, never the marks (`RW` on one line, `~` below).
     table.keep_unbroken(header.len() - 2);
     // The rows hold what the table shows: what the reader holds goes before it is drawn.
@@ -143,10 +136,6 @@ fn write_table(checked: &Checked<'_>, loaded: Loaded<'_>, out: &mut impl Write) 
         checked.reader
     )
 }
-
-/// Below this many locations, the rows of the table are not worth a thread of their own
-/// (a row takes about 13,000 instructions; a thread, about as many as 50 rows).
-const MIN_ROWS_PER_PART: usize = 1024;
 
 /// `before EN ✓ ZU ~ RW ~` and `after` on a second line.
 fn message_marks(location: &Location<'_>) -> String {

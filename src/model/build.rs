@@ -10,13 +10,11 @@
 //! no rule.
 
 use std::collections::HashMap;
-use std::ops::Range;
 
 use crate::model::{
     words, Arm, Dialect, IdMap, Key, KnowledgeBase, LineFacts, Location, Point, Pose, Tour, Value,
     ValueKind, LINE_STARTS_EVERY,
 };
-use crate::parallel;
 use crate::reader::Reader;
 use crate::render::escape::escape;
 use crate::source::LineStart;
@@ -43,28 +41,26 @@ pub struct Options {
     pub verbose: bool,
 }
 
-/// Where the builder reports what it finds: the findings of the whole file, gathered from
-/// those of its parts ([`Findings::Part`]), each part's read by one thread.
+/// Where the builder reports what it finds: the findings of the whole file, gathered by a
+/// [`LineFindings`] made for the reading ([`Findings::Part`]).
 pub trait Findings {
-    /// What is found in the lines of one part of the text.
-    type Part: LineFindings + Send;
+    /// What is found in the lines of the text as they are read.
+    type Part: LineFindings;
 
-    /// Starts the findings of the lines of one part of the text, to be added here (so made
-    /// as these are).
+    /// Starts the findings of the lines of the text, to be added here (so made as these
+    /// are).
     fn part(&self) -> Self::Part;
 
-    /// Adds the findings of the whole text, read in one part or in several joined in order
-    /// ([`LineFindings::append`]) and finished ([`LineFindings::finish`]), after those
-    /// already here.
+    /// Adds the findings of the whole text, read and finished ([`LineFindings::finish`]),
+    /// after those already here.
     fn add_part(&mut self, part: Self::Part);
 }
 
-/// What the builder finds on the lines of one part of a text, in the order it reads them:
+/// What the builder finds on the lines of a text, in the order it reads them:
 /// each line, and each problem it finds while it reads one. Facts only (spans of the text,
 /// keys, ids, tokens): what to make of them is the rules' business.
 pub trait LineFindings {
-    /// A line, before anything else is read of it. (Its [`Line::number`] counts from the
-    /// part's first line: a finding that needs the file's line numbers finds them after.)
+    /// A line, before anything else is read of it.
     fn line(&mut self, line: &Line, text: &str);
     /// The arguments of an entry line (one with a key, not blank to the robot), before its
     /// key is read.
@@ -95,10 +91,8 @@ pub trait LineFindings {
     fn duplicate_tour(&mut self, later: Span, earlier: Span);
     /// Both pose keys in one file: the first line of each and how many lines use it.
     fn mixed_dialect(&mut self, seed: (Span, usize), current: (Span, usize));
-    /// Adds what was found in the lines after this part's, as if found here after these.
-    fn append(&mut self, later: Self);
-    /// The whole text has been read, in one part or in several appended (called once,
-    /// before the facts that only the whole text tells: [`LineFindings::mixed_dialect`]).
+    /// The whole text has been read (called once, before the facts that only the whole text
+    /// tells: [`LineFindings::mixed_dialect`]).
     fn finish(&mut self);
 }
 
@@ -133,84 +127,20 @@ impl LineFindings for Unheeded {
     fn float_overflow(&mut self, _: Key, _: u32, _: Span, _: &str, _: bool) {}
     fn duplicate_tour(&mut self, _: Span, _: Span) {}
     fn mixed_dialect(&mut self, _: (Span, usize), _: (Span, usize)) {}
-    fn append(&mut self, _: Unheeded) {}
     fn finish(&mut self) {}
 }
 
 /// Builds the model of `text`, reporting what is wrong with its lines to `out`.
-///
-/// A large file is read in parts, one per core, and the parts joined; when a location or
-/// the tour is written in more than one part in a way that only reading in order can
-/// settle (a key given in both, say), the file is read again in one part.
-pub fn build<'a, F: Findings + Sync>(
-    text: &'a str,
-    options: &Options,
-    out: &mut F,
-) -> KnowledgeBase<'a> {
-    // Verbose output lists the lines in order, which only one reader can do.
-    let parts = if options.verbose {
-        1
-    } else {
-        parallel::parts_for_text(text.len())
-    };
-    build_in_parts(text, options, parts, out)
-}
-
-/// [`build`], reading `text` in at most `parts` parts.
-pub(crate) fn build_in_parts<'a, F: Findings + Sync>(
-    text: &'a str,
-    options: &Options,
-    parts: usize,
-    out: &mut F,
-) -> KnowledgeBase<'a> {
-    let bytes = text.as_bytes();
-    let ranges = parallel::line_ranges(bytes, parts);
-    if ranges.len() > 1 {
-        let cut = |rest: Range<usize>| cut_lines(bytes, rest);
-        let parent = &*out;
-        let mut read = parallel::map_shared(ranges, cut, |share| {
-            let mut found = parent.part();
-            let builder = Builder::read_shared(text, options, share, &mut found);
-            (builder, found)
-        })
-        .into_iter();
-        let (mut whole, mut found) = read.next().expect("one part at least");
-        if read.all(|(part, part_found)| {
-            found.append(part_found);
-            whole.join(part)
-        }) {
-            let kb = whole.finish(&mut found);
-            out.add_part(found);
-            return kb;
-        }
-    }
+pub fn build<'a, F: Findings>(text: &'a str, options: &Options, out: &mut F) -> KnowledgeBase<'a> {
     let mut found = out.part();
-    let kb = Builder::read(text, options, 0..text.len(), &mut found).finish(&mut found);
+    let kb = Builder::read(text, options, &mut found).finish(&mut found);
     out.add_part(found);
     kb
 }
 
-/// Where to cut `rest`, lines of `bytes` a thread has yet to read, to share them with a
-/// thread that has none: after the line in the middle, if each half would be worth a
-/// thread of its own.
-fn cut_lines(bytes: &[u8], rest: Range<usize>) -> Option<usize> {
-    if rest.len() < 2 * parallel::MIN_BYTES_PER_PART {
-        return None;
-    }
-    let middle = rest.start + rest.len() / 2;
-    let newline = memchr::memchr(b'\n', &bytes[middle..rest.end])?;
-    Some(middle + newline + 1).filter(|&cut| cut < rest.end)
-}
-
-/// How many locations [`Builder::join`] moves between giving memory back.
-const JOIN_STEP: usize = 4096;
-
 struct Builder<'a> {
     text: &'a str,
     options: Options,
-    /// Locations joined from earlier parts (see [`Builder::join`]): each in ascending id
-    /// order, and all before those of `locations`.
-    runs: Vec<Vec<Location<'a>>>,
     locations: Vec<Location<'a>>,
     /// How many of the first `locations` are in ascending id order. Files are usually
     /// written so; those locations are found by binary search, with no map at all.
@@ -237,33 +167,15 @@ struct Builder<'a> {
 }
 
 impl<'a> Builder<'a> {
-    /// Reads the lines in `range` (whole lines) of `text`.
-    fn read(
-        text: &'a str,
-        options: &Options,
-        range: Range<usize>,
-        out: &mut impl LineFindings,
-    ) -> Builder<'a> {
-        Builder::read_shared(text, options, &mut parallel::Share::whole(range), out)
-    }
-
-    /// Reads the lines of `text` in `share` (whole lines), until it ends: it may be cut
-    /// short when another thread takes the far part.
-    fn read_shared(
-        text: &'a str,
-        options: &Options,
-        share: &mut parallel::Share<'_>,
-        out: &mut impl LineFindings,
-    ) -> Builder<'a> {
-        let range = share.start()..share.end(share.start());
+    /// Reads the lines of `text`.
+    fn read(text: &'a str, options: &Options, out: &mut impl LineFindings) -> Builder<'a> {
         let mut builder = Builder {
             text,
             options: *options,
-            runs: Vec::new(),
-            // Room for the locations of a part this size (a location is usually nine lines
+            // Room for the locations of a text this size (a location is usually nine lines
             // of 600 bytes together; this leaves room for terser ones): growing the list
             // would copy it. Room never written to is never given memory.
-            locations: Vec::with_capacity(range.len() / 256),
+            locations: Vec::with_capacity(text.len() / 256),
             ascending: 0,
             index: IdMap::default(),
             last: None,
@@ -277,12 +189,9 @@ impl<'a> Builder<'a> {
             miscased: IdMap::default(),
             misspelled: IdMap::default(),
         };
-        let mut next_noted = super::next_noted_line_start(text.as_bytes(), range.start);
-        for line in syntax::lines_from(&text[..range.end], range.start) {
+        let mut next_noted = LINE_STARTS_EVERY;
+        for line in syntax::lines(text) {
             let start = line.span.start as usize;
-            if start >= share.end(start) {
-                break;
-            }
             if start >= next_noted {
                 builder.facts.line_starts.push(LineStart {
                     offset: line.span.start,
@@ -294,117 +203,6 @@ impl<'a> Builder<'a> {
             builder.facts.lines = line.number;
         }
         builder
-    }
-
-    /// Adds what `later` read from the lines after this builder's, as if this builder had
-    /// read them. Returns false, leaving this builder half-joined, when the two parts
-    /// override each other: a key of one location, or the tour, written in both.
-    fn join(&mut self, later: Builder<'a>) -> bool {
-        if self.tour.is_some() && later.tour.is_some() {
-            return false;
-        }
-        self.tour = self.tour.take().or(later.tour);
-        let joined = if self.is_continued_by(&later.locations, later.ascending) {
-            self.append_run(later.locations)
-        } else {
-            self.flatten();
-            self.merge(later.locations)
-        };
-        if !joined {
-            return false;
-        }
-        for (first, next) in self.first_pose_key.iter_mut().zip(later.first_pose_key) {
-            *first = match (*first, next) {
-                (Some((span, count)), Some((_, more))) => Some((span, count + more)),
-                (first, next) => first.or(next),
-            };
-        }
-        self.facts.append(later.facts);
-        for (id, keys) in later.miscased {
-            *self.miscased.entry(id).or_default() |= keys;
-        }
-        for (id, keys) in later.misspelled {
-            *self.misspelled.entry(id).or_default() |= keys;
-        }
-        true
-    }
-
-    /// Whether `later` (the locations of the next part, the first `ascending` of them in
-    /// ascending id order) goes on in id order from where this builder's locations stop, as
-    /// a file written in id order does. Then the only location the two can share is this
-    /// builder's last, `later`'s first, whose lines the parts' boundary cut.
-    fn is_continued_by(&self, later: &[Location<'a>], ascending: usize) -> bool {
-        // (`locations` is empty only if no location was read yet: a run is never empty.)
-        self.ascending == self.locations.len()
-            && ascending == later.len()
-            && match (self.locations.last(), later.first()) {
-                (Some(last), Some(first)) => last.id <= first.id,
-                _ => true,
-            }
-    }
-
-    /// Keeps `later` as it is, a run of its own: nothing is moved (see
-    /// [`Locations`](crate::model::Locations)).
-    fn append_run(&mut self, mut later: Vec<Location<'a>>) -> bool {
-        if later.is_empty() {
-            return true;
-        }
-        if self.locations.last().map(|last| last.id) == Some(later[0].id) {
-            // The location whose lines the boundary cut: its halves are joined where the
-            // later one is, so that neither list moves.
-            let earlier = self.locations.pop().expect("a last location");
-            let later_half = std::mem::replace(&mut later[0], earlier);
-            if !later[0].join(later_half) {
-                return false;
-            }
-        }
-        if !self.locations.is_empty() {
-            self.runs.push(std::mem::take(&mut self.locations));
-        }
-        self.ascending = later.len();
-        self.locations = later;
-        self.last = None;
-        true
-    }
-
-    /// Makes the runs one list with `locations`, for a join that looks locations up by id.
-    fn flatten(&mut self) {
-        if self.runs.is_empty() {
-            return;
-        }
-        // Only lists in ascending order become runs, so all of them are, one after the
-        // other, with no location in the index.
-        debug_assert!(self.ascending == self.locations.len() && self.index.is_empty());
-        let mut all: Vec<Location<'a>> = self.runs.drain(..).flatten().collect();
-        all.append(&mut self.locations);
-        self.ascending = all.len();
-        self.locations = all;
-        self.last = None;
-    }
-
-    /// Adds `later`'s locations one by one: each joins the one of its id, or is added.
-    fn merge(&mut self, later: Vec<Location<'a>>) -> bool {
-        // The largest thing a part holds is its locations. They are taken from the end of
-        // the reversed list (so in file order), which gives its memory back as it shrinks,
-        // so that the two parts' locations are never all held twice.
-        let mut rest = later;
-        rest.reverse();
-        while let Some(location) = rest.pop() {
-            if rest.len() % JOIN_STEP == 0 {
-                rest.shrink_to_fit();
-            }
-            match self.find(location.id) {
-                Some(index) => {
-                    if !self.locations[index].join(location) {
-                        return false;
-                    }
-                }
-                None => {
-                    self.add(location);
-                }
-            }
-        }
-        true
     }
 
     /// The text of a span the lexer cut from this builder's text, with no check.
@@ -648,8 +446,8 @@ impl<'a> Builder<'a> {
         self.tour = Some(new);
     }
 
-    /// The model of the whole text, this builder having read all of it (in one part, or
-    /// joined with those that read the rest); `out` holds what was found in all of it.
+    /// The model of the whole text, this builder having read all of it; `out` holds what was
+    /// found in it.
     fn finish(self, out: &mut impl LineFindings) -> KnowledgeBase<'a> {
         out.finish();
         let dialect = match self.first_pose_key {
@@ -666,23 +464,20 @@ impl<'a> Builder<'a> {
             // No pose line: a key of the current dialect tells it, else a declaration
             // (`# ekb: dialect seed`, as `ekb import` writes for an export without poses).
             [None, None] => self
-                .runs
+                .locations
                 .iter()
-                .flatten()
-                .chain(&self.locations)
                 .any(|l| l.gesture_arm.is_some() || l.cultural_knowledge().is_some())
                 .then_some(Dialect::Current)
                 .or_else(|| Dialect::declared_in(self.text)),
         };
-        let mut runs = self.runs;
-        runs.push(self.locations);
+        let mut locations = self.locations;
         if !self.miscased.is_empty() || !self.misspelled.is_empty() {
-            for location in runs.iter_mut().flatten() {
+            for location in &mut locations {
                 location.miscased = self.miscased.get(&location.id).copied().unwrap_or(0);
                 location.misspelled = self.misspelled.get(&location.id).copied().unwrap_or(0);
             }
         }
-        let mut kb = KnowledgeBase::from_runs(dialect, runs, self.tour);
+        let mut kb = KnowledgeBase::new(dialect, locations, self.tour);
         kb.lines = self.facts;
         kb
     }
@@ -791,11 +586,7 @@ fn numbers(
     let mut count = 0;
     let mut valid = true;
     for (token_span, token) in syntax::tokens(text, span.start as usize) {
-        let short = (token.len() <= 8).then(|| {
-            let at = (token_span.start - span.start) as usize;
-            syntax::decimal::f64_of_word(syntax::swar::word_at(text.as_bytes(), at), token.len())
-        });
-        match short.flatten().or_else(|| parse_number(token)) {
+        match parse_number(token) {
             Some(n) if count < 3 => {
                 if overflows_float(n, token) {
                     out.float_overflow(key, id, token_span, token, count == 0);
@@ -934,9 +725,6 @@ mod tests {
         fn mixed_dialect(&mut self, seed: (Span, usize), current: (Span, usize)) {
             record!(self, "mixed_dialect", seed, current);
         }
-        fn append(&mut self, later: Trace) {
-            self.0.extend(later.0);
-        }
         fn finish(&mut self) {
             self.0.push("finish".into());
         }
@@ -971,215 +759,6 @@ mod tests {
         );
         assert_eq!(out.count("duplicate_key"), 4);
     }
-
-    #[test]
-    fn a_file_in_id_order_keeps_a_run_per_part() {
-        let text: String = (1..=30)
-            .map(|id| format!("robotLocationDescription {id} a\nrobotLocation {id} 1 2 3\n"))
-            .collect();
-        let mut out = Trace::default();
-        let kb = build_in_parts(&text, &Options::default(), 3, &mut out);
-        assert_eq!(kb.locations().runs().len(), 3);
-        assert_eq!(kb.locations().len(), 30);
-        for id in 1..=30 {
-            // Found in every run, the halves a boundary cut joined.
-            let location = kb.location(id).unwrap();
-            assert!(location.description().is_some() && location.pose.is_some());
-        }
-        assert!(kb.location(0).is_none() && kb.location(31).is_none());
-        assert_parts_agree(&text);
-        // A part out of order after parts in order: the runs become one list again.
-        let targets: String = (1..=30)
-            .rev()
-            .map(|id| format!("gestureTarget {id} 1 2 3\n"))
-            .collect();
-        assert_parts_agree(&format!("{text}{targets}"));
-    }
-
-    /// Builds `text` in one part and in 2 to 6, and asserts the same model and the same
-    /// facts reported, in the same order (the findings the rules make of them are compared
-    /// so by the rules layer's tests of its `line_rules`).
-    fn assert_parts_agree(text: &str) {
-        let options = Options::default();
-        let mut expected = Trace::default();
-        let whole = build_in_parts(text, &options, 1, &mut expected);
-        for parts in 2..=6 {
-            let mut found = Trace::default();
-            let kb = build_in_parts(text, &options, parts, &mut found);
-            assert_eq!(kb, whole, "{parts} parts of {text:?}");
-            assert_eq!(found, expected, "{parts} parts of {text:?}");
-        }
-    }
-
-    /// The builders of `text` cut in two at each line start.
-    fn halves(text: &str) -> impl Iterator<Item = (Builder<'_>, Builder<'_>)> {
-        let options = Options::default();
-        syntax::lines(text).skip(1).map(move |line| {
-            let cut = line.span.start as usize;
-            let mut found = Trace::default();
-            (
-                Builder::read(text, &options, 0..cut, &mut found),
-                Builder::read(text, &options, cut..text.len(), &mut found),
-            )
-        })
-    }
-
-    #[test]
-    fn a_location_written_in_two_parts_is_joined() {
-        let text = "robotLocationDescription 1 hall\nrobotLocation 1 1 2 90\n\
-                    robotLocationDescription 2 lab\ngestureTarget 1 1 1 1\n\
-                    tourSpecification 2 1 2\npreGestureMessageEnglish 1 Hello\n";
-        for (mut first, second) in halves(text) {
-            assert!(first.join(second));
-            assert_eq!(first.locations.len(), 2);
-        }
-        assert_parts_agree(text);
-    }
-
-    #[test]
-    fn parts_that_override_each_other_are_read_again_in_order() {
-        for text in [
-            "robotLocationDescription 1 a\nrobotLocationDescription 1 b\n",
-            "robotLocation 1 1 1 1\nrobotLocationPose 1 2 2 2\n",
-            "tourSpecification 1 1\ntourSpecification 1 2\n",
-        ] {
-            for (mut first, second) in halves(text) {
-                assert!(!first.join(second), "{text:?}");
-            }
-            assert_parts_agree(text);
-        }
-    }
-
-    #[test]
-    fn generated_files_read_in_parts_are_read_as_a_whole() {
-        for dialect in [Dialect::Seed, Dialect::Current] {
-            for shuffle in [false, true] {
-                let spec = crate::generate::Spec {
-                    dialect,
-                    shuffle,
-                    ..crate::generate::Spec::new(300)
-                };
-                assert_parts_agree(&crate::generate::generate(&spec));
-            }
-        }
-    }
-
-    #[test]
-    fn comment_lines_that_may_be_suppressions_are_counted_in_every_part() {
-        let lines = "# ekb: ignore[unknown-key]\n# a comment\n\trobotLocation 1 1 2 3\n";
-        let text = lines.repeat(3 * parallel::MIN_BYTES_PER_PART / lines.len());
-        let expected = Some((text.len() / lines.len()) as u32);
-        for parts in 1..=3 {
-            let kb = build_in_parts(&text, &Options::default(), parts, &mut Trace::default());
-            assert_eq!(kb.lines.suppression_lines, expected, "{parts} parts");
-        }
-        let kb = build(
-            "# nothing\nrobotLocation 1 1 2 3\n",
-            &Options::default(),
-            &mut Trace::default(),
-        );
-        assert_eq!(kb.lines.suppression_lines, Some(0));
-        assert_eq!(KnowledgeBase::default().lines.suppression_lines, None);
-    }
-
-    #[test]
-    fn the_noted_line_starts_are_the_same_in_every_part() {
-        // Lines of every length around the step, so that parts start on either side of it.
-        let mut text = String::new();
-        for n in 0..400 {
-            text.push_str(&format!(
-                "# {}\nrobotLocation {n} 1 2 3\n",
-                "x".repeat(n * 37)
-            ));
-        }
-        let text = text.repeat(2);
-        let index = crate::source::LineIndex::new(&text);
-        let whole = build_in_parts(&text, &Options::default(), 1, &mut Trace::default()).lines;
-        assert!(whole.line_starts.len() >= text.len() / LINE_STARTS_EVERY);
-        assert_eq!(whole.lines, text.lines().count() as u32);
-        for start in &whole.line_starts {
-            assert_eq!(index.position(&text, start.offset).line, start.line);
-            assert_eq!(text.as_bytes()[start.offset as usize - 1], b'\n');
-        }
-        for parts in 2..=5 {
-            let kb = build_in_parts(&text, &Options::default(), parts, &mut Trace::default());
-            assert_eq!(kb.lines, whole, "{parts} parts");
-        }
-    }
-
-    #[test]
-    fn a_part_notes_its_first_line_if_the_step_is_in_the_line_before() {
-        // Lines start at 0, STEP - 1 (before the step), STEP + 2 (the first after it).
-        let text = format!("{}\nbb\nc\n", "#".repeat(LINE_STARTS_EVERY - 2));
-        let options = Options::default();
-        let noted = |range: Range<usize>| {
-            Builder::read(&text, &options, range, &mut Trace::default())
-                .facts
-                .line_starts
-        };
-        let step = LINE_STARTS_EVERY as u32;
-        let expected = vec![LineStart {
-            offset: step + 2,
-            line: 3,
-        }];
-        assert_eq!(noted(0..text.len()), expected);
-        for cut in [step - 1, step + 2] {
-            let mut first = Builder::read(&text, &options, 0..cut as usize, &mut Trace::default());
-            let later = Builder::read(
-                &text,
-                &options,
-                cut as usize..text.len(),
-                &mut Trace::default(),
-            );
-            assert!(first.join(later));
-            assert_eq!(first.facts.line_starts, expected, "cut at {cut}");
-        }
-    }
-
-    #[test]
-    fn a_shared_part_is_cut_after_the_line_in_its_middle() {
-        let line = "robotLocation 1 2.0 3.0 4\n";
-        let text = line.repeat(3 * parallel::MIN_BYTES_PER_PART / line.len());
-        let bytes = text.as_bytes();
-        let rest = line.len() * 10..text.len();
-        let cut = cut_lines(bytes, rest.clone()).expect("long enough to share");
-        assert_eq!(bytes[cut - 1], b'\n');
-        assert!(cut.abs_diff(rest.start + rest.len() / 2) < line.len());
-        let short = rest.end - 2 * parallel::MIN_BYTES_PER_PART + 1..rest.end;
-        assert_eq!(cut_lines(bytes, short), None);
-    }
-
-    proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(200))]
-        /// Any mix of lines (duplicates, both dialects, tours, bad values, CRLF, no final
-        /// newline) reads the same in parts as in one.
-        #[test]
-        fn any_file_reads_the_same_in_parts(text in crate::generate::files_of_templates(LINES)) {
-            assert_parts_agree(&text);
-        }
-    }
-
-    /// Lines for the property test; `#` stands for an id.
-    const LINES: &[&str] = &[
-        "robotLocationDescription # Hall",
-        "robotLocation # 1 2 90",
-        "robotLocationPose # 1 2 -90",
-        "gestureTarget # 1 1 1",
-        "gestureTarget # x 1",
-        "gestureArm # left",
-        "culturalKnowledge # a b c",
-        "preGestureMessageEnglish # Hello the the lab",
-        "postGestureMessageIsiZulu #",
-        "preGestureMessageenglish # miscased",
-        "bogus # 1",
-        "tourSpecification 2 # 1",
-        "tourSpecification x",
-        "# a comment",
-        "  # ekb: ignore[unknown-key]",
-        "",
-        "robotLocationDescription 0 no id",
-        "robotLocationDescription # be\u{7}ll",
-    ];
 
     #[test]
     fn numbers_are_finite_decimals() {

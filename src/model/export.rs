@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize, Serializer};
 use crate::model::{
     Arm, Dialect, KnowledgeBase, Language, Location, Locations, Phase, Point, Pose,
 };
-use crate::render::safe_json::InParts;
+use crate::render::safe_json::MadeAsWritten;
 
 /// A whole knowledge base as JSON.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
@@ -113,7 +113,7 @@ impl<'k, 'a> ExportView<'k, 'a> {
 
 fn locations_view<'a, S: Serializer>(locations: &Locations<'a>, out: S) -> Result<S::Ok, S::Error> {
     let locations: Vec<&Location<'a>> = locations.iter().collect();
-    InParts::new(&locations, |location: &&Location<'a>| {
+    MadeAsWritten::new(&locations, |location: &&Location<'a>| {
         LocationView::new(location)
     })
     .serialize(out)

@@ -173,28 +173,6 @@ impl<'a> Location<'a> {
             .flat_map(words)
     }
 
-    /// Adds the values of `later`, the same location as read from later lines, if the two
-    /// have no key in common (so that neither overrides the other); returns whether it did.
-    pub(crate) fn join(&mut self, later: Location<'a>) -> bool {
-        let both_posed = self.pose_key.is_some() && later.pose_key.is_some();
-        if self.given & later.given != 0 || both_posed {
-            return false;
-        }
-        for (slot, value) in self.texts.iter_mut().zip(later.texts) {
-            if value != TextSlot::EMPTY {
-                *slot = value;
-            }
-        }
-        self.pose = self.pose.or(later.pose);
-        self.pose_key = self.pose_key.or(later.pose_key);
-        self.gesture_target = self.gesture_target.or(later.gesture_target);
-        self.gesture_arm = self.gesture_arm.or(later.gesture_arm);
-        self.given |= later.given;
-        self.miscased |= later.miscased;
-        self.misspelled |= later.misspelled;
-        true
-    }
-
     /// Sets the value of a text key (a description, a message or the culturalKnowledge
     /// words) to the text at `span`.
     pub fn set_text(&mut self, key: Key, span: Span) {
@@ -329,7 +307,7 @@ pub struct LineFacts {
     /// How many lines were read.
     pub lines: u32,
     /// The first line to start at or after each multiple of [`LINE_STARTS_EVERY`] bytes,
-    /// in file order (the same however many parts read the file): where locating a finding
+    /// in file order: where locating a finding
     /// can start counting lines, instead of at the start of the file (on a 100,000-location
     /// file, a finding on the last line was a count of 900,000 newlines, on one core).
     pub line_starts: Vec<LineStart>,
@@ -337,16 +315,6 @@ pub struct LineFacts {
 
 /// How many bytes apart [`LineFacts::line_starts`] are, at least.
 pub const LINE_STARTS_EVERY: usize = 1 << 20;
-
-/// Where [`LineFacts::line_starts`] has its next line, for lines read from `start` on (a
-/// line's start): at the first multiple of [`LINE_STARTS_EVERY`] after the line before.
-pub fn next_noted_line_start(bytes: &[u8], start: usize) -> usize {
-    let line_before = match start.checked_sub(1) {
-        Some(newline) => memchr::memrchr(b'\n', &bytes[..newline]).map_or(0, |end| end + 1),
-        None => 0,
-    };
-    (line_before / LINE_STARTS_EVERY + 1) * LINE_STARTS_EVERY
-}
 
 impl LineFacts {
     /// Notes `line`'s length, and the length of its first word where it can matter.
@@ -371,27 +339,6 @@ impl LineFacts {
     pub fn count(&self, key: Key) -> usize {
         self.key_lines[key as usize] as usize
     }
-
-    /// Adds the facts of the lines after these.
-    pub fn append(&mut self, later: LineFacts) {
-        for (count, more) in self.key_lines.iter_mut().zip(later.key_lines) {
-            *count += more;
-        }
-        self.long_lines.extend(later.long_lines);
-        self.indented_lines.extend(later.indented_lines);
-        self.long_first_words.extend(later.long_first_words);
-        self.suppression_lines = match (self.suppression_lines, later.suppression_lines) {
-            (Some(these), Some(those)) => Some(these + those),
-            _ => None,
-        };
-        let before = self.lines;
-        self.line_starts
-            .extend(later.line_starts.into_iter().map(|start| LineStart {
-                line: start.line + before,
-                ..start
-            }));
-        self.lines += later.lines;
-    }
 }
 
 impl<'a> KnowledgeBase<'a> {
@@ -400,19 +347,9 @@ impl<'a> KnowledgeBase<'a> {
         locations: Vec<Location<'a>>,
         tour: Option<Tour<'a>>,
     ) -> KnowledgeBase<'a> {
-        KnowledgeBase::from_runs(dialect, vec![locations], tour)
-    }
-
-    /// A knowledge base of the locations read from the parts of a file, a run per part in
-    /// file order (see [`Locations`]).
-    pub fn from_runs(
-        dialect: Option<Dialect>,
-        runs: Vec<Vec<Location<'a>>>,
-        tour: Option<Tour<'a>>,
-    ) -> KnowledgeBase<'a> {
         KnowledgeBase {
             dialect,
-            locations: Locations::new(runs),
+            locations: Locations::new(locations),
             tour,
             lines: LineFacts::default(),
         }
@@ -437,75 +374,42 @@ impl<'a> KnowledgeBase<'a> {
 }
 
 /// The locations of a knowledge base, in ascending id order.
-///
-/// A large file is read in parts, each into its own list (see [`build`]). When the lists
-/// are in id order one after the other, as in a file written in id order, they are kept as
-/// they are, as runs: moving them into one list would copy every location and touch as
-/// much new memory again. Otherwise they are made one list and sorted.
-#[derive(Debug, Clone, Default)]
-pub struct Locations<'a> {
-    /// Not empty, each in ascending id order, each after the one before.
-    runs: Vec<Vec<Location<'a>>>,
-}
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Locations<'a>(Vec<Location<'a>>);
 
 impl<'a> Locations<'a> {
-    fn new(runs: Vec<Vec<Location<'a>>>) -> Locations<'a> {
-        let mut runs: Vec<_> = runs.into_iter().filter(|run| !run.is_empty()).collect();
-        let in_order = runs
-            .iter()
-            .all(|run| run.is_sorted_by_key(|location| location.id))
-            && runs
-                .windows(2)
-                .all(|pair| pair[0][pair[0].len() - 1].id < pair[1][0].id);
-        if !in_order {
-            let mut all = match runs.len() {
-                1 => runs.pop().expect("one run"),
-                _ => runs.drain(..).flatten().collect(),
-            };
-            all.sort_unstable_by_key(|location| location.id);
-            runs = vec![all];
+    fn new(mut locations: Vec<Location<'a>>) -> Locations<'a> {
+        // Files are usually written in id order: then there is nothing to sort.
+        if !locations.is_sorted_by_key(|location| location.id) {
+            locations.sort_unstable_by_key(|location| location.id);
         }
-        Locations { runs }
+        Locations(locations)
     }
 
-    pub fn iter(&self) -> std::iter::Flatten<std::slice::Iter<'_, Vec<Location<'a>>>> {
-        self.runs.iter().flatten()
+    pub fn iter(&self) -> std::slice::Iter<'_, Location<'a>> {
+        self.0.iter()
     }
 
     pub fn len(&self) -> usize {
-        self.runs.iter().map(Vec::len).sum()
+        self.0.len()
     }
 
     pub fn is_empty(&self) -> bool {
-        self.runs.is_empty()
-    }
-
-    /// The runs, in order: a large file's work is split along them.
-    pub fn runs(&self) -> &[Vec<Location<'a>>] {
-        &self.runs
+        self.0.is_empty()
     }
 
     fn get(&self, id: u32) -> Option<&Location<'a>> {
-        let run = &self.runs[self
-            .runs
-            .partition_point(|run| run[run.len() - 1].id < id)
-            .min(self.runs.len().checked_sub(1)?)];
-        run.binary_search_by_key(&id, |location| location.id)
-            .ok()
-            .map(|index| &run[index])
-    }
-}
-
-/// The same locations in the same order, however they are held.
-impl PartialEq for Locations<'_> {
-    fn eq(&self, other: &Self) -> bool {
-        self.len() == other.len() && self.iter().eq(other)
+        let index = self
+            .0
+            .binary_search_by_key(&id, |location| location.id)
+            .ok()?;
+        Some(&self.0[index])
     }
 }
 
 impl<'k, 'a> IntoIterator for &'k Locations<'a> {
     type Item = &'k Location<'a>;
-    type IntoIter = std::iter::Flatten<std::slice::Iter<'k, Vec<Location<'a>>>>;
+    type IntoIter = std::slice::Iter<'k, Location<'a>>;
 
     fn into_iter(self) -> Self::IntoIter {
         self.iter()

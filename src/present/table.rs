@@ -4,9 +4,6 @@ use std::io::{self, Write};
 
 use comfy_table::{presets, ContentArrangement, Table};
 
-use crate::parallel;
-use crate::syntax::swar;
-
 /// A table that fits the terminal: comfy-table measures it when standard output is one;
 /// `COLUMNS` sets the width otherwise (and wins, as for other tools).
 pub fn new(header: &[&str]) -> Table {
@@ -33,7 +30,7 @@ pub struct Rows {
     header: Vec<String>,
     /// The columns a table of a given width never wraps (each as wide as its widest line).
     unbroken: Vec<usize>,
-    /// The rows in parts, each made apart (on a core of its own: see [`Rows::join`]).
+    /// The rows, in parts of at most [`MOST_TEXT_IN_CELLS`] bytes of text.
     parts: Vec<Cells>,
 }
 
@@ -43,7 +40,7 @@ struct Cells {
     /// Where each cell ends in `text` (4 bytes, not 8: a table may have a million cells).
     ends: Vec<u32>,
     /// The width of each column's widest line so far (measured as the rows are added, on
-    /// the core that makes them), or `None` once a line's width is not known.
+    /// the rows are added), or `None` once a line's width is not known.
     widths: Option<Vec<usize>>,
 }
 
@@ -74,16 +71,6 @@ impl Rows {
             unbroken: Vec::new(),
             parts: vec![cells],
         }
-    }
-
-    /// The rows of `parts`, in order, under the first's header (the rows are not copied).
-    pub fn join(parts: Vec<Rows>) -> Option<Rows> {
-        let mut parts = parts.into_iter();
-        let mut joined = parts.next()?;
-        for part in parts {
-            joined.parts.extend(part.parts);
-        }
-        Some(joined)
     }
 
     /// Adds a row of as many cells as the header has.
@@ -200,29 +187,19 @@ impl Rows {
         out.write_all(&drawn)?;
         out.write_all(b"\n")?;
         write_border(out, widths, ["╞", "═", "╪", "╡"])?;
-        // The rows are drawn a batch at a time, each batch in parts (one per core), and
-        // written in order: drawing 100,000 rows on one core took as long as making them.
+        // The rows are drawn a batch at a time, and written.
         let columns = self.header.len();
-        let batches = self.parts.iter().flat_map(|part| {
+        let mut cells = Vec::with_capacity(columns);
+        for part in &self.parts {
             let rows = part.ends.len() / columns;
-            (0..rows)
-                .step_by(ROWS_PER_BATCH)
-                .map(move |start| (part, start..rows.min(start + ROWS_PER_BATCH)))
-        });
-        for (part, batch) in batches {
-            let ranges = parallel::item_ranges(batch.len(), MIN_ROWS_PER_PART);
-            let drawn = parallel::map_ranges(ranges, |range| {
-                let mut cells = Vec::with_capacity(columns);
-                let mut drawn = Vec::new();
-                for row in batch.start + range.start..batch.start + range.end {
+            for batch in (0..rows).step_by(ROWS_PER_BATCH) {
+                drawn.clear();
+                for row in batch..rows.min(batch + ROWS_PER_BATCH) {
                     cells.clear();
                     cells.extend(self.row(part, row));
                     draw_row(&mut drawn, &layout, &cells);
                 }
-                drawn
-            });
-            for part in drawn {
-                out.write_all(&part)?;
+                out.write_all(&drawn)?;
             }
         }
         out.write_all(b"\n")?;
@@ -233,13 +210,9 @@ impl Rows {
 /// How many rows are drawn before they are written.
 const ROWS_PER_BATCH: usize = 4096;
 
-/// Below this many rows of a batch, a part is not worth a thread.
-const MIN_ROWS_PER_PART: usize = 1024;
-
 /// The width of the widest line of `cell`, if [`has_width_one`] knows each of its
-/// characters: one pass over its bytes, eight at a time where they are printable ASCII, and
-/// decoding only the characters that are not (a pass for ASCII, then one over every
-/// character, was a fifth of making a row).
+/// characters: one pass over its bytes, decoding only the characters that are not
+/// printable ASCII.
 fn widest_line(cell: &str) -> Option<usize> {
     let bytes = cell.as_bytes();
     let (mut widest, mut current, mut at) = (0, 0, 0);
@@ -264,19 +237,10 @@ fn widest_line(cell: &str) -> Option<usize> {
     }
 }
 
-/// How many bytes at the start of `bytes` are printable ASCII (`' '..='~'`), eight at a
-/// time: most of a cell is.
+/// How many bytes at the start of `bytes` are printable ASCII (`' '..='~'`): most of a
+/// cell is.
 fn printable_ascii_run(bytes: &[u8]) -> usize {
-    let mut at = 0;
-    while let Some(eight) = bytes.get(at..at + 8) {
-        let word = u64::from_le_bytes(eight.try_into().expect("eight bytes"));
-        let outside = swar::unprintable_bytes(word);
-        if outside != 0 {
-            return at + (outside.trailing_zeros() / 8) as usize;
-        }
-        at += 8;
-    }
-    at + bytes[at..]
+    bytes
         .iter()
         .take_while(|byte| matches!(byte, b' '..=b'~'))
         .count()
@@ -338,9 +302,8 @@ fn draw_row(out: &mut Vec<u8>, layout: &Layout, cells: &[&str]) {
 }
 
 /// The next line of what a cell has yet to draw (none: an empty one), and its width once
-/// [`widest_line`] has known it: its characters, counted as the bytes that start one. One
-/// pass over the bytes, eight at a time where they are printable ASCII (counting the lines,
-/// cutting them and measuring them took a pass each).
+/// [`widest_line`] has known it: its characters, counted as the bytes that start one, in
+/// one pass over the bytes.
 fn next_line<'c>(rest: &mut Option<&'c [u8]>) -> (&'c [u8], usize) {
     let Some(text) = *rest else {
         return (b"", 0);
@@ -427,29 +390,9 @@ mod tests {
     }
 
     #[test]
-    fn rows_made_in_parts_draw_as_rows_made_whole() {
-        let header = ["id", "description"];
-        let rows = [["1", "Hall"], ["22", "Lab\nupstairs"], ["333", "Café"]];
-        let mut whole = Rows::new(&header);
-        for row in rows {
-            whole.add_row(row);
-        }
-        let parts = rows.chunks(2).map(|chunk| {
-            let mut part = Rows::with_capacity(&header, chunk.len());
-            for row in chunk {
-                part.add_row(row);
-            }
-            part
-        });
-        let joined = Rows::join(parts.collect()).unwrap();
-        assert_eq!(plain(&joined), plain(&whole));
-        assert!(Rows::join(Vec::new()).is_none());
-    }
-
-    #[test]
-    fn a_large_table_is_drawn_in_parts_as_row_after_row() {
+    fn a_large_table_is_drawn_in_batches_as_row_after_row() {
         let header = ["id", "text"];
-        let count = ROWS_PER_BATCH + 3 * MIN_ROWS_PER_PART + 5;
+        let count = 2 * ROWS_PER_BATCH + 5;
         let rows: Vec<[String; 2]> = (0..count)
             .map(|i| [i.to_string(), "é\n".repeat(i % 3)])
             .collect();

@@ -4,8 +4,6 @@
 //! and do not stop at a NUL: past the line's end (or a NUL in it) they run on into those
 //! leftovers, so a short line can load what is left of a longer one before it.
 
-use std::cell::Cell;
-
 /// The lines read so far, as far as they still show in the buffer.
 #[derive(Debug)]
 pub struct LineBuffer {
@@ -15,22 +13,14 @@ pub struct LineBuffer {
     /// the file and how long it is: longer the earlier, so that a byte's line is the last
     /// one long enough to hold it.
     earlier: Vec<(usize, usize)>,
-    /// Whether the lines are read from the start of the file: in a part of a file read
-    /// from its middle, a byte no line so far wrote is not known to be unwritten.
-    from_the_start: bool,
-    /// Whether a byte was looked for that lines before the part would have said.
-    missed: Cell<bool>,
 }
 
 impl LineBuffer {
-    /// A buffer of `size` bytes, to read lines from the start of the file (`from_the_start`)
-    /// or from the middle.
-    pub fn new(size: usize, from_the_start: bool) -> LineBuffer {
+    /// A buffer of `size` bytes, to read the lines of a file from its start.
+    pub fn new(size: usize) -> LineBuffer {
         LineBuffer {
             size,
             earlier: Vec::new(),
-            from_the_start,
-            missed: Cell::new(false),
         }
     }
 
@@ -46,27 +36,17 @@ impl LineBuffer {
         self.earlier.push((start, length));
     }
 
-    /// Whether a byte was looked for that only the lines before these could tell.
-    pub fn missed(&self) -> bool {
-        self.missed.get()
-    }
-
     /// The earlier line (where it starts, how long it is) whose bytes or closing NUL are at
     /// `at` in the buffer, if any.
     fn line_at(&self, at: usize) -> Option<(usize, usize)> {
         if at >= self.size {
             return None;
         }
-        let found = self
-            .earlier
+        self.earlier
             .iter()
             .rev()
             .find(|&&(_, length)| length >= at)
-            .copied();
-        if found.is_none() && !self.from_the_start {
-            self.missed.set(true);
-        }
-        found
+            .copied()
     }
 }
 
@@ -197,7 +177,7 @@ mod tests {
     #[test]
     fn past_a_line_the_buffer_holds_what_the_last_longer_line_left() {
         let text = b"abcdefgh\nxy\nlong line\n";
-        let mut history = LineBuffer::new(200, true);
+        let mut history = LineBuffer::new(200);
         history.push(0, 9);
         history.push(9, 3);
         let line = InBuffer::new(b"12345678901\n", 100, text, &history);
@@ -226,13 +206,5 @@ mod tests {
         assert_eq!(line.skip(5, |b| !b.is_ascii_alphanumeric()), Some(6));
         assert_eq!(line.c_string(6).unwrap().bytes, b"Hall\n");
         assert_eq!(line.skip(10, |b| !b.is_ascii_alphanumeric()), None);
-    }
-
-    #[test]
-    fn a_part_read_from_the_middle_says_when_it_lacks_the_lines_before() {
-        let history = LineBuffer::new(200, false);
-        let line = InBuffer::new(b"a\n", 0, b"a\n", &history);
-        assert_eq!(line.byte(5), None);
-        assert!(history.missed());
     }
 }

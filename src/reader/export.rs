@@ -13,7 +13,7 @@ use super::line::LoadedValue;
 use super::load::{Loaded, LoadedLocation};
 use super::view::shortest;
 use crate::model::{Dialect, Key, Language, Phase};
-use crate::render::safe_json::InParts;
+use crate::render::safe_json::MadeAsWritten;
 
 /// The whole of what the robot holds.
 #[derive(Debug, Serialize)]
@@ -28,7 +28,7 @@ pub struct LoadedExport<'a> {
     pub tour: Option<Vec<Option<i32>>>,
 }
 
-/// Every location, made as it is written ([`InParts`]): a file of 100,000 locations would
+/// Every location, made as it is written ([`MadeAsWritten`]): a file of 100,000 locations would
 /// otherwise hold all of them at once, as large as the file, and read every field's line
 /// again on one core.
 #[derive(Debug)]
@@ -42,7 +42,7 @@ impl Serialize for LoadedLocations<'_> {
         let locations = loaded.locations.values().as_slice();
         let make =
             |location: &LoadedLocation| LoadedLocationExport::new(location, loaded, loaded.text());
-        InParts::new(locations, make).serialize(serializer)
+        MadeAsWritten::new(locations, make).serialize(serializer)
     }
 }
 

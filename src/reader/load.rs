@@ -6,7 +6,6 @@ use super::scan::is_space;
 use super::tree::{ShapeBuilder, TreeShape};
 use super::Reader;
 use crate::model::Key;
-use crate::parallel;
 use crate::syntax::Span;
 
 /// What the robot holds after reading a file.
@@ -179,10 +178,9 @@ pub struct LoadedTour {
 /// The stops of the robot's tour buffer.
 pub(super) const TOUR_BUFFER: usize = 20;
 
-/// Loads `text` as `reader` does. A large file is read in parts, one per core (lines are
-/// read one at a time, so a part may start at any line), and the parts joined in order.
+/// Loads `text` as `reader` does.
 pub fn load(text: &[u8], reader: Reader) -> Loaded<'_> {
-    load_in_parts(text, reader, None, parallel::parts_for_text(text.len()))
+    load_only(text, reader, None)
 }
 
 /// [`load`] of the fields of `keys` alone (for the pose, whichever key `reader` reads),
@@ -198,61 +196,38 @@ pub fn load_fields<'a>(text: &'a [u8], reader: Reader, keys: &[Key]) -> Loaded<'
             other => other,
         })
         .collect();
-    load_in_parts(
-        text,
-        reader,
-        Some(keys),
-        parallel::parts_for_text(text.len()),
-    )
+    load_only(text, reader, Some(keys))
 }
 
-/// [`load`] of the lines of `only` (`None`: all), reading `text` in at most `parts` parts.
-fn load_in_parts(text: &[u8], reader: Reader, only: Option<Vec<Key>>, parts: usize) -> Loaded<'_> {
+/// [`load`] of the lines of `only` (`None`: all).
+fn load_only(text: &[u8], reader: Reader, only: Option<Vec<Key>>) -> Loaded<'_> {
     let names: Option<Vec<&[u8]>> = only
         .as_ref()
         .map(|keys| keys.iter().map(|key| key.name().as_bytes()).collect());
-    let ranges = parallel::line_ranges(text, parts);
     // The whole load is made without a test of each line's key (a closure that always says
     // yes costs nothing).
-    let parts = parallel::map_ranges(ranges, |range| match &names {
-        None => read_part(text, range, reader, |_| true),
-        Some(names) => read_part(text, range, reader, |line| starts_with_one_of(line, names)),
-    });
-    // A part that read what lines before it left in the buffer is read again, with them:
-    // the whole file in one part (no file written as the robot reads it has such a line).
-    if parts.len() > 1 && parts.iter().any(|part| part.missed) {
-        return load_in_parts(text, reader, only, 1);
-    }
-    // The runs of the first part grow to hold the others' (not copied to a new list: the
-    // runs of a large file are megabytes), at once to the size of them all (growing by
-    // doubling left a quarter of 100,000 locations' list unused).
-    let runs: usize = parts.iter().map(|part| part.runs.len()).sum();
-    let mut locations = Vec::new();
+    let whole = 0..text.len();
+    let part = match &names {
+        None => read_part(text, whole, reader, |_| true),
+        Some(names) => read_part(text, whole, reader, |line| starts_with_one_of(line, names)),
+    };
     let mut tree = ShapeBuilder::default();
+    for (run, &lines) in part.runs.iter().zip(&part.lines) {
+        tree.add(run.id, lines);
+    }
+    let mut locations = part.runs;
     let mut tour_line = None;
     let mut count = 0;
     let mut slots: Vec<Option<i32>> = Vec::new();
-    let mut leftovers = Vec::new();
-    for part in parts {
-        leftovers.extend(part.leftovers);
-        for (run, &lines) in part.runs.iter().zip(&part.lines) {
-            tree.add(run.id, lines);
+    let leftovers = part.leftovers;
+    for (line, declared, stops) in part.tours {
+        tour_line = Some(line);
+        count = declared;
+        if slots.len() < stops.len() {
+            slots.resize(stops.len(), None);
         }
-        if locations.is_empty() {
-            locations = part.runs;
-            locations.reserve_exact(runs - locations.len());
-        } else {
-            locations.extend(part.runs);
-        }
-        for (line, declared, stops) in part.tours {
-            tour_line = Some(line);
-            count = declared;
-            if slots.len() < stops.len() {
-                slots.resize(stops.len(), None);
-            }
-            for (slot, stop) in slots.iter_mut().zip(stops) {
-                *slot = stop;
-            }
+        for (slot, stop) in slots.iter_mut().zip(stops) {
+            *slot = stop;
         }
     }
     // By id, and in file order within an id (the sort is stable), so that a later line
@@ -288,7 +263,7 @@ fn load_in_parts(text: &[u8], reader: Reader, only: Option<Vec<Key>>, parts: usi
     }
 }
 
-/// What the lines of one part of a file load, in file order.
+/// What the lines of a file load, in file order.
 #[derive(Default)]
 struct Part {
     /// Each run of consecutive lines of one location that load values, as a location of
@@ -300,8 +275,6 @@ struct Part {
     tours: Vec<(Span, i32, Vec<Option<i32>>)>,
     /// Each line that set a field to what an earlier line left ([`Loaded::leftovers`]).
     leftovers: Vec<(u32, u32)>,
-    /// Whether a line looked past its end for what lines before the part left.
-    missed: bool,
 }
 
 /// Reads the whole lines of `text` in `range` that `wanted` says may set a field.
@@ -316,7 +289,7 @@ fn read_part(
     let part_text = &text[range];
     // A text without a NUL byte need not be searched for one line by line.
     let has_nul = memchr::memchr(0, part_text).is_some();
-    let mut history = LineBuffer::new(reader.line_buffer(), start == 0);
+    let mut history = LineBuffer::new(reader.line_buffer());
     for (offset, chunk) in chunks(part_text, reader.line_buffer()) {
         let offset = start + offset;
         if !wanted(chunk) {
@@ -357,7 +330,6 @@ fn read_part(
         }
         history.push(offset, chunk.len());
     }
-    part.missed = history.missed();
     part
 }
 
@@ -472,46 +444,17 @@ mod tests {
     }
 
     #[test]
-    fn a_file_read_in_parts_loads_as_read_whole() {
-        for shuffle in [false, true] {
-            let spec = crate::generate::Spec {
-                dialect: crate::model::Dialect::Current,
-                shuffle,
-                ..crate::generate::Spec::new(400)
-            };
-            let mut text = crate::generate::generate(&spec);
-            // A later tour that overwrites some of the first one's stops.
-            text.push_str("tourSpecification 3 7\nrobotLocationDescription 5 Again\n");
-            // Lines that load what the line before them left in the buffer, where the second
-            // of two parts starts, without the lines before it.
-            let short = "robotLocationDescription 9\ntourSpecification 9 1\n";
-            let starts = (text.len() / 2..).filter(|&at| text.as_bytes()[at - 1] == b'\n');
-            let at = starts
-                .take(100)
-                .find(|&at| {
-                    let with = [&text[..at], short, &text[at..]].concat();
-                    parallel::line_ranges(with.as_bytes(), 2)[1].start == at
-                })
-                .expect("a line where the second part starts");
-            text.insert_str(at, short);
-            for reader in Reader::ALL {
-                let whole = load_in_parts(text.as_bytes(), reader, None, 1);
-                for parts in 2..=5 {
-                    let parted = load_in_parts(text.as_bytes(), reader, None, parts);
-                    assert_eq!(parted, whole, "{parts} parts, {reader}");
-                }
-            }
-        }
-    }
-
-    #[test]
     fn the_fields_of_some_keys_load_as_in_the_whole_load() {
-        let spec = crate::generate::Spec {
-            dialect: crate::model::Dialect::Current,
-            shuffle: true,
-            ..crate::generate::Spec::new(300)
-        };
-        let mut text = crate::generate::generate(&spec);
+        // Locations out of id order, each key in both dialects' pose, and other keys.
+        let mut text: String = (1..=300)
+            .map(|n| (n * 7) % 300 + 1)
+            .map(|id| {
+                format!(
+                    "robotLocationDescription {id} Stop {id}\nrobotLocationPose {id} 1 2 3\n\
+                     robotLocation {id} 4 5 6\ngestureTarget {id} 1 2 3\n\n"
+                )
+            })
+            .collect();
         // Lines of the keys in odd places: indented, cut by a NUL, a key alone, only other
         // keys' lines for a location.
         text.push_str(

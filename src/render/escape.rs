@@ -20,8 +20,6 @@
 use std::borrow::Cow;
 use std::fmt::Write as _;
 
-use crate::syntax::swar;
-
 /// Whether `ch` could change what a terminal shows, or hide: controls (a newline too),
 /// bidirectional overrides, isolates and marks, and zero-width and other invisible
 /// characters (including the byte-order mark and tag characters). Always escaped, in every
@@ -117,55 +115,11 @@ fn is_plain(text: &str, keep_newlines: bool) -> bool {
 }
 
 /// Whether `bytes` is printable ASCII without a `:` or a `#` (nearly every line of a
-/// knowledge base): then it is plain, whatever is around it. Quick on the lines of a large
-/// diff: sixteen bytes at a time with SSE2 (which every x86_64 processor has), else eight.
+/// knowledge base): then it is plain, whatever is around it.
 fn printable_without_marks(bytes: &[u8]) -> bool {
-    #[cfg(target_arch = "x86_64")]
-    if let Some(last) = bytes.last_chunk::<16>() {
-        let mut unusual = 0;
-        let mut chunks = bytes.chunks_exact(16);
-        for chunk in &mut chunks {
-            unusual |= sse2::unusual_bytes(chunk.try_into().expect("sixteen bytes"));
-        }
-        // The last sixteen bytes: those of them seen already are seen again.
-        return unusual | sse2::unusual_bytes(last) == 0;
-    }
-    let words = (0..bytes.len()).step_by(8);
-    // The last word padded with spaces.
-    words.fold(0, |unusual, at| {
-        unusual | unusual_bytes(swar::word_at(bytes, at))
-    }) == 0
-}
-
-#[cfg(target_arch = "x86_64")]
-mod sse2 {
-    use std::arch::x86_64::{
-        _mm_cmpeq_epi8, _mm_cmplt_epi8, _mm_loadu_si128, _mm_movemask_epi8, _mm_or_si128,
-        _mm_set1_epi8,
-    };
-
-    /// Bit `i` is set if byte `i` of `chunk` is not printable ASCII (a control, DEL, not
-    /// ASCII) or is `:` or `#`.
-    #[inline(always)]
-    pub fn unusual_bytes(chunk: &[u8; 16]) -> u32 {
-        // SAFETY: SSE2 is enabled on every x86_64 target, and the load reads the sixteen
-        // bytes of `chunk`.
-        unsafe {
-            let bytes = _mm_loadu_si128(chunk.as_ptr().cast());
-            let equal = |byte: u8| _mm_cmpeq_epi8(bytes, _mm_set1_epi8(byte as i8));
-            // Compared as signed bytes, every byte that is not ASCII is below a space too.
-            let below_space = _mm_cmplt_epi8(bytes, _mm_set1_epi8(b' ' as i8));
-            let marks = _mm_or_si128(equal(b':'), equal(b'#'));
-            let unusual = _mm_or_si128(_mm_or_si128(below_space, equal(0x7f)), marks);
-            _mm_movemask_epi8(unusual) as u32
-        }
-    }
-}
-
-/// The high bit of each byte of `word` that is not printable ASCII (a control, DEL, not
-/// ASCII) or is `:` or `#`.
-fn unusual_bytes(word: u64) -> u64 {
-    swar::unprintable_bytes(word) | swar::bytes_equal(word, b':') | swar::bytes_equal(word, b'#')
+    bytes
+        .iter()
+        .all(|&byte| matches!(byte, b' '..=b'~') && byte != b':' && byte != b'#')
 }
 
 /// Whether `bytes` holds neither `::` nor `##`. (A search for each pair builds a searcher

@@ -13,7 +13,6 @@ use std::borrow::Cow;
 use std::cell::Cell;
 use std::fmt;
 use std::io::{self, Write};
-use std::ops::Range;
 
 use miette::{
     GraphicalReportHandler, GraphicalTheme, LabeledSpan, MietteError, MietteSpanContents,
@@ -24,7 +23,6 @@ use super::escape::{escape, escape_lines};
 use super::located::{Locator, Mark};
 use super::{FileReport, LocatedDiagnostic, RenderOptions};
 use crate::diagnostic::{Applicability, Severity, Summary};
-use crate::parallel;
 use crate::source::Position;
 use crate::syntax::Span;
 
@@ -33,10 +31,6 @@ const CONTEXT_LINES: usize = 1;
 
 /// How many findings are held, drawn, at once.
 const FINDINGS_PER_BATCH: usize = 512;
-
-/// Below this many findings a part is not worth a thread (starting one costs about as much
-/// as drawing ten findings).
-const MIN_FINDINGS_PER_PART: usize = 64;
 
 /// Lines longer than this (bytes) are not drawn: the layout of a snippet grows with its
 /// line's length, and a pasted paragraph of megabytes would take minutes. The finding is
@@ -77,9 +71,7 @@ pub fn render(
     Ok(())
 }
 
-/// Draws `diagnostics`, in the order of the file, of `source`. They are cut from the file
-/// in order (each is located from the one before), then drawn on every core: drawing is
-/// most of the cost, and each is drawn alone.
+/// Draws `diagnostics`, in the order of the file, of `source`.
 fn draw_in_order<'d>(
     source: &Source<'_>,
     diagnostics: impl Iterator<Item = &'d LocatedDiagnostic<'d>>,
@@ -90,12 +82,10 @@ fn draw_in_order<'d>(
     while diagnostics.peek().is_some() {
         let batch: Vec<&LocatedDiagnostic> =
             diagnostics.by_ref().take(FINDINGS_PER_BATCH).collect();
+        // Cut from the file in order (each is located from the one before), a batch at a
+        // time, so that only a batch is held.
         let findings: Vec<Finding> = batch.iter().map(|d| source.finding(d)).collect();
-        let ranges = parallel::item_ranges(findings.len(), MIN_FINDINGS_PER_PART);
-        let cut = |rest: Range<usize>| parallel::cut_in_middle(rest, MIN_FINDINGS_PER_PART);
-        for drawn in parallel::map_shared(ranges, cut, |share| handlers.draw(&findings, share)) {
-            out.write_all(drawn?.as_bytes())?;
-        }
+        out.write_all(handlers.draw(&findings)?.as_bytes())?;
     }
     Ok(())
 }
@@ -134,15 +124,10 @@ impl Handlers {
         }
     }
 
-    /// The findings in `share`, drawn one after the other, each followed by a blank line.
-    fn draw(
-        &self,
-        findings: &[Finding<'_>],
-        share: &mut parallel::Share<'_>,
-    ) -> io::Result<String> {
+    /// The findings, drawn one after the other, each followed by a blank line.
+    fn draw(&self, findings: &[Finding<'_>]) -> io::Result<String> {
         let mut drawn = String::new();
-        let start = share.start();
-        for finding in share.take(findings[start..].iter()) {
+        for finding in findings {
             self.for_finding(finding)
                 .render_report(&mut drawn, finding)
                 .map_err(|_| io::Error::other("cannot lay out a finding"))?;
@@ -646,8 +631,8 @@ mod tests {
     }
 
     #[test]
-    fn findings_drawn_on_every_core_come_out_in_order() {
-        // 1,200 findings: batches of 512, each drawn in parts, and a last short batch.
+    fn findings_drawn_in_batches_come_out_in_order() {
+        // 1,200 findings: batches of 512, and a last short batch.
         let text: String = (1..=1_200)
             .map(|id| format!("robotLocationDescription {id} exhibit {id}\n"))
             .collect();
@@ -662,8 +647,8 @@ mod tests {
             .iter()
             .map(|d| one_by_one.finding(d))
             .collect();
-        let drawn = handlers.draw(&findings, &mut parallel::Share::whole(0..findings.len()));
-        assert!(findings.len() > FINDINGS_PER_BATCH + 2 * MIN_FINDINGS_PER_PART);
+        let drawn = handlers.draw(&findings);
+        assert!(findings.len() > FINDINGS_PER_BATCH);
         assert!(out.starts_with(&drawn.unwrap()), "{out}");
     }
 

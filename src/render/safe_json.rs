@@ -5,12 +5,10 @@
 
 use std::io::{self, BufWriter, Write};
 
-use serde::ser::{Error as _, SerializeSeq, Serializer};
+use serde::ser::{SerializeSeq, Serializer};
 use serde::Serialize;
 use serde_json::ser::{Formatter, PrettyFormatter};
-use serde_json::value::RawValue;
 
-use crate::parallel;
 use crate::render::escape::{ends_with_ci_marker, is_hidden};
 
 /// Writes `value` as pretty JSON and a newline.
@@ -25,68 +23,27 @@ pub fn write<T: Serialize + ?Sized>(value: &T, out: &mut dyn Write) -> io::Resul
     out.flush()
 }
 
-/// The items of a large array, each made by `make` and written as JSON on every core, then
-/// written in order: writing 100,000 locations on one core took longer than checking them.
-/// They are made a batch at a time, so that only a batch is ever held.
-///
-/// Each item is written as [`write`] writes the items of an array that is the value of a
-/// field of the top-level object (two levels deep): that is where to put it.
-pub struct InParts<'a, I, F> {
+/// The items of a large array, each made by `make` as it is written: a file of 100,000
+/// locations is never held as JSON values all at once.
+pub struct MadeAsWritten<'a, I, F> {
     items: &'a [I],
     make: F,
 }
 
-/// At most how many items are made before they are written.
-const BATCH: usize = 4096;
-
-/// Below this many items of a batch, a part is not worth a thread.
-const MIN_ITEMS_PER_PART: usize = 512;
-
-impl<'a, I, F> InParts<'a, I, F> {
-    pub fn new(items: &'a [I], make: F) -> InParts<'a, I, F> {
-        InParts { items, make }
+impl<'a, I, F> MadeAsWritten<'a, I, F> {
+    pub fn new(items: &'a [I], make: F) -> MadeAsWritten<'a, I, F> {
+        MadeAsWritten { items, make }
     }
 }
 
-impl<I: Sync, F: Fn(&I) -> T + Sync, T: Serialize> Serialize for InParts<'_, I, F> {
+impl<I, F: Fn(&I) -> T, T: Serialize> Serialize for MadeAsWritten<'_, I, F> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let mut seq = serializer.serialize_seq(Some(self.items.len()))?;
-        // Batches of equal size, so that none is too small to share between the cores.
-        let batches = self.items.len().div_ceil(BATCH);
-        let size = self.items.len().div_ceil(batches.max(1)).max(1);
-        for batch in self.items.chunks(size) {
-            let ranges = parallel::item_ranges(batch.len(), MIN_ITEMS_PER_PART);
-            let parts = parallel::map_ranges(ranges, |range| {
-                let items = batch[range].iter();
-                items
-                    .map(|item| item_json(&(self.make)(item)))
-                    .collect::<serde_json::Result<Vec<_>>>()
-            });
-            for part in parts {
-                for json in part.map_err(S::Error::custom)? {
-                    seq.serialize_element(&json)?;
-                }
-            }
+        for item in self.items {
+            seq.serialize_element(&(self.make)(item))?;
         }
         seq.end()
     }
-}
-
-/// `value` written as [`write`] writes an item two levels deep (see [`InParts`]).
-fn item_json(value: &impl Serialize) -> serde_json::Result<Box<RawValue>> {
-    let mut formatter = PrettyFormatter::new();
-    let mut nowhere = io::sink();
-    formatter
-        .begin_object(&mut nowhere)
-        .and_then(|()| formatter.begin_array(&mut nowhere))
-        .map_err(serde_json::Error::io)?;
-    let mut json = Vec::with_capacity(1024);
-    let mut serializer =
-        serde_json::Serializer::with_formatter(&mut json, SafeFormatter(formatter));
-    value.serialize(&mut serializer)?;
-    let json = String::from_utf8(json).expect("serde_json writes UTF-8");
-    // SAFETY: serde_json wrote one value, which starts and ends with no blank.
-    Ok(unsafe { RawValue::from_string_unchecked(json) })
 }
 
 /// [`PrettyFormatter`] that also escapes what [`is_hidden`] flags (serde_json escapes only
@@ -189,20 +146,20 @@ mod tests {
     }
 
     #[test]
-    fn items_in_parts_are_written_as_items_made_whole() {
+    fn items_made_as_written_are_written_as_items_made_first() {
         #[derive(Serialize)]
         struct Top<L> {
             name: &'static str,
             items: L,
             after: [u8; 2],
         }
-        let numbers: Vec<u32> = (0..3 * BATCH as u32 + 7).collect();
+        let numbers: Vec<u32> = (0..100).collect();
         let item =
             |&n: &u32| serde_json::json!({ "n": n, "text": "a\u{202E}##[b", "list": [n, [n]] });
-        for count in [0, 1, 2, MIN_ITEMS_PER_PART * 2 + 1, numbers.len()] {
+        for count in [0, 1, 2, numbers.len()] {
             let numbers = &numbers[..count];
             let whole: Vec<_> = numbers.iter().map(item).collect();
-            let in_parts = InParts::new(numbers, item);
+            let made = MadeAsWritten::new(numbers, item);
             let (mut expected, mut written) = (Vec::new(), Vec::new());
             write(
                 &Top {
@@ -216,7 +173,7 @@ mod tests {
             write(
                 &Top {
                     name: "x",
-                    items: in_parts,
+                    items: made,
                     after: [1, 2],
                 },
                 &mut written,

@@ -174,11 +174,6 @@ impl LineFindings for LineRules {
             .push(structure::mixed_dialect::diagnostic(seed, current));
     }
 
-    fn append(&mut self, later: LineRules) {
-        self.found.append(later.found);
-        self.crlf_endings.append(later.crlf_endings);
-    }
-
     fn finish(&mut self) {
         compat::compat_crlf::check(&self.crlf_endings, &mut self.found);
     }
@@ -187,31 +182,18 @@ impl LineFindings for LineRules {
 #[cfg(test)]
 mod tests {
     use crate::check::Diagnostics;
-    use crate::model::build::{build_in_parts, Options};
+    use crate::model::build::{build, Options};
     use crate::syntax::BOM;
 
-    /// Builds `text` in one part and in 2 to 6, and asserts the same findings.
-    fn assert_parts_agree(text: &str) {
-        let options = Options::default();
-        let mut expected = Diagnostics::default();
-        let whole = build_in_parts(text, &options, 1, &mut expected);
-        for parts in 2..=6 {
-            let mut found = Diagnostics::default();
-            let kb = build_in_parts(text, &options, parts, &mut found);
-            assert_eq!(kb, whole, "{parts} parts of {text:?}");
-            assert_eq!(*found, *expected, "{parts} parts of {text:?}");
-        }
-    }
-
     #[test]
-    fn every_line_rule_finds_in_parts_what_it_finds_in_one() {
+    fn every_line_rule_finds_something_on_its_lines() {
         let mut text = String::from(BOM);
         for (id, line) in (1..).zip(LINES) {
             text.push_str(&line.replace('#', &(id % 3 + 1).to_string()));
             text.push_str(if id % 2 == 0 { "\r\n" } else { "\n" });
         }
         let mut found = Diagnostics::default();
-        build_in_parts(&text, &Options::default(), 1, &mut found);
+        build(&text, &Options::default(), &mut found);
         let mut rules: Vec<&str> = found.iter().map(|d| d.rule.name).collect();
         rules.sort_unstable();
         rules.dedup();
@@ -235,17 +217,6 @@ mod tests {
                 "wrong-arity"
             ]
         );
-        assert_parts_agree(&text);
-    }
-
-    proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(200))]
-        /// Any mix of lines (duplicates, both dialects, tours, bad values, CRLF, no final
-        /// newline) has the same findings read in parts as in one.
-        #[test]
-        fn any_file_has_the_same_findings_in_parts(text in crate::generate::files_of_templates(LINES)) {
-            assert_parts_agree(&text);
-        }
     }
 
     /// Lines that make every line rule find something; `#` stands for an id.

@@ -9,8 +9,6 @@
 //! which asks [`crate::reader`] what each version loads), run afterwards, over the model
 //! ([`check_model`]).
 
-use std::ops::Range;
-
 use crate::check::Diagnostics;
 use crate::diagnostic::Severity;
 use crate::model::{Dialect, IdSet, Key, KnowledgeBase, Location};
@@ -269,36 +267,16 @@ pub fn categories() -> Vec<Category> {
 pub fn check_model(kb: &KnowledgeBase<'_>, source: &str, reader: Reader, out: &mut Diagnostics) {
     compat::check_file(kb, source, reader, out);
     let context = LocationContext::new(kb, source, reader);
-    // Each location is checked on its own, so a large file's are checked in parts, on
-    // every core.
-    let ranges = crate::parallel::item_ranges(kb.locations().len(), MIN_LOCATIONS_PER_PART);
     let mut found = out.part();
-    let mut check_the_rest = |ranges| {
-        check_tour(kb, &mut found);
-        check_locations(kb.locations().runs(), ranges, &context, &mut found);
-    };
-    // The tree's shape is a pass over every location in order, on one core (on the 100k
-    // file, 9.6 M instructions after the rest of the check): on a large file, made on
-    // another thread meanwhile (if one can be started).
+    // Whether the model's order of ids is the reader's, from the line findings so far.
     let from_model = compat::model_tree_is_the_readers(kb, source, reader, out);
-    let tree_shape = || compat::tree_shape(kb, source, reader, from_model);
-    let shape = std::thread::scope(|scope| {
-        let on_a_thread = match ranges.len() > 1 {
-            true => std::thread::Builder::new()
-                .spawn_scoped(scope, tree_shape)
-                .ok(),
-            false => None,
-        };
-        check_the_rest(ranges);
-        match on_a_thread {
-            Some(shape) => shape
-                .join()
-                .expect("the tree's shape is made without panicking"),
-            None => tree_shape(),
-        }
-    });
-    // Its findings first, as if made first: findings at one place are listed in the order
-    // in which they are reported.
+    check_tour(kb, &mut found);
+    for location in kb.locations() {
+        check_location(location, &context, &mut found);
+    }
+    // The tree's findings first, as if made first: findings at one place are listed in the
+    // order in which they are reported.
+    let shape = compat::tree_shape(kb, source, reader, from_model);
     compat::check_tree(kb, &shape, reader, out);
     out.append(found);
 }
@@ -314,33 +292,6 @@ fn check_tour(kb: &KnowledgeBase<'_>, out: &mut Diagnostics) {
         tour::tour_repeated_stop::check(tour, out);
     }
     tour::tour_unknown_location::check(kb, out);
-}
-
-/// Below this many locations a part is not worth a thread (starting one costs about as much
-/// as checking a hundred locations).
-const MIN_LOCATIONS_PER_PART: usize = 2_000;
-
-/// Runs the rules about one location on every location of `runs` (counted through them
-/// all), in `ranges`, a range per thread.
-fn check_locations(
-    runs: &[Vec<Location<'_>>],
-    ranges: Vec<Range<usize>>,
-    context: &LocationContext<'_>,
-    out: &mut Diagnostics,
-) {
-    let all = || runs.iter().flatten();
-    let cut = |rest: Range<usize>| crate::parallel::cut_in_middle(rest, MIN_LOCATIONS_PER_PART);
-    let parent = &*out;
-    for part in crate::parallel::map_shared(ranges, cut, |share| {
-        let mut found = parent.part();
-        let start = share.start();
-        for location in share.take(all().skip(start)) {
-            check_location(location, context, &mut found);
-        }
-        found
-    }) {
-        out.append(part);
-    }
 }
 
 /// What the rules about one location need to know of the rest of the file.
@@ -397,66 +348,6 @@ mod tests {
             for section in ["## What it does", "## Why it matters", "## Example"] {
                 assert!(rule.doc.contains(section), "{} lacks {section}", rule.name);
             }
-        }
-    }
-
-    #[test]
-    fn locations_checked_in_parts_give_the_findings_of_one_pass() {
-        // Findings of several rules, more than are kept of some: every description has a
-        // repeated word, every third location an untranslated message, every fifth no
-        // gesture target.
-        let generated = crate::generate::generate(&crate::generate::Spec::new(3_000));
-        let mut text = String::new();
-        for line in generated.lines() {
-            let mut fields = line.split_whitespace();
-            let (key, id) = (fields.next().unwrap_or(""), fields.next().unwrap_or(""));
-            let every = |n: u32| id.parse::<u32>().is_ok_and(|id| id % n == 0);
-            match key {
-                "preGestureMessageIsiZulu" if every(3) => {
-                    text.push_str(&format!("{key} {id} No message in isiZulu"))
-                }
-                "gestureTarget" if every(5) => continue,
-                _ => text.push_str(&line.replace(" exhibit ", " exhibit exhibit ")),
-            }
-            text.push('\n');
-        }
-        let mut found = Diagnostics::default();
-        let kb = crate::model::build::build(&text, &Default::default(), &mut found);
-        let context = LocationContext::new(&kb, &text, Reader::D542);
-        let mut whole = Diagnostics::default();
-        let runs = kb.locations().runs();
-        let all = 0..kb.locations().len();
-        check_locations(runs, vec![all.clone()], &context, &mut whole);
-        let mut rules: Vec<&str> = whole.iter().map(|d| d.rule.name).collect();
-        rules.sort_unstable();
-        rules.dedup();
-        assert_eq!(
-            rules,
-            [
-                "missing-field",
-                "repeated-word",
-                "untranslated-message",
-                "unused-location"
-            ]
-        );
-        for size in [1, 999, 1_500, 2_999] {
-            // Ranges of `size` locations, and runs of `size + 1`, so that ranges cross runs.
-            let ranges: Vec<_> = all
-                .clone()
-                .step_by(size)
-                .map(|start| start..(start + size).min(all.end))
-                .collect();
-            let split: Vec<Vec<Location>> = runs
-                .iter()
-                .flatten()
-                .cloned()
-                .collect::<Vec<_>>()
-                .chunks(size + 1)
-                .map(<[_]>::to_vec)
-                .collect();
-            let mut parted = Diagnostics::default();
-            check_locations(&split, ranges, &context, &mut parted);
-            assert!(*parted == *whole, "parts of {size} locations differ");
         }
     }
 

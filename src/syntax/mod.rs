@@ -9,10 +9,8 @@
 mod blanks;
 pub mod decimal;
 mod line;
-pub(crate) mod masks;
 pub(crate) mod newline;
 mod span;
-pub(crate) mod swar;
 
 pub use line::{lines, lines_from, Body, Line, LineEnding, Lines, BOM};
 pub use span::{floor_char_boundary, Span};
@@ -42,7 +40,7 @@ pub fn is_c_space(byte: u8) -> bool {
 
 /// Splits `span` of `text`, which starts with a token (as a line's arguments do), into that
 /// token and the rest after the blanks that follow it (each empty if there is none): an id
-/// and its value, nearly always from one mask (`blanks::first_gap`).
+/// and its value (`blanks::first_gap`).
 #[inline]
 pub fn first_token(text: &str, span: Span) -> (Span, Span) {
     let (start, end) = (span.start as usize, span.end as usize);

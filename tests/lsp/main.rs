@@ -3,4 +3,6 @@
 
 mod client;
 mod features;
+#[path = "../support/generate.rs"]
+mod generate;
 mod robustness;

@@ -76,7 +76,7 @@ fn a_request_cancelled_while_it_waits_is_answered_cancelled() {
     client.initialize(json!({}));
     // A large document keeps the server busy with its first request while the next two
     // arrive: a request, and its cancellation.
-    let text = ekb::generate::generate(&ekb::generate::Spec::new(20_000));
+    let text = crate::generate::generate(&crate::generate::Spec::new(20_000));
     client.open("untitled:big", &text);
     let busy = client.send_request(
         "textDocument/documentSymbol",

@@ -60,13 +60,6 @@ impl CrlfEndings {
             ));
         }
     }
-
-    /// Takes over the endings of the lines after these.
-    pub fn append(&mut self, later: CrlfEndings) {
-        self.convertible.extend(later.convertible);
-        self.after_carriage_return
-            .extend(later.after_carriage_return);
-    }
 }
 
 /// One finding for all the CRLF endings the fix converts, and one for each line it leaves.

@@ -36,7 +36,7 @@ pub fn check(location: &Location<'_>, out: &mut Diagnostics) {
         .description()
         .into_iter()
         .chain(english.into_iter().flatten());
-    for text in texts.filter(|text| may_repeat(text.value)) {
+    for text in texts {
         for (first, second, word) in repeats(text.value, text.span.start as usize) {
             out.push_with(&REPEATED_WORD, || {
                 Diagnostic::new(
@@ -65,71 +65,6 @@ fn repeats(text: &str, offset: usize) -> impl Iterator<Item = (Span, Span, &str)
         let (previous, word) = words.next(span, token)?;
         Some((previous, span, word))
     })
-}
-
-/// Whether `text` holds a repeat, as [`repeats`] would find it; for a text of more than 64
-/// bytes, `true` (then it is left to [`repeats`]).
-///
-/// Splitting every description and English message into tokens was the most costly rule of
-/// a large file, and hardly any text holds a repeat. This finds the tokens of a text from
-/// one mask of its blanks, made sixteen bytes at a time, with no span for each.
-fn may_repeat(text: &str) -> bool {
-    let bytes = text.as_bytes();
-    let len = bytes.len();
-    if len > 64 {
-        return true;
-    }
-    // Bit `i` is set if byte `i` is a blank.
-    let (blanks, ascii) = syntax::masks::blanks_and_ascii(bytes);
-    let mut tokens = !blanks & bits(0..len as u32);
-    if !may_hold_alike(bytes, tokens) {
-        return false;
-    }
-    let mut words = Words::new(ascii);
-    while tokens != 0 {
-        let start = tokens.trailing_zeros();
-        let end = start + (!(tokens >> start)).trailing_zeros();
-        tokens &= !bits(start..end);
-        // Blanks are ASCII, so a token starts and ends on characters' boundaries.
-        if words
-            .next((), &text[start as usize..end as usize])
-            .is_some()
-        {
-            return true;
-        }
-    }
-    false
-}
-
-/// Whether two tokens in a row (the runs of bits set in `tokens`, bit `i` for byte `i` of
-/// `bytes`) may hold the same word. Most texts have no such pair, and this tells so from
-/// one byte of each token.
-///
-/// A token that starts with an ASCII letter or digit holds a word that starts there, and
-/// two such words are the same only if they start with the same character, ignoring case
-/// (its lowercase is ASCII too). Any other token may hold any word.
-fn may_hold_alike(bytes: &[u8], tokens: u64) -> bool {
-    let mut starts = tokens & !(tokens << 1);
-    let mut previous = None;
-    while starts != 0 {
-        let first = bytes[starts.trailing_zeros() as usize];
-        if !first.is_ascii_alphanumeric() {
-            return true;
-        }
-        let first = first.to_ascii_lowercase();
-        if previous == Some(first) {
-            return true;
-        }
-        previous = Some(first);
-        starts &= starts - 1;
-    }
-    false
-}
-
-/// The bits `range` of a word, set.
-fn bits(range: std::ops::Range<u32>) -> u64 {
-    let below = |end: u32| u64::MAX.checked_shl(end).map_or(u64::MAX, |above| !above);
-    below(range.end) & !below(range.start)
 }
 
 /// The words of a text, each compared with the one before: fed the text's tokens in order.
@@ -232,58 +167,6 @@ mod tests {
         assert_eq!(repeats("a a a a a", 0).count(), 4);
     }
 
-    /// What [`may_repeat`] must answer: exactly what [`repeats`] finds, up to 64 bytes.
-    fn assert_may_repeat_agrees(text: &str) {
-        let found = repeats(text, 0).next().is_some();
-        let expected = found || text.len() > 64;
-        assert_eq!(may_repeat(text), expected, "{text:?}");
-    }
-
-    #[test]
-    fn may_repeat_answers_as_repeats_does() {
-        for text in [
-            "",
-            " \t ",
-            "the",
-            "the the",
-            "\tthe\t\tThe ",
-            "the, the",
-            "(the the)",
-            "1 1",
-            "café CAFÉ",
-            "café that",
-            "«the» the",
-            "the «the»",
-            "\u{212A}elvin kelvin",
-            "kelvin \u{212A}elvin",
-            "the then",
-            "then the",
-            "Tea tea",
-            "tea, Tea",
-            "9 9a 9A",
-            "a b a",
-            "ab\u{e9} AB\u{c9}",
-            "k \u{212A}",
-            "İ i̇",
-            "a\u{0}a a",
-            // 64 bytes, the last a repeat; then 65.
-            "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa b b",
-            "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa b b",
-            "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa bc",
-        ] {
-            assert_may_repeat_agrees(text);
-        }
-    }
-
-    #[test]
-    fn bits_cover_their_range() {
-        assert_eq!(bits(0..0), 0);
-        assert_eq!(bits(0..64), u64::MAX);
-        assert_eq!(bits(3..5), 0b11000);
-        assert_eq!(bits(63..64), 1 << 63);
-        assert_eq!(bits(64..64), 0);
-    }
-
     /// Words and punctuation that are the same or not in tricky ways: case, accents, the
     /// Kelvin sign (a `K` that lowercases to ASCII), a letter that lowercases to two.
     const TOKENS: &[&str] = &[
@@ -296,7 +179,7 @@ mod tests {
         /// Texts around 64 bytes long, of words that repeat or nearly do, blanks of every
         /// kind between them.
         #[test]
-        fn may_repeat_agrees_with_repeats(
+        fn repeats_are_the_neighbouring_words_that_match(
             words in proptest::collection::vec(
                 (0..TOKENS.len(), proptest::sample::select(vec![" ", "\t", "  ", " \t"])),
                 0..20),
@@ -307,8 +190,15 @@ mod tests {
                 text.push_str(TOKENS[token]);
                 text.push_str(blank);
             }
-            assert_may_repeat_agrees(&text);
-            assert_may_repeat_agrees(text.trim_end());
+            // As many repeats as pairs of neighbouring words that a plain split finds.
+            let tokens: Vec<&str> = text.split_ascii_whitespace().collect();
+            let pairs = tokens.windows(2).filter(|pair| {
+                let (a, b) = (trim_to_word(pair[0]), trim_to_word(pair[1]));
+                ends_in_word(pair[0])
+                    && same_word(b, a, text.is_ascii())
+                    && b.chars().any(char::is_alphabetic)
+            });
+            assert_eq!(repeats(&text, 0).count(), pairs.count(), "{text:?}");
         }
     }
 }

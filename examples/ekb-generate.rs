@@ -1,12 +1,16 @@
 //! `ekb-generate N [--dialect seed|current] [--shuffle] [--seed S]`: print a valid knowledge
-//! base of N locations (about 600 bytes each) on standard output, for benchmarks.
+//! base of N locations (about 600 bytes each) on standard output, for benchmarks:
+//! `cargo run --release --example ekb-generate -- 10000 > kb.dat`.
 
 use std::io::Write;
 use std::process::ExitCode;
 
 use clap::Parser;
-use ekb::generate::{generate, Spec};
 use ekb::model::Dialect;
+use generate::{generate, Spec};
+
+#[path = "../tests/support/generate.rs"]
+mod generate;
 
 /// Print a valid synthetic knowledge base of N locations.
 #[derive(Debug, Parser)]

@@ -5,10 +5,16 @@
 //! locations must have, since a tour holds at most 20 stops). Each location takes about
 //! 600 bytes, like a real one, so 100,000 locations make a file of about 60 MB. The output
 //! depends only on the [`Spec`]: the same seed gives the same bytes on every machine.
+//!
+//! A development tool, not part of the library: the tests, the benchmarks and the
+//! `ekb-generate` example (`cargo run --release --example ekb-generate -- --help`) include
+//! this file as a module of their own.
+
+#![allow(dead_code)] // each includer uses a part
 
 use std::fmt::Write as _;
 
-use crate::model::{Dialect, Key, Language, Phase};
+use ekb::model::{Dialect, Key, Language, Phase};
 
 /// What to generate.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -282,109 +288,4 @@ fn tour(out: &mut String, locations: usize, rng: &mut Xorshift) {
         let _ = write!(out, " {id}");
     }
     out.push('\n');
-}
-
-/// Files for property tests: up to 24 lines, each a template of `templates` (`#` stands for
-/// an id from 1 to 3) ending in `\r\n` or `\n`, after a byte-order mark; the last newline
-/// sometimes dropped.
-#[cfg(test)]
-pub(crate) fn files_of_templates(
-    templates: &'static [&'static str],
-) -> impl proptest::strategy::Strategy<Value = String> {
-    use proptest::prelude::*;
-    let line = (0..templates.len(), 1..4u32, any::<bool>());
-    (proptest::collection::vec(line, 0..24), any::<bool>()).prop_map(
-        move |(lines, final_newline)| {
-            let mut text = String::from(crate::syntax::BOM);
-            for (template, id, crlf) in lines {
-                text.push_str(&templates[template].replace('#', &id.to_string()));
-                text.push_str(if crlf { "\r\n" } else { "\n" });
-            }
-            if !final_newline {
-                text.pop();
-            }
-            text
-        },
-    )
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::check::check;
-    use crate::model::build::Options;
-    use crate::reader::Reader;
-    use crate::SourceFile;
-
-    /// The findings on a generated file, checked against the reader that reads all of it
-    /// (the current dialect's `gestureArm` is read by `2026-03` only).
-    fn findings(spec: &Spec) -> Vec<&'static str> {
-        let source = SourceFile::from_bytes("generated", generate(spec).into_bytes());
-        let reader = match spec.dialect {
-            Dialect::Seed => Reader::D542,
-            Dialect::Current => Reader::V2026_03,
-        };
-        let options = Options {
-            reader: Some(reader),
-            ..Options::default()
-        };
-        let checked = check(&source, &options);
-        checked
-            .diagnostics
-            .iter()
-            .map(|d| d.rule.name)
-            .filter(|&rule| rule != "unused-location")
-            .collect()
-    }
-
-    #[test]
-    fn generated_files_are_clean_in_both_dialects_and_orders() {
-        for dialect in [Dialect::Seed, Dialect::Current] {
-            for shuffle in [false, true] {
-                for (locations, seed) in [(1, 0), (5, 7), (20, 1), (300, 42)] {
-                    let spec = Spec {
-                        locations,
-                        dialect,
-                        shuffle,
-                        seed,
-                    };
-                    assert_eq!(findings(&spec), Vec::<&str>::new(), "{spec:?}");
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn the_dialect_is_detected_and_every_location_is_complete() {
-        for dialect in [Dialect::Seed, Dialect::Current] {
-            let spec = Spec {
-                dialect,
-                shuffle: true,
-                ..Spec::new(50)
-            };
-            let source = SourceFile::from_bytes("generated", generate(&spec).into_bytes());
-            let checked = check(&source, &Options::default());
-            assert_eq!(checked.kb.dialect, Some(dialect));
-            assert_eq!(checked.kb.locations().len(), 50);
-            assert_eq!(checked.kb.tour_stops().count(), 20);
-        }
-    }
-
-    #[test]
-    fn deterministic_and_about_600_bytes_per_location() {
-        let spec = Spec {
-            shuffle: true,
-            ..Spec::new(1000)
-        };
-        let text = generate(&spec);
-        assert_eq!(text, generate(&spec));
-        assert_ne!(text, generate(&Spec { seed: 2, ..spec }));
-        let per_location = text.len() / 1000;
-        assert!((520..=680).contains(&per_location), "{per_location}");
-    }
-
-    #[test]
-    fn no_location_means_an_empty_file() {
-        assert_eq!(generate(&Spec::new(0)), "");
-    }
 }
