@@ -14,6 +14,6 @@ command -v cargo-deb >/dev/null || cargo install --quiet --locked cargo-deb
 cargo build --quiet --locked --release -p ekb --bin ekb
 mkdir -p target/man
 target/release/ekb man > target/man/ekb.1
-cargo deb --quiet --locked --no-build -p ekb -o target/debian >&2
+cargo deb --quiet --locked --no-build --strip -p ekb -o target/debian >&2
 version=$(target/release/ekb --version | awk '{ print $2 }')
 ls target/debian/ekb_"$version"-*.deb

@@ -28,6 +28,12 @@ wheel=$(bash scripts/build-wheel.sh)
 deb=$(bash scripts/build-deb.sh)
 echo "built $wheel ($(du -h "$wheel" | cut -f1)) and $deb ($(du -h "$deb" | cut -f1))"
 
+# Distributed executables carry no symbols and no debug information.
+stripped() {
+  ! readelf --section-headers "$1" | grep -q -e '\.symtab' -e '\.debug_info' -e '\.debug_line' ||
+    fail "$2 is not stripped"
+}
+
 # The report of `ekb check` of the seed file: exit code, standard output, standard error.
 report() {
   local status=0
@@ -49,6 +55,9 @@ ok "the wheel installs in a fresh virtual environment in $(printf '%.1f' "$secon
 [ "$("$work/venv/bin/python" -c 'import ekb; print(ekb.__version__)')" = "$version" ] ||
   fail "ekb.__version__ is not $version"
 ok "the wheel's ekb and import ekb are version $version"
+stripped "$work/venv/bin/ekb" "the wheel's ekb"
+stripped "$(ls "$work"/venv/lib/python*/site-packages/ekb/_ekb*.so)" "the wheel's module"
+ok "the wheel's executable and module are stripped"
 report "$work/venv/bin/ekb" >"$work/wheel.report"
 diff -u "$work/cargo.report" "$work/wheel.report" ||
   fail "the wheel's ekb check of the seed file differs from the cargo build's"
@@ -82,7 +91,8 @@ ok "uv tool install puts ekb on PATH"
 DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --reinstall "$root/$deb" >/dev/null
 [ "$(/usr/bin/ekb --version)" = "$expected" ] ||
   fail "the package's ekb --version is '$(/usr/bin/ekb --version)', not '$expected'"
-ok "the package installs /usr/bin/ekb, version $version"
+stripped /usr/bin/ekb "the package's ekb"
+ok "the package installs /usr/bin/ekb, version $version, stripped"
 [ "$(man -w ekb)" = /usr/share/man/man1/ekb.1.gz ] || fail "man -w ekb: $(man -w ekb 2>&1)"
 zcat /usr/share/man/man1/ekb.1.gz | grep -q '^\.SH "\?EXIT STATUS' || fail "the man page has no EXIT STATUS"
 ok "the package installs the man page"
