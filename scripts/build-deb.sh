@@ -16,4 +16,4 @@ mkdir -p target/man
 target/release/ekb man > target/man/ekb.1
 cargo deb --quiet --locked --no-build --strip -p ekb -o target/debian >&2
 version=$(target/release/ekb --version | awk '{ print $2 }')
-ls target/debian/ekb_"$version"-*.deb
+ls "$root"/target/debian/ekb_"$version"-*.deb

@@ -29,4 +29,4 @@ strip -o target/wheel-data/scripts/ekb target/release/ekb
 "$maturin" build --quiet --locked --release --strip -m crates/ekb-python/Cargo.toml \
   --out target/wheels >&2
 version=$(target/release/ekb --version | awk '{ print $2 }')
-ls target/wheels/ekb-"$version"-*.whl
+ls "$root"/target/wheels/ekb-"$version"-*.whl

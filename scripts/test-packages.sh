@@ -88,7 +88,7 @@ UV_TOOL_DIR="$work/uv-tools" UV_TOOL_BIN_DIR="$work/uv-bin" UV_NO_CACHE=1 \
 ok "uv tool install puts ekb on PATH"
 
 # 2. The Debian package.
-DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --reinstall "$root/$deb" >/dev/null
+DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --reinstall "$deb" >/dev/null
 [ "$(/usr/bin/ekb --version)" = "$expected" ] ||
   fail "the package's ekb --version is '$(/usr/bin/ekb --version)', not '$expected'"
 stripped /usr/bin/ekb "the package's ekb"
