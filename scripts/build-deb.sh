@@ -11,7 +11,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 
 command -v cargo-deb >/dev/null || cargo install --quiet --locked cargo-deb
-cargo build --quiet --locked --release -p ekb --bin ekb
+cargo build --quiet --locked --release -p ekb -p ekb-python --bin ekb
 mkdir -p target/man
 target/release/ekb man > target/man/ekb.1
 cargo deb --quiet --locked --no-build --strip -p ekb -o target/debian >&2

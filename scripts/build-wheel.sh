@@ -21,7 +21,9 @@ if [ -z "$maturin" ]; then
   maturin=target/build-venv/bin/maturin
 fi
 
-cargo build --quiet --locked --release -p ekb --bin ekb
+# With ekb-python in the same build, its dependencies' features are those of maturin's build
+# below, which then reuses the compiled library instead of compiling it again.
+cargo build --quiet --locked --release -p ekb -p ekb-python --bin ekb
 # What maturin lays in the wheel's .data/scripts (pyproject.toml: `data`).
 rm -rf target/wheel-data
 mkdir -p target/wheel-data/scripts
