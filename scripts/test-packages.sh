@@ -48,7 +48,7 @@ report target/debug/ekb >"$work/cargo.report"
 python3 -m venv "$work/venv"
 start=$(date +%s.%N)
 "$work/venv/bin/pip" install --quiet --disable-pip-version-check --no-index "$wheel"
-seconds=$(echo "$(date +%s.%N) - $start" | bc)
+seconds=$(awk -v start="$start" -v end="$(date +%s.%N)" 'BEGIN { print end - start }')
 ok "the wheel installs in a fresh virtual environment in $(printf '%.1f' "$seconds") s"
 [ "$("$work/venv/bin/ekb" --version)" = "$expected" ] ||
   fail "the wheel's ekb --version is '$("$work/venv/bin/ekb" --version)', not '$expected'"

@@ -88,7 +88,7 @@ refuses_then_accepts() {
   if (cd "$repo" && git commit --quiet -m "Add the seed knowledge base") >"$work/refused.log" 2>&1; then
     cat "$work/refused.log"; fail "$style: the seed file was committed despite its errors"
   fi
-  first_commit_seconds=$(echo "$(date +%s.%N) - $start" | bc)
+  first_commit_seconds=$(awk -v start="$start" -v end="$(date +%s.%N)" 'BEGIN { print end - start }')
   for rule in key-case missing-field; do
     grep -q "$rule" "$work/refused.log" || { cat "$work/refused.log"; fail "$style: the refusal did not show $rule"; }
   done
