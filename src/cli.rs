@@ -15,7 +15,8 @@ use crate::streams;
 
 /// Author and validate the environment knowledge base of a tour-guide robot.
 #[derive(Debug, Parser)]
-#[command(name = "ekb", version, about, long_about = None, propagate_version = true)]
+// The version, and in a release build the commit (build.rs).
+#[command(name = "ekb", version = env!("EKB_VERSION"), about, long_about = None, propagate_version = true)]
 pub struct Cli {
     /// Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]
     #[arg(long, global = true, value_name = "PATH")]

@@ -1,0 +1,142 @@
+"""The wheel as a user gets it: `import ekb` and the `ekb` command it puts on PATH.
+
+Run in a virtual environment where the wheel is installed (scripts/test-packages.sh does).
+"""
+
+import json
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+import ekb
+
+FIXTURES = Path(__file__).parent / "fixtures"
+CLEAN = FIXTURES / "environmentKnowledgeBaseClean.dat"
+REFUSED = FIXTURES / "environmentKnowledgeBaseRefused.dat"
+
+
+def command(*args, **kwargs):
+    executable = shutil.which("ekb")
+    assert executable, "the wheel put no `ekb` on PATH"
+    return subprocess.run([executable, *args], capture_output=True, text=True, **kwargs)
+
+
+def test_load_gives_the_locations_by_id_and_the_tour():
+    kb = ekb.load(CLEAN)
+    assert kb.file == str(CLEAN)
+    assert kb.tour == [2, 1]
+    assert [location.id for location in kb.locations] == [1, 2]
+    assert len(kb) == 2 and 1 in kb and 3 not in kb
+    entrance = kb[1]
+    assert entrance == kb.location(1)
+    assert entrance.description == "Entrance"
+    assert (entrance.pose.x, entrance.pose.y, entrance.pose.theta) == (1.0, 2.0, 90.0)
+    target = kb[2].gesture_target
+    assert (target.x, target.y, target.z) == (3.5, 4.0, 0.8)
+    assert entrance.gesture_arm is None
+    with pytest.raises(KeyError):
+        kb.location(3)
+    with pytest.raises(KeyError):
+        kb[3]
+
+
+def test_messages_are_given_by_phase_and_language():
+    robot = ekb.load(str(CLEAN))[2]
+    assert robot.message("pre", "english") == "This is the Pepper robot"
+    assert robot.message("pre", "zu") == "Leli yirobhothi iPepper"
+    assert robot.message("post", "Kinyarwanda") == "Turayikoresha mu bushakashatsi"
+    assert robot.message("after", "EN") == "We use it for research"
+    with pytest.raises(ValueError, match="unknown language"):
+        robot.message("pre", "klingon")
+    with pytest.raises(ValueError, match="unknown phase"):
+        robot.message("during", "en")
+
+
+def test_a_file_with_an_error_is_refused_with_every_finding():
+    with pytest.raises(ekb.RefusedError) as raised:
+        ekb.load(REFUSED)
+    error = raised.value
+    assert isinstance(error, ekb.LoadError)
+    assert error.file == str(REFUSED)
+    key_case = [finding for finding in error.findings if finding.rule == "key-case"]
+    assert len(key_case) == 1
+    finding = key_case[0]
+    assert (finding.severity, finding.line, finding.column) == ("error", 7, 1)
+    assert (finding.end_line, finding.end_column) == (7, 26)
+    assert finding.location_id == 1
+    assert str(finding).startswith(f"{REFUSED}:7:1: error[key-case] ")
+    # The first error, in the order of the file, and how many more.
+    assert str(error).startswith(f"{REFUSED}:1:1: error[missing-field]")
+    assert str(error).endswith("(and 1 more error)")
+
+
+def test_check_gives_the_findings_as_ekb_check_does():
+    findings = ekb.check(REFUSED)
+    assert ("key-case", 7, 1) in [(f.rule, f.line, f.column) for f in findings]
+    concise = command("check", "--format", "concise", str(REFUSED))
+    assert concise.returncode == 1
+    listed = [line for line in concise.stdout.splitlines() if line.startswith(str(REFUSED))]
+    assert listed == [str(finding) for finding in findings]
+    assert ekb.check(CLEAN) == []
+
+
+def test_an_unreadable_file_is_not_refused_but_unreadable():
+    with pytest.raises(ekb.UnreadableError) as raised:
+        ekb.load(FIXTURES / "missing.dat")
+    assert raised.value.findings == []
+    assert "missing.dat" in str(raised.value)
+    with pytest.raises(ekb.UnreadableError):
+        ekb.check(FIXTURES / "missing.dat")
+
+
+def test_the_reader_can_be_chosen_and_a_wrong_one_is_refused():
+    assert ekb.load(CLEAN).reader == "d5.4.2"
+    # Reader 2025-06 reads poses from `robotLocationPose` only.
+    with pytest.raises(ekb.RefusedError) as raised:
+        ekb.load(CLEAN, reader="2025-06")
+    assert [f.rule for f in raised.value.findings] == ["legacy-key", "legacy-key"]
+    assert [f.rule for f in ekb.check(CLEAN, reader="2025-06")] == ["legacy-key", "legacy-key"]
+    with pytest.raises(ValueError, match="unknown reader"):
+        ekb.load(CLEAN, reader="1999-01")
+
+
+def test_the_module_loads_what_ekb_export_shows():
+    exported = command("export", str(CLEAN))
+    assert exported.returncode == 0, exported.stderr
+    assert ekb.load(CLEAN).export() == json.loads(exported.stdout)
+
+
+def test_the_command_exits_as_the_cli_contract_says():
+    assert command("check", str(CLEAN)).returncode == 0
+    assert command("check", str(REFUSED)).returncode == 1
+    missing = command("check", str(FIXTURES / "missing.dat"))
+    assert missing.returncode == 2 and "missing.dat" in missing.stderr
+    version = command("--version").stdout.split()
+    assert version[:2] == ["ekb", ekb.__version__]
+
+
+def test_the_language_server_answers_over_standard_io():
+    def message(body):
+        data = json.dumps(body).encode()
+        return b"Content-Length: %d\r\n\r\n%s" % (len(data), data)
+
+    session = b"".join(
+        [
+            message({"jsonrpc": "2.0", "id": 1, "method": "initialize",
+                     "params": {"processId": None, "rootUri": None, "capabilities": {}}}),
+            message({"jsonrpc": "2.0", "method": "initialized", "params": {}}),
+            message({"jsonrpc": "2.0", "id": 2, "method": "shutdown"}),
+            message({"jsonrpc": "2.0", "method": "exit"}),
+        ]
+    )
+    server = subprocess.run([shutil.which("ekb"), "lsp"], input=session,
+                            capture_output=True, timeout=30)
+    assert server.returncode == 0, server.stderr
+    header, _, rest = server.stdout.partition(b"\r\n\r\n")
+    length = int(header.split(b":")[1])
+    initialized = json.loads(rest[:length])
+    assert initialized["id"] == 1
+    assert initialized["result"]["serverInfo"]["name"] == "ekb"
+    assert "textDocumentSync" in initialized["result"]["capabilities"]
