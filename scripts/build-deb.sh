@@ -15,6 +15,8 @@ command -v cargo-deb >/dev/null || cargo install --quiet --locked cargo-deb
 cargo build --quiet --locked --release -p ekb -p ekb-python -p ekb-capi --bin ekb --lib
 # The CMake package of an install tree (configured only: the library is built above).
 cmake -S crates/ekb-capi -B target/deb-cmake -DEKB_BUILD_TESTS=OFF >/dev/null
+# The static library without its line tables (200 MB with them, most of the package).
+strip --strip-debug -o target/deb-cmake/libekb_capi.a target/release/libekb_capi.a
 mkdir -p target/man
 target/release/ekb man > target/man/ekb.1
 cargo deb --quiet --locked --no-build --strip -p ekb -o target/debian >&2
