@@ -6,8 +6,9 @@
 #
 #   scripts/concurrent-writes.sh [ROUNDS]
 #
-# Pairs: set/set (two locations), set/fix (trailing blanks), set/fmt (a misaligned line),
-# set/check --add-ignore, import --po/import --po (isiZulu and Kinyarwanda). Runs
+# Pairs: every two of set, fix (trailing blanks), fmt (a misaligned line), check
+# --add-ignore and import --po (but fix with check --add-ignore, see below), and set/set (two locations) and import --po/import --po
+# (isiZulu and Kinyarwanda). Runs
 # target/debug/ekb unless EKB names another binary. Prints one line per pair.
 set -euo pipefail
 
@@ -54,21 +55,35 @@ run_pair() { # NAME CMD1 PATTERN1 CMD2 PATTERN2
     printf '%-28s %5d rounds  %3d lost  %3d refused\n' "$name" "$rounds" "$lost" "$refused"
 }
 
-set_cmd="'$ekb' set 2 preGestureMessageEnglish 'Set round ROUND' kb.dat"
-set_seen="^preGestureMessageEnglish +2 Set round ROUND$"
+# Each rewriting command, with what the file holds once its change is in.
+names=("set" "fix" "fmt" "check --add-ignore" "import --po")
+commands=(
+    "'$ekb' set 1 postGestureMessageEnglish 'Set round ROUND' kb.dat"
+    "'$ekb' fix -q kb.dat"
+    "'$ekb' fmt -q kb.dat"
+    "'$ekb' check -q --add-ignore kb.dat"
+    "po zu 'Zulu round ROUND' > zu-ROUND.po && '$ekb' import -q --po zu-ROUND.po kb.dat"
+)
+patterns=(
+    "^postGestureMessageEnglish +1 Set round ROUND$"
+    "Welcome to the robotics lab$"
+    "^preGestureMessageEnglish      1 "
+    "ekb: ignore"
+    "^preGestureMessageIsiZulu +2 Zulu round ROUND$"
+)
 
+# Every pair of two different commands, and the two that can make two different changes
+# of one kind at once. Not fix with check --add-ignore: a comment that check writes first
+# rightly stops fix from making its change (the finding is silenced), which is no lost update.
+for ((i = 0; i < ${#names[@]}; i++)); do
+    for ((j = i + 1; j < ${#names[@]}; j++)); do
+        [[ "${names[i]} / ${names[j]}" != "fix / check --add-ignore" ]] || continue
+        run_pair "${names[i]} / ${names[j]}" "${commands[i]}" "${patterns[i]}" "${commands[j]}" "${patterns[j]}"
+    done
+done
 run_pair "set / set" \
-    "'$ekb' set 1 postGestureMessageEnglish 'Other round ROUND' kb.dat" "^postGestureMessageEnglish +1 Other round ROUND$" \
-    "$set_cmd" "$set_seen"
-run_pair "set / fix" \
-    "'$ekb' fix -q kb.dat" "Welcome to the robotics lab$" \
-    "$set_cmd" "$set_seen"
-run_pair "set / fmt" \
-    "'$ekb' fmt -q kb.dat" "^preGestureMessageEnglish      1 " \
-    "$set_cmd" "$set_seen"
-run_pair "set / check --add-ignore" \
-    "'$ekb' check -q --add-ignore kb.dat" "ekb: ignore" \
-    "$set_cmd" "$set_seen"
+    "'$ekb' set 2 preGestureMessageEnglish 'Other round ROUND' kb.dat" "^preGestureMessageEnglish +2 Other round ROUND$" \
+    "${commands[0]}" "${patterns[0]}"
 run_pair "import --po / import --po" \
-    "po zu 'Zulu round ROUND' > zu-ROUND.po && '$ekb' import -q --po zu-ROUND.po kb.dat" "^preGestureMessageIsiZulu +2 Zulu round ROUND$" \
-    "po rw 'Rwanda round ROUND' > rw-ROUND.po && '$ekb' import -q --po rw-ROUND.po kb.dat" "^preGestureMessageKinyarwanda +2 Rwanda round ROUND$"
+    "po rw 'Rwanda round ROUND' > rw-ROUND.po && '$ekb' import -q --po rw-ROUND.po kb.dat" "^preGestureMessageKinyarwanda +2 Rwanda round ROUND$" \
+    "${commands[4]}" "${patterns[4]}"
