@@ -33,11 +33,74 @@ use crate::source::SourceFile;
 
 pub use crate::model::{Arm, Language, Phase, Point, Pose};
 
-/// One location, as `ekb export` writes it: a field absent from the file is `None`.
-pub type Location = ExportedLocation;
+/// One location, as `ekb export` writes it (a field absent from the file is `None`), its
+/// texts borrowed from the [`KnowledgeBase`] it is in.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Location<'kb> {
+    pub id: u32,
+    pub description: Option<&'kb str>,
+    pub pose: Option<Pose>,
+    pub gesture_target: Option<Point>,
+    pub gesture_arm: Option<Arm>,
+    pub pre_gesture_message: Messages<'kb>,
+    pub post_gesture_message: Messages<'kb>,
+    pub cultural_knowledge: Vec<&'kb str>,
+}
 
 /// The three languages of one message.
-pub type Messages = ExportedMessages;
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Messages<'kb> {
+    pub english: Option<&'kb str>,
+    pub isi_zulu: Option<&'kb str>,
+    pub kinyarwanda: Option<&'kb str>,
+}
+
+impl Messages<'_> {
+    /// The message in `language`.
+    pub fn get(&self, language: Language) -> Option<&str> {
+        match language {
+            Language::English => self.english,
+            Language::IsiZulu => self.isi_zulu,
+            Language::Kinyarwanda => self.kinyarwanda,
+        }
+    }
+
+    fn to_export(self) -> ExportedMessages {
+        ExportedMessages {
+            english: self.english.map(str::to_string),
+            isi_zulu: self.isi_zulu.map(str::to_string),
+            kinyarwanda: self.kinyarwanda.map(str::to_string),
+        }
+    }
+}
+
+impl Location<'_> {
+    /// The message said in `phase` (before or after the gesture) in `language`.
+    pub fn message(&self, phase: Phase, language: Language) -> Option<&str> {
+        match phase {
+            Phase::Pre => self.pre_gesture_message.get(language),
+            Phase::Post => self.post_gesture_message.get(language),
+        }
+    }
+
+    /// This location, owned, in the shape of `ekb export`.
+    pub fn to_export(&self) -> ExportedLocation {
+        ExportedLocation {
+            id: self.id,
+            description: self.description.map(str::to_string),
+            pose: self.pose,
+            gesture_target: self.gesture_target,
+            gesture_arm: self.gesture_arm,
+            pre_gesture_message: self.pre_gesture_message.to_export(),
+            post_gesture_message: self.post_gesture_message.to_export(),
+            cultural_knowledge: self
+                .cultural_knowledge
+                .iter()
+                .map(|w| w.to_string())
+                .collect(),
+        }
+    }
+}
 
 /// How to check a file before loading it.
 #[derive(Debug, Clone)]
@@ -146,14 +209,37 @@ impl fmt::Display for LoadError {
 
 impl std::error::Error for LoadError {}
 
-/// A knowledge base that `ekb check` finds no error in, as the robot loads it.
+/// A knowledge base that `ekb check` finds no error in, as the robot loads it. It holds the
+/// file's text and, of each location, where its values are in it: no text is copied.
 #[derive(Debug, Clone, PartialEq)]
 pub struct KnowledgeBase {
     file: String,
     reader: Reader,
-    export: ExportedKnowledgeBase,
+    dialect: Option<Dialect>,
+    text: String,
+    locations: Vec<StoredLocation>,
+    tour: Vec<u32>,
     findings: Vec<Finding>,
 }
+
+/// Where a text value is in [`KnowledgeBase::text`]: its start and its end.
+type TextRange = (u32, u32);
+
+/// One location of a [`KnowledgeBase`], its texts as ranges of the file's text.
+#[derive(Debug, Clone, PartialEq)]
+struct StoredLocation {
+    id: u32,
+    description: Option<TextRange>,
+    pose: Option<Pose>,
+    gesture_target: Option<Point>,
+    gesture_arm: Option<Arm>,
+    /// Before and after the gesture, each in English, isiZulu and Kinyarwanda.
+    messages: [Option<TextRange>; 6],
+    cultural_knowledge: Vec<TextRange>,
+}
+
+const PHASES: [Phase; 2] = [Phase::Pre, Phase::Post];
+const LANGUAGES: [Language; 3] = [Language::English, Language::IsiZulu, Language::Kinyarwanda];
 
 impl KnowledgeBase {
     /// The file's name, as given.
@@ -168,26 +254,40 @@ impl KnowledgeBase {
 
     /// `seed` or `current`; `None` when the file has no dialect-specific key.
     pub fn dialect(&self) -> Option<Dialect> {
-        self.export.dialect
+        self.dialect
+    }
+
+    /// How many locations there are.
+    pub fn len(&self) -> usize {
+        self.locations.len()
+    }
+
+    /// Whether there is no location (a file with no error has one at least).
+    pub fn is_empty(&self) -> bool {
+        self.locations.is_empty()
     }
 
     /// Every location, in ascending id order.
-    pub fn locations(&self) -> &[Location] {
-        &self.export.locations
+    pub fn locations(&self) -> impl ExactSizeIterator<Item = Location<'_>> {
+        self.locations.iter().map(|stored| self.view(stored))
+    }
+
+    /// The location at `index` in ascending id order.
+    pub fn location_at(&self, index: usize) -> Option<Location<'_>> {
+        self.locations.get(index).map(|stored| self.view(stored))
     }
 
     /// The location with this id.
-    pub fn location(&self, id: u32) -> Option<&Location> {
-        let locations = &self.export.locations;
-        locations
+    pub fn location(&self, id: u32) -> Option<Location<'_>> {
+        self.locations
             .binary_search_by_key(&id, |location| location.id)
             .ok()
-            .map(|index| &locations[index])
+            .and_then(|index| self.location_at(index))
     }
 
     /// The ids of the tour's stops, in the order visited (a file with no error has a tour).
     pub fn tour(&self) -> &[u32] {
-        self.export.tour.as_deref().unwrap_or_default()
+        &self.tour
     }
 
     /// The warnings and notes of the check (a loaded file has no error).
@@ -195,9 +295,41 @@ impl KnowledgeBase {
         &self.findings
     }
 
-    /// The whole knowledge base in the shape of `ekb export`.
-    pub fn export(&self) -> &ExportedKnowledgeBase {
-        &self.export
+    /// The whole knowledge base, owned, in the shape of `ekb export`.
+    pub fn export(&self) -> ExportedKnowledgeBase {
+        ExportedKnowledgeBase {
+            dialect: self.dialect,
+            locations: self
+                .locations()
+                .map(|location| location.to_export())
+                .collect(),
+            tour: Some(self.tour.clone()),
+        }
+    }
+
+    fn view<'kb>(&'kb self, stored: &StoredLocation) -> Location<'kb> {
+        let text = |range: Option<TextRange>| {
+            range.map(|(start, end)| &self.text[start as usize..end as usize])
+        };
+        let messages = |phase: usize| Messages {
+            english: text(stored.messages[phase * 3]),
+            isi_zulu: text(stored.messages[phase * 3 + 1]),
+            kinyarwanda: text(stored.messages[phase * 3 + 2]),
+        };
+        Location {
+            id: stored.id,
+            description: text(stored.description),
+            pose: stored.pose,
+            gesture_target: stored.gesture_target,
+            gesture_arm: stored.gesture_arm,
+            pre_gesture_message: messages(0),
+            post_gesture_message: messages(1),
+            cultural_knowledge: stored
+                .cultural_knowledge
+                .iter()
+                .filter_map(|&range| text(Some(range)))
+                .collect(),
+        }
     }
 }
 
@@ -217,14 +349,37 @@ pub fn check_bytes(name: &str, bytes: &[u8], options: &Options) -> Result<Vec<Fi
 
 /// Loads the file at `path`, or refuses it with every finding if it has an error.
 pub fn load_path(path: &Path, options: &Options) -> Result<KnowledgeBase, LoadError> {
-    let source = read(path)?;
-    with_checked(&source, path, options, loaded)?
+    // Read into memory, not mapped: the knowledge base keeps the text, and a file truncated
+    // on disk while mapped would take it away.
+    let source = SourceFile::read_into_memory(path).map_err(|error| LoadError::Unreadable {
+        file: path.display().to_string(),
+        reason: error.to_string(),
+    })?;
+    load_source(source, path, options)
 }
 
 /// Loads `bytes`, the content of a file called `name`; see [`load_path`].
 pub fn load_bytes(name: &str, bytes: &[u8], options: &Options) -> Result<KnowledgeBase, LoadError> {
-    let source = SourceFile::from_bytes(name, bytes.to_vec());
-    with_checked(&source, Path::new(name), options, loaded)?
+    load_source(
+        SourceFile::from_bytes(name, bytes.to_vec()),
+        Path::new(name),
+        options,
+    )
+}
+
+/// Checks `source` and keeps its text, with where each value is in it.
+fn load_source(
+    source: SourceFile,
+    path: &Path,
+    options: &Options,
+) -> Result<KnowledgeBase, LoadError> {
+    let kb = with_checked(&source, path, options, loaded)??;
+    // The check is gone: its model borrowed the text, which is now the knowledge base's
+    // (moved, not copied).
+    Ok(KnowledgeBase {
+        text: source.into_text(),
+        ..kb
+    })
 }
 
 /// Loads the knowledge base that a configuration names, as the robot's class does: the
@@ -313,15 +468,60 @@ fn findings(checked: &Checked<'_>) -> Vec<Finding> {
         .collect()
 }
 
+/// The knowledge base of `checked`, its text still to be put in; or its refusal.
 fn loaded(checked: &Checked<'_>) -> Result<KnowledgeBase, LoadError> {
     let findings = findings(checked);
     if checked.has_errors() {
         return Err(LoadError::Refused { findings });
     }
+    let text = checked.source.text();
+    let range = |value: &str| range_in(text, value);
+    let locations = checked
+        .kb
+        .locations()
+        .iter()
+        .map(|location| {
+            let mut messages = [None; 6];
+            for (phase_index, phase) in PHASES.into_iter().enumerate() {
+                for (language_index, language) in LANGUAGES.into_iter().enumerate() {
+                    messages[phase_index * 3 + language_index] = location
+                        .message(phase, language)
+                        .map(|value| range(value.value));
+                }
+            }
+            StoredLocation {
+                id: location.id,
+                description: location.description().map(|value| range(value.value)),
+                pose: location.pose.map(|value| value.value),
+                gesture_target: location.gesture_target.map(|value| value.value),
+                gesture_arm: location.gesture_arm.map(|value| value.value),
+                messages,
+                cultural_knowledge: location.cultural_words().map(range).collect(),
+            }
+        })
+        .collect();
     Ok(KnowledgeBase {
         file: checked.source.name().to_string(),
         reader: checked.reader,
-        export: ExportedKnowledgeBase::from(&checked.kb),
+        dialect: checked.kb.dialect,
+        text: String::new(),
+        locations,
+        tour: checked
+            .kb
+            .tour
+            .as_ref()
+            .map(|tour| tour.stops().map(|stop| stop.value).collect())
+            .unwrap_or_default(),
         findings,
     })
+}
+
+/// Where `value`, a slice of `text` (the model borrows every value from the file's text),
+/// is in it.
+fn range_in(text: &str, value: &str) -> TextRange {
+    let start = (value.as_ptr() as usize)
+        .checked_sub(text.as_ptr() as usize)
+        .filter(|start| start + value.len() <= text.len())
+        .expect("the model's values are slices of the file's text");
+    (start as u32, (start + value.len()) as u32)
 }

@@ -142,13 +142,17 @@ impl SourceFile {
     /// Reads a file from disk, or standard input for `-`. A file in UTF-16 or UTF-32 is
     /// refused ([`crate::encoding`]): what reads it to rewrite it would break it.
     pub fn read(path: &Path) -> Result<SourceFile, ReadError> {
-        let source = SourceFile::read_even_wide(path)?;
-        match source.wide {
+        SourceFile::read_with(path, true)?.refusing_wide(path)
+    }
+
+    /// This file, or the refusal of a file in UTF-16 or UTF-32.
+    fn refusing_wide(self, path: &Path) -> Result<SourceFile, ReadError> {
+        match self.wide {
             Some(wide) => Err(ReadError {
                 path: path.to_path_buf(),
                 reason: wide.to_string(),
             }),
-            None => Ok(source),
+            None => Ok(self),
         }
     }
 
@@ -156,6 +160,17 @@ impl SourceFile {
     /// reader loads from it, nothing (an empty text), with its [encoding](SourceFile::wide):
     /// a finding about the file, for what only reports on it.
     pub fn read_even_wide(path: &Path) -> Result<SourceFile, ReadError> {
+        SourceFile::read_with(path, true)
+    }
+
+    /// [`SourceFile::read`] into memory, never mapped: for a text that outlives the read (a
+    /// loaded knowledge base keeps it), which a file truncated on disk meanwhile must not
+    /// take away.
+    pub fn read_into_memory(path: &Path) -> Result<SourceFile, ReadError> {
+        SourceFile::read_with(path, false)?.refusing_wide(path)
+    }
+
+    fn read_with(path: &Path, may_map: bool) -> Result<SourceFile, ReadError> {
         let fail = |reason: String| ReadError {
             path: path.to_path_buf(),
             reason,
@@ -188,7 +203,7 @@ impl SourceFile {
         })?;
         let name = path.display().to_string();
         let stamp = Some(FileStamp::of(&metadata));
-        if metadata.len() >= MIN_MAPPED_SIZE {
+        if may_map && metadata.len() >= MIN_MAPPED_SIZE {
             if let Some(map) = map(&file) {
                 if map.len() as u64 > MAX_FILE_SIZE {
                     return Err(fail(too_large(MAX_FILE_SIZE)));

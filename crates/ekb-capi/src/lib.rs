@@ -492,22 +492,22 @@ pub unsafe extern "C" fn ekb_finding_at(
 pub unsafe extern "C" fn ekb_location_count(handle: ekb_handle, out: *mut usize) -> ekb_status {
     guarded(|| {
         let entry = loaded(handle)?;
-        put(out, knowledge_base(&entry).locations().len())
+        put(out, knowledge_base(&entry).len())
     })
 }
 
 fn messages(messages: &Messages) -> ekb_messages {
     ekb_messages {
-        english: ekb_str::of_option(messages.english.as_deref()),
-        isi_zulu: ekb_str::of_option(messages.isi_zulu.as_deref()),
-        kinyarwanda: ekb_str::of_option(messages.kinyarwanda.as_deref()),
+        english: ekb_str::of_option(messages.english),
+        isi_zulu: ekb_str::of_option(messages.isi_zulu),
+        kinyarwanda: ekb_str::of_option(messages.kinyarwanda),
     }
 }
 
 fn location(location: &Location) -> ekb_location {
     ekb_location {
         id: location.id,
-        description: ekb_str::of_option(location.description.as_deref()),
+        description: ekb_str::of_option(location.description),
         has_pose: location.pose.is_some(),
         pose: location
             .pose
@@ -547,8 +547,8 @@ pub unsafe extern "C" fn ekb_location_at(
 ) -> ekb_status {
     guarded(|| {
         let entry = loaded(handle)?;
-        let found = knowledge_base(&entry).locations().get(index);
-        put(out, location(found.ok_or(EKB_BAD_ARGUMENT)?))
+        let found = knowledge_base(&entry).location_at(index);
+        put(out, location(&found.ok_or(EKB_BAD_ARGUMENT)?))
     })
 }
 
@@ -565,7 +565,7 @@ pub unsafe extern "C" fn ekb_location_by_id(
     guarded(|| {
         let entry = loaded(handle)?;
         let found = knowledge_base(&entry).location(id);
-        put(out, location(found.ok_or(EKB_UNKNOWN_ID)?))
+        put(out, location(&found.ok_or(EKB_UNKNOWN_ID)?))
     })
 }
 

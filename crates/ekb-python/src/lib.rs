@@ -19,6 +19,7 @@
 use std::path::PathBuf;
 
 use ekb::loader::{self, Language, Options, Phase};
+use ekb::model::export::ExportedLocation;
 use ekb::present::language;
 use ekb::reader::Reader;
 use pyo3::create_exception;
@@ -132,7 +133,7 @@ impl Point {
 /// One location, as `ekb export` shows it: a field absent from the file is `None`.
 #[pyclass(module = "ekb", frozen, eq)]
 #[derive(Clone, PartialEq)]
-struct Location(loader::Location);
+struct Location(ExportedLocation);
 
 #[pymethods]
 impl Location {
@@ -246,7 +247,10 @@ impl KnowledgeBase {
     /// Every location, in ascending id order.
     #[getter]
     fn locations(&self) -> Vec<Location> {
-        self.0.locations().iter().cloned().map(Location).collect()
+        self.0
+            .locations()
+            .map(|location| Location(location.to_export()))
+            .collect()
     }
 
     /// The ids of the tour's stops, in the order visited.
@@ -265,14 +269,13 @@ impl KnowledgeBase {
     fn location(&self, id: u32) -> PyResult<Location> {
         self.0
             .location(id)
-            .cloned()
-            .map(Location)
+            .map(|location| Location(location.to_export()))
             .ok_or_else(|| PyKeyError::new_err(id))
     }
 
     /// The whole knowledge base as a `dict` in the shape of `ekb export` (SPEC §5).
     fn export<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let json = serde_json::to_string(self.0.export())
+        let json = serde_json::to_string(&self.0.export())
             .map_err(|error| PyValueError::new_err(error.to_string()))?;
         py.import("json")?.call_method1("loads", (json,))
     }
@@ -286,14 +289,14 @@ impl KnowledgeBase {
     }
 
     fn __len__(&self) -> usize {
-        self.0.locations().len()
+        self.0.len()
     }
 
     fn __repr__(&self) -> String {
         format!(
             "KnowledgeBase(file={:?}, locations={}, tour={:?})",
             self.0.file(),
-            self.0.locations().len(),
+            self.0.len(),
             self.0.tour()
         )
     }
