@@ -4,7 +4,8 @@
 mod common;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use ekb::check::{check, Diagnostics};
+use ekb::check::check;
+use ekb::diagnostic::Diagnostics;
 use ekb::model::build::{build, Options};
 use ekb::SourceFile;
 

@@ -7,9 +7,11 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::parser::ValueSource;
-use clap::{CommandFactory, FromArgMatches, Parser, Subcommand, ValueEnum};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
-use crate::commands::{self, Context};
+use crate::commands;
+use crate::context::{ColorChoice, Context, Exit};
+use crate::settings::Lookup;
 use crate::stderr_line;
 use crate::streams;
 
@@ -38,7 +40,7 @@ pub struct Cli {
         env = "EKB_READER",
         value_name = "VERSION"
     )]
-    pub reader: Option<crate::reader::Reader>,
+    pub reader: Option<crate::robot::Reader>,
 
     /// Print only findings and errors, no summary
     #[arg(short, long, global = true)]
@@ -54,14 +56,6 @@ pub struct Cli {
 
     #[command(subcommand)]
     pub command: Command,
-}
-
-/// Whether output is coloured.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum ColorChoice {
-    Auto,
-    Always,
-    Never,
 }
 
 #[derive(Debug, Subcommand)]
@@ -113,7 +107,17 @@ pub fn main() -> ExitCode {
     let matches = Cli::command().get_matches();
     let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|error| error.exit());
     let reader_from_env = matches.value_source("reader") == Some(ValueSource::EnvVariable);
-    let context = Context::new(&cli, reader_from_env);
+    let mut context = Context::new(cli.config.clone());
+    context.color = cli.color;
+    context.verbose = cli.verbose;
+    context.quiet = cli.quiet;
+    context.reader = cli.reader;
+    context.reader_from_env = reader_from_env;
+    context.settings = match (&cli.settings, cli.isolated) {
+        (Some(path), _) => Lookup::Explicit(path.clone()),
+        (None, true) => Lookup::Isolated,
+        (None, false) => Lookup::Discover,
+    };
     let outcome = match &cli.command {
         Command::Check(args) => commands::check::run(args, &context),
         Command::Locations(args) => commands::locations::run(args, &context),
@@ -126,8 +130,8 @@ pub fn main() -> ExitCode {
         Command::Fix(args) => commands::fix::run(args, &context),
         Command::Rules(args) => commands::rules::run(args, &context),
         Command::Explain(args) => commands::explain::run(args, &context),
-        Command::Completions(args) => commands::completions::run(args, &context),
-        Command::Man(args) => commands::man::run(args, &context),
+        Command::Completions(args) => commands::completions::run(args, Cli::command()),
+        Command::Man(args) => commands::man::run(args, Cli::command()),
         Command::Map(args) => commands::map::run(args, &context),
         Command::Report(args) => commands::report::run(args, &context),
         Command::Mission(args) => commands::mission::run(args, &context),
@@ -138,7 +142,7 @@ pub fn main() -> ExitCode {
     };
     let exit = outcome.unwrap_or_else(|error| {
         error.report();
-        commands::Exit::Failure
+        Exit::Failure
     });
     // A stream that could not be written (`ekb export | head -c1`): what it should have
     // carried is lost, so the command failed, whatever else it did.
@@ -148,7 +152,7 @@ pub fn main() -> ExitCode {
                 "ekb: error: cannot write to {stream}: it was closed before ekb finished \
                  (whoever read it stopped reading)"
             );
-            commands::Exit::Failure.into()
+            Exit::Failure.into()
         }
         None => exit.into(),
     }

@@ -8,7 +8,7 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 
 use crate::model::Dialect;
-use crate::reader::Reader;
+use crate::robot::Reader;
 
 /// Where the configuration is looked for when neither `--config` nor `EKB_CONFIG` is given.
 pub const DEFAULT_PATH: &str = "config/environmentKnowledgeBaseConfiguration.ini";
@@ -254,7 +254,7 @@ fn parse_reader(value: &str) -> Result<Reader, String> {
     Reader::from_name(&value.to_ascii_lowercase()).ok_or_else(|| {
         format!(
             "reader must be one of {}, not `{}`",
-            crate::settings::reader_names(),
+            Reader::names(),
             value.trim()
         )
     })

@@ -8,7 +8,7 @@
 //! [`MAX_PASSES`] (no rule's fix undoes another's, so this bound is never reached in practice).
 //!
 //! Each pass checks with [`check_for_fix`], which keeps every finding of a fixable rule
-//! (`check` keeps the first [`MAX_KEPT_PER_RULE`](crate::check::MAX_KEPT_PER_RULE)): a file with a million lines to fix is
+//! (`check` keeps the first [`MAX_KEPT_PER_RULE`](crate::source::MAX_KEPT_PER_RULE)): a file with a million lines to fix is
 //! fixed in one pass, in time linear in the file and the fixes.
 
 use std::borrow::Cow;
@@ -16,8 +16,8 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use crate::canonical::Document;
 use crate::check::{check_for_fix, Checked};
+use crate::diagnostic::fix_list::{FixList, ListedFix};
 use crate::diagnostic::{Diagnostic, Edit};
-use crate::fix_list::{FixList, ListedFix};
 use crate::model::build::Options;
 use crate::rules::compat::compat_reader_crash::COMPAT_READER_CRASH;
 use crate::rules::selection::RuleSet;
@@ -530,7 +530,7 @@ mod tests {
     #[test]
     fn a_second_pass_finishes_what_the_first_started() {
         let options = Options {
-            reader: Some(crate::reader::Reader::V2025_06),
+            reader: Some(crate::robot::Reader::V2025_06),
             ..Options::default()
         };
         let source = SourceFile::from_bytes("t", b"RobotLocation 1 1 2 3\n".to_vec());
@@ -542,7 +542,7 @@ mod tests {
 
     #[test]
     fn more_findings_of_a_rule_than_check_keeps_are_all_fixed_in_one_run() {
-        use crate::check::MAX_KEPT_PER_RULE;
+        use crate::source::MAX_KEPT_PER_RULE;
         // One more finding than MAX_PASSES passes of MAX_KEPT_PER_RULE could fix.
         let lines = MAX_PASSES * MAX_KEPT_PER_RULE + 1;
         let result = fixed(&" \n".repeat(lines));
@@ -555,7 +555,7 @@ mod tests {
         let migrate = |text: &str, dialect| {
             let options = Options {
                 dialect: Some(dialect),
-                reader: Some(crate::reader::Reader::default_for(Some(dialect))),
+                reader: Some(crate::robot::Reader::default_for(Some(dialect))),
                 ..Options::default()
             };
             fix(&SourceFile::from_bytes("t", text.into()), &options).text

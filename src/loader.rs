@@ -25,9 +25,9 @@ use crate::diagnostic::Severity;
 use crate::model::build;
 use crate::model::export::{ExportedKnowledgeBase, ExportedLocation, ExportedMessages};
 use crate::model::Dialect;
-use crate::reader::Reader;
 use crate::render::escape::escape;
 use crate::render::FileReport;
+use crate::robot::Reader;
 use crate::settings::Lookup;
 use crate::source::SourceFile;
 

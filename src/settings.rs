@@ -31,7 +31,7 @@ use toml_edit::{ImDocument, Item, Key, TableLike, Value};
 
 use crate::diagnostic::Severity;
 use crate::model::Language;
-use crate::reader::Reader;
+use crate::robot::Reader;
 use crate::rules::selection::{nearest, Choice, RuleSelector, RuleSet};
 
 /// The names a settings file may have, in order of preference within one folder.
@@ -226,11 +226,6 @@ impl Settings {
     }
 }
 
-/// The versions' names, for messages: `d5.4.2, 2025-06, …`.
-pub fn reader_names() -> String {
-    Reader::ALL.map(Reader::name).join(", ")
-}
-
 /// The keys of each table, for errors and suggestions.
 const TOP_KEYS: [&str; 5] = ["reader", "check", "translations", "map", "mission"];
 const CHECK_KEYS: [&str; 5] = [
@@ -328,7 +323,7 @@ impl Parser<'_> {
         let reader = Reader::from_name(name).ok_or_else(|| {
             self.error(
                 at,
-                &format!("`reader` must be one of {}, not `{name}`", reader_names()),
+                &format!("`reader` must be one of {}, not `{name}`", Reader::names()),
             )
         })?;
         Ok(Sourced {

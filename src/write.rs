@@ -8,10 +8,10 @@
 //!   export is never held in memory whole).
 //! - [`rewrite`]`(path, bytes, read_as)`: writes back a file ekb read, whose
 //!   [`FileStamp`] (from [`crate::source::SourceFile::stamp`]) says what it was then.
-//!   [`crate::rewrite::deliver`] calls it for `fix` and `fmt`; a command that rewrites a
+//!   [`crate::commands::rewrite::deliver`] calls it for `fix` and `fmt`; a command that rewrites a
 //!   knowledge base calls `deliver` too.
 //! - [`rewrite_streamed`]`(path, read_as, produce)`: the same, `produce` writing the new
-//!   contents (`fmt` streams a formatted file; see [`crate::rewrite::deliver_streamed`]).
+//!   contents (`fmt` streams a formatted file; see [`crate::commands::rewrite::deliver_streamed`]).
 //! - [`lock_to_rewrite`]`(path)`: taken by a command before it reads a file it will write
 //!   back, and held until that file is replaced, so that two ekb rewriting one file take
 //!   turns: the second waits, then reads what the first wrote (no change is lost).

@@ -11,7 +11,8 @@ use std::path::Path;
 use std::time::Duration;
 
 use assert_cmd::Command;
-use ekb::check::{check, Checked, MAX_SHOWN_PER_RULE};
+use ekb::check::{check, Checked};
+use ekb::diagnostic::MAX_SHOWN_PER_RULE;
 use ekb::model::build::Options;
 use ekb::SourceFile;
 use generate::{generate, Spec};
@@ -156,7 +157,7 @@ fn a_line_of_one_word_repeated_keeps_a_bounded_number_of_findings() {
             .iter()
             .filter(|&&rule| rule == "repeated-word")
             .count();
-        assert_eq!(repeated, ekb::check::MAX_SHOWN_PER_RULE + 1);
+        assert_eq!(repeated, ekb::diagnostic::MAX_SHOWN_PER_RULE + 1);
     });
 }
 
@@ -561,7 +562,7 @@ fn fmt_refuses_a_stray_carriage_return_in_one_line() {
 #[test]
 fn one_fix_run_fixes_more_findings_of_a_rule_than_check_keeps() {
     // 20,000 lines with trailing blanks: twice the findings a check keeps of one rule.
-    let lines = 2 * ekb::check::MAX_KEPT_PER_RULE;
+    let lines = 2 * ekb::source::MAX_KEPT_PER_RULE;
     let text: String = (1..=lines)
         .map(|id| format!("robotLocationDescription {id} Room {id}  \n"))
         .collect();

@@ -15,7 +15,7 @@ fn kept_completion_scripts_are_current() {
             .join(file_name(shell));
         let kept = std::fs::read(&path).unwrap_or_default();
         assert!(
-            kept == script(shell),
+            kept == script(shell, ekb::cli::Cli::command()),
             "{} is stale or missing: run scripts/update-completions.sh",
             path.display()
         );
@@ -24,7 +24,7 @@ fn kept_completion_scripts_are_current() {
 
 #[test]
 fn completions_name_every_subcommand() {
-    let bash = String::from_utf8(script(Shell::Bash)).unwrap();
+    let bash = String::from_utf8(script(Shell::Bash, ekb::cli::Cli::command())).unwrap();
     for command in [
         "check",
         "locations",

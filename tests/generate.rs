@@ -9,7 +9,7 @@ use assert_cmd::Command;
 use ekb::check::check;
 use ekb::model::build::Options;
 use ekb::model::Dialect;
-use ekb::reader::Reader;
+use ekb::robot::Reader;
 use ekb::SourceFile;
 use generate::{generate, Spec};
 use predicates::prelude::*;

@@ -1,27 +1,11 @@
-//! The layers point one way: a module imports (`use crate::…`) only from its own layer or
-//! the layers below it, as the code map of ARCHITECTURE.md numbers them. The table is read
-//! from ARCHITECTURE.md itself, so the document and the test cannot drift apart. The
-//! imports that still point up are listed in [`KNOWN_DEBTS`]; any other fails.
+//! The layers point one way: a module uses (`crate::…`, in a `use` or inline) only items of
+//! its own entry of the code map of ARCHITECTURE.md, of another entry of its layer, or of
+//! the layers below it, and the entries of one layer import no circle. The table is read
+//! from ARCHITECTURE.md itself, so the document and the test cannot drift apart. Unit tests
+//! (`#[cfg(test)]` items) may use anything: they are no part of the library.
 
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
-
-/// Upward imports that are known debts, each a pair (importing entry of the code map,
-/// imported entry): they pass, and so does any import between the same two entries. Each
-/// is to be paid by moving the item to the layer it belongs to; then the pair goes from
-/// this list (the test fails on a pair that no longer imports upward, to keep it short).
-const KNOWN_DEBTS: &[(&str, &str)] = &[
-    // The model's reading options name the version of the robot's reader, and its line
-    // facts the reader's key buffer: `Reader` (a version and its limits) belongs below.
-    ("src/model/", "src/reader/"),
-    // A finding names its rule (`&'static Rule`), and suppressions and fixes select rules:
-    // the type `Rule` and its selection live with the catalogue, and belong below.
-    ("src/diagnostic.rs", "src/rules/"),
-    ("src/fix_list.rs", "src/rules/"),
-    ("src/suppression.rs", "src/rules/"),
-    // The rules fill the check's `Diagnostics`, which belongs with `diagnostic.rs`.
-    ("src/rules/", "src/check.rs"),
-];
 
 /// One row of the code map: a path under `src/` (a folder ends in `/`) and its layer.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -144,40 +128,124 @@ fn split_top(tree: &str) -> Vec<&str> {
     parts
 }
 
-/// Every `use crate::…;` statement of `source` (one may span lines), with the line it
-/// starts on, as the tree after `crate::`.
-fn crate_uses(source: &str) -> Vec<(usize, String)> {
-    let mut uses = Vec::new();
-    let mut open: Option<(usize, String)> = None;
-    for (number, line) in (1..).zip(source.lines()) {
+/// The lines of `source` that are library code, numbered from 1: without the items under
+/// `#[cfg(test)]` (a test module is skipped to its closing brace) and without comments.
+fn library_lines(source: &str) -> Vec<(usize, &str)> {
+    let mut lines = Vec::new();
+    let mut numbered = (1..).zip(source.lines());
+    while let Some((number, line)) = numbered.next() {
         let code = line.trim();
-        if open.is_none() {
+        if code == "#[cfg(test)]" {
+            skip_item(&mut numbered);
+            continue;
+        }
+        let code = without_comment(code);
+        if !code.is_empty() {
+            lines.push((number, code));
+        }
+    }
+    lines
+}
+
+/// Skips the item that follows an attribute: its block, to the brace that closes it, or
+/// its one line.
+fn skip_item<'s>(lines: &mut impl Iterator<Item = (usize, &'s str)>) {
+    let mut depth = 0usize;
+    for (_, line) in lines.by_ref() {
+        let code = without_comment(line.trim());
+        if code.starts_with("#[") {
+            continue;
+        }
+        for ch in code.chars() {
+            match ch {
+                '{' => depth += 1,
+                '}' => depth = depth.saturating_sub(1),
+                _ => {}
+            }
+        }
+        if depth == 0 && (code.ends_with('}') || code.ends_with(';')) {
+            return;
+        }
+    }
+}
+
+/// `code` without a `//` comment (one inside a string, as in `"http://"`, stays).
+fn without_comment(code: &str) -> &str {
+    let mut in_string = false;
+    let bytes = code.as_bytes();
+    for (at, &byte) in bytes.iter().enumerate() {
+        match byte {
+            b'"' if at == 0 || bytes[at - 1] != b'\\' => in_string = !in_string,
+            b'/' if !in_string && bytes.get(at + 1) == Some(&b'/') => return code[..at].trim(),
+            _ => {}
+        }
+    }
+    code
+}
+
+/// Every path into the crate that the library code of `source` names, with its line: the
+/// paths of each `use crate::…;` (one may span lines), and each `crate::a::b` written
+/// inline (not `$crate::`, a macro's).
+fn crate_paths(source: &str) -> Vec<(usize, Vec<String>)> {
+    let mut paths = Vec::new();
+    let mut open: Option<(usize, String)> = None;
+    for (number, code) in library_lines(source) {
+        if let Some((_, text)) = open.as_mut() {
+            text.push_str(code);
+        } else {
             let statement = code
                 .strip_prefix("pub(crate) ")
                 .or_else(|| code.strip_prefix("pub(super) "))
                 .or_else(|| code.strip_prefix("pub "))
                 .unwrap_or(code);
-            if let Some(tree) = statement.strip_prefix("use crate::") {
-                open = Some((number, String::new()));
-                let (_, text) = open.as_mut().expect("just opened");
-                text.push_str(tree);
+            match statement.strip_prefix("use crate::") {
+                Some(tree) => open = Some((number, tree.to_string())),
+                None => paths.extend(inline_paths(code).into_iter().map(|p| (number, p))),
             }
-        } else if let Some((_, text)) = open.as_mut() {
-            text.push_str(code);
         }
         if let Some((start, text)) = open.take() {
             match text.find(';') {
-                Some(end) => uses.push((start, text[..end].to_string())),
+                Some(end) => paths.extend(use_paths(&text[..end]).into_iter().map(|p| (start, p))),
                 None => open = Some((start, text)),
             }
         }
     }
-    uses
+    paths
 }
 
-/// An import that points up, not in [`KNOWN_DEBTS`].
-#[derive(Debug)]
-struct Upward {
+/// The `crate::a::b…` paths written in one line of code, each as its segments.
+fn inline_paths(code: &str) -> Vec<Vec<String>> {
+    let is_name = |ch: char| ch.is_ascii_alphanumeric() || ch == '_';
+    code.match_indices("crate::")
+        .filter(|(at, _)| {
+            code[..*at]
+                .chars()
+                .next_back()
+                .is_none_or(|ch| !is_name(ch) && ch != '$')
+        })
+        .map(|(at, _)| {
+            let mut segments = Vec::new();
+            let mut rest = &code[at + "crate::".len()..];
+            loop {
+                let length = rest.find(|ch: char| !is_name(ch)).unwrap_or(rest.len());
+                if length == 0 {
+                    break;
+                }
+                segments.push(rest[..length].to_string());
+                match rest[length..].strip_prefix("::") {
+                    Some(next) => rest = next,
+                    None => break,
+                }
+            }
+            segments
+        })
+        .filter(|segments| !segments.is_empty())
+        .collect()
+}
+
+/// One use of an item of another entry of the code map.
+#[derive(Debug, Clone)]
+struct Import {
     file: String,
     line: usize,
     from: Entry,
@@ -185,35 +253,38 @@ struct Upward {
     path: String,
 }
 
-/// The upward imports of the file `file` (a path under `src/`) whose text is `source`, and
-/// the pairs of [`KNOWN_DEBTS`] it uses.
-fn upward_imports(
-    map: &[Entry],
-    file: &str,
-    source: &str,
-    used_debts: &mut BTreeSet<(String, String)>,
-) -> Vec<Upward> {
+impl std::fmt::Display for Import {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{}:{}: `crate::{}`: {} (layer {}) uses {} (layer {})",
+            self.file,
+            self.line,
+            self.path,
+            self.from.path,
+            self.from.layer,
+            self.to.path,
+            self.to.layer
+        )
+    }
+}
+
+/// The uses, in the library code of the file `file` (a path under `src/`) whose text is
+/// `source`, of items of other entries of the code map.
+fn imports(map: &[Entry], file: &str, source: &str) -> Vec<Import> {
     let from = owner(map, file)
         .unwrap_or_else(|| panic!("{file} is in no entry of the code map of ARCHITECTURE.md"));
     let mut found = Vec::new();
-    for (line, tree) in crate_uses(source) {
-        for path in use_paths(&tree) {
-            let segments: Vec<&str> = path.iter().map(String::as_str).collect();
-            let to = imported(map, &segments).unwrap_or_else(|| {
-                panic!(
-                    "{file}:{line}: `crate::{}` is in no entry of the code map",
-                    path.join("::")
-                )
-            });
-            if to.layer <= from.layer {
-                continue;
-            }
-            let pair = (from.path.clone(), to.path.clone());
-            if KNOWN_DEBTS.contains(&(pair.0.as_str(), pair.1.as_str())) {
-                used_debts.insert(pair);
-                continue;
-            }
-            found.push(Upward {
+    for (line, path) in crate_paths(source) {
+        let segments: Vec<&str> = path.iter().map(String::as_str).collect();
+        let to = imported(map, &segments).unwrap_or_else(|| {
+            panic!(
+                "{file}:{line}: `crate::{}` is in no entry of the code map",
+                path.join("::")
+            )
+        });
+        if to != from {
+            found.push(Import {
                 file: file.to_string(),
                 line,
                 from: from.clone(),
@@ -225,7 +296,63 @@ fn upward_imports(
     found
 }
 
-/// The `.rs` files under `dir`, as paths relative to `root`.
+/// The imports that point to a higher layer.
+fn upward(imports: &[Import]) -> Vec<&Import> {
+    imports
+        .iter()
+        .filter(|import| import.to.layer > import.from.layer)
+        .collect()
+}
+
+/// The circles of imports between entries: each a set of two or more entries that all
+/// reach each other, with one import of each of its edges as evidence.
+fn circles(imports: &[Import]) -> Vec<Vec<&Import>> {
+    let mut edges: BTreeMap<&str, BTreeMap<&str, &Import>> = BTreeMap::new();
+    for import in imports {
+        edges
+            .entry(import.from.path.as_str())
+            .or_default()
+            .entry(import.to.path.as_str())
+            .or_insert(import);
+    }
+    let reach = |start: &str| {
+        let mut seen = BTreeSet::new();
+        let mut stack = vec![start.to_string()];
+        while let Some(at) = stack.pop() {
+            for &next in edges.get(at.as_str()).into_iter().flat_map(BTreeMap::keys) {
+                if seen.insert(next.to_string()) {
+                    stack.push(next.to_string());
+                }
+            }
+        }
+        seen
+    };
+    let reached: BTreeMap<&str, BTreeSet<String>> =
+        edges.keys().map(|&entry| (entry, reach(entry))).collect();
+    let mut circles = Vec::new();
+    let mut placed = BTreeSet::new();
+    for &entry in edges.keys() {
+        if placed.contains(entry) || !reached[entry].contains(entry) {
+            continue;
+        }
+        let members: BTreeSet<&str> = reached[entry]
+            .iter()
+            .map(String::as_str)
+            .filter(|other| reached.get(other).is_some_and(|r| r.contains(entry)))
+            .collect();
+        placed.extend(members.iter().copied());
+        let evidence = members
+            .iter()
+            .flat_map(|from| edges[from].iter())
+            .filter(|(to, _)| members.contains(*to))
+            .map(|(_, &import)| import)
+            .collect();
+        circles.push(evidence);
+    }
+    circles
+}
+
+/// `.rs` files under `dir`, as paths relative to `root`.
 fn rust_files(root: &Path, dir: &Path, out: &mut Vec<String>) {
     for entry in std::fs::read_dir(dir).expect("a readable folder") {
         let path = entry.expect("an entry").path();
@@ -238,8 +365,8 @@ fn rust_files(root: &Path, dir: &Path, out: &mut Vec<String>) {
     }
 }
 
-#[test]
-fn no_module_imports_from_a_layer_above_it() {
+/// Every import of the crate's library code between entries of ARCHITECTURE.md's code map.
+fn crate_imports() -> Vec<Import> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let architecture =
         std::fs::read_to_string(root.join("ARCHITECTURE.md")).expect("ARCHITECTURE.md");
@@ -248,72 +375,116 @@ fn no_module_imports_from_a_layer_above_it() {
     let mut files = Vec::new();
     rust_files(root, &root.join("src"), &mut files);
     assert!(files.len() > 100, "found {} source files", files.len());
-    let mut used_debts = BTreeSet::new();
-    let mut upward = Vec::new();
-    for file in &files {
-        let source = std::fs::read_to_string(root.join(file)).expect("a source file");
-        upward.extend(upward_imports(&map, file, &source, &mut used_debts));
-    }
-    let report: Vec<String> = upward
+    files
         .iter()
-        .map(|up| {
-            format!(
-                "{}:{}: `crate::{}`: {} (layer {}) imports from {} (layer {})",
-                up.file, up.line, up.path, up.from.path, up.from.layer, up.to.path, up.to.layer
-            )
+        .flat_map(|file| {
+            let source = std::fs::read_to_string(root.join(file)).expect("a source file");
+            imports(&map, file, &source)
         })
-        .collect();
+        .collect()
+}
+
+#[test]
+fn no_module_imports_from_a_layer_above_it() {
+    let imports = crate_imports();
+    assert!(imports.len() > 100, "found {} imports", imports.len());
+    let report: Vec<String> = upward(&imports).iter().map(|up| up.to_string()).collect();
     assert!(
         report.is_empty(),
         "imports from a layer above (move the item down, or the importer up; see \
          ARCHITECTURE.md, \"Code map\"):\n{}",
         report.join("\n")
     );
-    let paid: Vec<_> = KNOWN_DEBTS
+}
+
+#[test]
+fn no_entries_import_each_other_in_a_circle() {
+    let imports = crate_imports();
+    let report: Vec<String> = circles(&imports)
         .iter()
-        .filter(|(from, to)| !used_debts.contains(&(from.to_string(), to.to_string())))
+        .map(|circle| {
+            let lines: Vec<String> = circle.iter().map(|import| format!("  {import}")).collect();
+            lines.join("\n")
+        })
         .collect();
     assert!(
-        paid.is_empty(),
-        "debts paid, to take off KNOWN_DEBTS: {paid:?}"
+        report.is_empty(),
+        "entries of the code map that import each other (one of them, or the item they \
+         share, belongs elsewhere):\n{}",
+        report.join("\n\n")
     );
 }
 
-/// A made-up code map and import: the checker itself finds an upward import, follows
-/// groups, multi-line statements and root re-exports, and passes a downward one.
+/// A made-up code map and sources: the checker itself finds an upward import, in a `use`
+/// (with groups, over lines, through a root re-export) or inline, passes a downward one,
+/// a comment and a unit test, and finds a circle.
 #[test]
-fn an_added_upward_import_is_found() {
+fn an_added_upward_import_or_circle_is_found() {
     let map = code_map(
         "# A\n\n## Code map\n\n| Path | Layer |\n|---|---|\n| `src/syntax/` | 0 |\n\
          | `src/render/escape.rs` | 0 |\n| `src/render/` | 7 |\n| `src/rules/` | 5 |\n\
-         | `src/diagnostic.rs` | 4 |\n| `src/check.rs` | 6 |\n\n## Invariants\n\n| `src/x/` | 9 |\n",
+         | `src/diagnostic.rs` | 4 |\n| `src/check.rs` | 6 |\n| `src/fixing.rs` | 6 |\n\n\
+         ## Invariants\n\n| `src/x/` | 9 |\n",
     );
-    assert_eq!(map.len(), 6, "{map:?}");
-    let upward = |file: &str, source: &str| {
-        let found = upward_imports(&map, file, source, &mut BTreeSet::new());
-        found
+    assert_eq!(map.len(), 7, "{map:?}");
+    let found = |file: &str, source: &str| imports(&map, file, source);
+    let upward_in = |file: &str, source: &str| {
+        upward(&found(file, source))
             .iter()
             .map(|up| format!("{}:{} {}", up.file, up.line, up.path))
             .collect::<Vec<_>>()
     };
     assert_eq!(
-        upward("src/syntax/span.rs", "//! x\nuse crate::rules::ALL;\n"),
+        upward_in("src/syntax/span.rs", "//! x\nuse crate::rules::ALL;\n"),
         ["src/syntax/span.rs:2 rules::ALL"]
     );
     assert_eq!(
-        upward(
+        upward_in(
             "src/syntax/line.rs",
             "pub(crate) use crate::{\n    render::{escape::escape, human},\n    syntax::Span,\n};\n"
         ),
         ["src/syntax/line.rs:1 render::human"]
     );
     assert_eq!(
-        upward("src/diagnostic.rs", "use crate::{Checked, Severity};\n"),
+        upward_in("src/diagnostic.rs", "use crate::{Checked, Severity};\n"),
         ["src/diagnostic.rs:1 Checked"]
     );
-    assert!(upward(
+    assert_eq!(
+        upward_in(
+            "src/diagnostic.rs",
+            "fn f() {\n    let n = crate::rules::index_of(r); // crate::check\n}\n"
+        ),
+        ["src/diagnostic.rs:2 rules::index_of"]
+    );
+    assert!(upward_in(
         "src/check.rs",
-        "use crate::rules::{self, Rule};\nuse crate::render::escape::escape as e;\n"
+        "use crate::rules::{self, Rule};\nuse crate::render::escape::escape as e;\n\
+         // crate::render::human\nmacro_rules! m { () => { $crate::render::human } }\n"
     )
     .is_empty());
+    assert!(upward_in(
+        "src/diagnostic.rs",
+        "fn f() {}\n\n#[cfg(test)]\nmod tests {\n    use crate::check::check;\n    \
+         fn g() {\n        crate::rules::ALL;\n    }\n}\n"
+    )
+    .is_empty());
+    assert_eq!(
+        upward_in(
+            "src/diagnostic.rs",
+            "#[cfg(test)]\nfn helper() {\n    crate::check::check();\n}\nuse crate::rules::ALL;\n"
+        ),
+        ["src/diagnostic.rs:5 rules::ALL"]
+    );
+    let mut both = found("src/check.rs", "use crate::fixing::apply;\n");
+    assert!(circles(&both).is_empty());
+    both.extend(found(
+        "src/fixing.rs",
+        "fn f() { crate::check::check(); }\n",
+    ));
+    let circle: Vec<String> = circles(&both)
+        .iter()
+        .flatten()
+        .map(|import| format!("{}:{}", import.file, import.line))
+        .collect();
+    assert_eq!(circle, ["src/check.rs:1", "src/fixing.rs:1"]);
 }

@@ -167,7 +167,7 @@ fn the_drop_in_limits_refuse_what_the_documents_types_cannot_hold() {
     // library has no 200-byte, 20-stop or 2-word limit.
     let path = fixture("loader/fixed-size.dat");
     let options = Options {
-        reader: Some(ekb::reader::Reader::V2026_03),
+        reader: Some(ekb::robot::Reader::V2026_03),
         ..isolated()
     };
     let kb = loader::load_path(&path, &options).unwrap();

@@ -493,7 +493,7 @@ fn the_async_nodes_of_behavior_controller_v1_1_are_a_warning_and_say_their_phras
 
 #[test]
 fn the_async_nodes_are_known_to_2026_04_and_an_error_for_an_earlier_reader() {
-    use ekb::reader::Reader;
+    use ekb::robot::Reader;
     let xml = "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n<BehaviorTree ID=\"A\">\n\
                <NavigateAsync/>\n</BehaviorTree></root>";
     let source = SourceFile::from_bytes(MISSION, xml.as_bytes().to_vec());
@@ -593,7 +593,7 @@ fn the_culture_reader_of_2026_02_holds_lines_of_up_to_299_bytes() {
         )
         .into_bytes(),
     );
-    let too_long = |reader: Option<ekb::reader::Reader>| {
+    let too_long = |reader: Option<ekb::robot::Reader>| {
         let options = Options {
             reader,
             ..Options::default()
@@ -607,8 +607,8 @@ fn the_culture_reader_of_2026_02_holds_lines_of_up_to_299_bytes() {
             .collect::<Vec<_>>()
     };
     assert_eq!(too_long(None), [(2, 200)]);
-    assert_eq!(too_long(Some(ekb::reader::Reader::V2025_06)), [(2, 200)]);
-    assert_eq!(too_long(Some(ekb::reader::Reader::V2026_02)), []);
+    assert_eq!(too_long(Some(ekb::robot::Reader::V2025_06)), [(2, 200)]);
+    assert_eq!(too_long(Some(ekb::robot::Reader::V2026_02)), []);
 }
 
 #[test]

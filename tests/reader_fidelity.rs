@@ -7,7 +7,8 @@
 use ekb::model::build::Options;
 use ekb::model::{Key, KnowledgeBase, Language, Phase};
 use ekb::reader::line::LoadedValue;
-use ekb::reader::{self, Loaded, Reader};
+use ekb::reader::{self, Loaded};
+use ekb::robot::Reader;
 use ekb::source::LineIndex;
 use ekb::{Severity, SourceFile};
 use proptest::prelude::*;

@@ -19,7 +19,7 @@ use ekb::diagnostic::{Diagnostic, Edit};
 use ekb::map::LabMap;
 use ekb::model::build::Options;
 use ekb::model::Dialect;
-use ekb::reader::Reader;
+use ekb::robot::Reader;
 use ekb::rules::selection::RuleSet;
 use ekb::rules::{self, Category, Rule};
 use ekb::source::{LineIndex, Position};

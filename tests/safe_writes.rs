@@ -15,7 +15,7 @@ use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
 use author_support::{ekb, fixture, read_fixture, temp_file};
-use ekb::rewrite::{self, DiffStyle, Mode};
+use ekb::commands::rewrite::{self, DiffStyle, Mode};
 use ekb::SourceFile;
 
 /// A file with something to fix (trailing blanks) and what `fix` makes of it.

@@ -16,7 +16,7 @@ use super::{name_lines, NAMED_LINES};
 use crate::model::build::{parse_id, tour_items};
 use crate::model::{IdMap, Key, ValueKind};
 use crate::render::escape::escape;
-use crate::suppression;
+use crate::syntax::suppression;
 use crate::syntax::{self, is_blank, Body, Line, LineEnding, Span};
 
 /// Lines ending in a carriage return that is not part of a CRLF: written before the

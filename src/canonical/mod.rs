@@ -37,7 +37,7 @@ use std::io::{self, Write};
 use std::ops::ControlFlow;
 
 use crate::model::Key;
-use crate::reader::Reader;
+use crate::robot::Reader;
 use crate::syntax::{self, Body, Line};
 use from_source::Place;
 

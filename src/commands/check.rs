@@ -4,14 +4,16 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use super::map::MapArgs;
+use super::rewrite::{self, DiffStyle, Mode};
 use super::{CommandError, CommandResult, Context, Exit};
+use crate::check::suppression;
 use crate::check::Checked;
-use crate::diagnostic::{Hidden, Severity, Summary};
+use crate::check::{Hidden, Summary};
+use crate::diagnostic::Severity;
 use crate::mission::check::check_file;
 use crate::render::{self, escape::escape, statistics, Format, RenderOptions};
-use crate::rewrite::{self, DiffStyle, Mode};
 use crate::rules::selection::{Choice, RuleSelector};
-use crate::{stderr_line, suppression};
+use crate::stderr_line;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {

@@ -3,11 +3,9 @@
 
 use std::io::Write;
 
-use clap::CommandFactory;
 use clap_complete::Shell;
 
-use super::{CommandResult, Context, Exit};
-use crate::cli::Cli;
+use super::{CommandResult, Exit};
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -16,16 +14,17 @@ pub struct Args {
     pub shell: Shell,
 }
 
-pub fn run(args: &Args, _context: &Context) -> CommandResult {
+/// Prints the script of `cli`, the whole command line.
+pub fn run(args: &Args, cli: clap::Command) -> CommandResult {
     let mut stdout = std::io::stdout().lock();
-    stdout.write_all(&script(args.shell))?;
+    stdout.write_all(&script(args.shell, cli))?;
     Ok(Exit::Clean)
 }
 
 /// The completion script for `shell`.
-pub fn script(shell: Shell) -> Vec<u8> {
+pub fn script(shell: Shell, mut cli: clap::Command) -> Vec<u8> {
     let mut out = Vec::new();
-    clap_complete::generate(shell, &mut Cli::command(), "ekb", &mut out);
+    clap_complete::generate(shell, &mut cli, "ekb", &mut out);
     out
 }
 

@@ -5,15 +5,15 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use super::check::RuleArgs;
+use super::rewrite::{self, DiffStyle, Mode};
 use super::{errors_to_stderr, CommandError, CommandResult, Context, Exit};
 use crate::canonical::Document;
 use crate::check::{check_with, Checked};
 use crate::fixing::{self, Fixes, Outcome};
 use crate::model::build::Options;
 use crate::model::{Dialect, Key, KnowledgeBase};
-use crate::reader::Reader;
 use crate::render::escape::escape;
-use crate::rewrite::{self, DiffStyle, Mode};
+use crate::robot::Reader;
 use crate::rules::compat::compat_reader_crash::COMPAT_READER_CRASH;
 use crate::rules::compat::compat_slow_load::COMPAT_SLOW_LOAD;
 use crate::rules::selection::{RuleSelector, RuleSet};

@@ -3,10 +3,10 @@
 use std::io;
 use std::path::{Path, PathBuf};
 
+use super::rewrite::{self, DiffStyle, Mode};
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::canonical::{Document, WriteError};
 use crate::render::escape::escape;
-use crate::rewrite::{self, DiffStyle, Mode};
 use crate::stderr_line;
 
 #[derive(Debug, clap::Args)]

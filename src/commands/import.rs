@@ -11,6 +11,7 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
+use super::rewrite::{self, DiffStyle, Mode};
 use super::{errors_to_stderr, CommandError, CommandResult, Context, Exit};
 use crate::canonical::Document;
 use crate::check::check;
@@ -19,7 +20,6 @@ use crate::model::build::Options;
 use crate::model::export::ExportedKnowledgeBase;
 use crate::model::Language;
 use crate::render::escape::escape;
-use crate::rewrite::{self, DiffStyle, Mode};
 use crate::source::SourceFile;
 use crate::stderr_line;
 use crate::translations::{import, po, Catalog};

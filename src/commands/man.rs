@@ -4,27 +4,25 @@
 
 use std::io::{self, Write};
 
-use clap::CommandFactory;
 use clap_mangen::Man;
 
-use super::{CommandResult, Context, Exit};
-use crate::cli::Cli;
+use super::{CommandResult, Exit};
 use crate::config;
-use crate::reader::Reader;
+use crate::robot::Reader;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {}
 
-pub fn run(_args: &Args, _context: &Context) -> CommandResult {
+/// Prints the page of `cli`, the whole command line.
+pub fn run(_args: &Args, cli: clap::Command) -> CommandResult {
     let mut stdout = std::io::stdout().lock();
-    stdout.write_all(page()?.as_bytes())?;
+    stdout.write_all(page(cli)?.as_bytes())?;
     Ok(Exit::Clean)
 }
 
 /// The page, in roff. The subcommands are sections of it, not pages of their own (which
 /// clap_mangen would name, as `ekb-check(1)`, without writing them).
-pub fn page() -> io::Result<String> {
-    let cli = Cli::command();
+pub fn page(cli: clap::Command) -> io::Result<String> {
     let man = Man::new(cli.clone());
     let mut page = rendered(|out| man.render_title(out))?;
     page += &rendered(|out| man.render_name_section(out))?;
@@ -39,7 +37,7 @@ pub fn page() -> io::Result<String> {
     page += &environment();
     page += &files();
     page += &rendered(|out| man.render_version_section(out))?;
-    Ok(preamble()? + &page)
+    Ok(preamble(cli)? + &page)
 }
 
 /// `ekb check` as a subsection: what it does, its synopsis and its own options (the global
@@ -75,9 +73,9 @@ fn rendered(render: impl FnOnce(&mut dyn Write) -> io::Result<()>) -> io::Result
 
 /// The lines that define the `Aq` string (an apostrophe) in clap_mangen's roff: written once,
 /// at the top of the page.
-fn preamble() -> io::Result<String> {
+fn preamble(cli: clap::Command) -> io::Result<String> {
     let mut out = Vec::new();
-    Man::new(Cli::command()).render_title(&mut out)?;
+    Man::new(cli).render_title(&mut out)?;
     let text = String::from_utf8(out).map_err(io::Error::other)?;
     Ok(text
         .lines()
@@ -162,7 +160,8 @@ mod tests {
 
     #[test]
     fn every_configuration_key_is_documented() {
-        let page = page().unwrap();
+        use clap::CommandFactory;
+        let page = page(crate::cli::Cli::command()).unwrap();
         for key in config::KEYS {
             assert!(page.contains(&format!(".B {key}\n")), "{key}");
         }

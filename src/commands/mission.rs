@@ -13,9 +13,9 @@ use crate::mission::{outline, robot_language, walk, LANGUAGE_KEY};
 use crate::model::build::Options;
 use crate::model::Language;
 use crate::present::language;
-use crate::reader::Reader;
 use crate::render::escape::{escape, escape_lines};
 use crate::render::{safe_json as json, Format};
+use crate::robot::Reader;
 use crate::rules::selection::RuleSet;
 use crate::source::SourceFile;
 

@@ -5,11 +5,11 @@
 
 use std::path::{Path, PathBuf};
 
+use super::rewrite::{self, DiffStyle, Mode};
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::edit::{self, ValueEdit};
 use crate::model::Key;
 use crate::render::escape::escape;
-use crate::rewrite::{self, DiffStyle, Mode};
 
 #[derive(Debug, clap::Args)]
 pub struct Args {

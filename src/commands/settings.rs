@@ -147,7 +147,7 @@ fn reader(
     settings: &Settings,
     file: &Path,
 ) -> Result<(String, String), CommandError> {
-    let quoted = |reader: crate::reader::Reader| format!("\"{}\"", reader.name());
+    let quoted = |reader: crate::robot::Reader| format!("\"{}\"", reader.name());
     if let Some(reader) = context.reader {
         let flag = if context.reader_from_env {
             "EKB_READER"

@@ -10,11 +10,13 @@ pub mod png;
 pub mod svg;
 
 use crate::check::Checked;
-use crate::diagnostic::{Severity, Summary};
+use crate::check::Summary;
+use crate::diagnostic::Severity;
 use crate::map::LabMap;
 use crate::model::{Arm, Key, Point, Pose};
 use crate::present::{Gesture, TourPositions};
-use crate::reader::{view, Loaded, Reader};
+use crate::reader::{view, Loaded};
+use crate::robot::Reader;
 use crate::rules::Rule;
 
 /// What a drawing shows: each location where the robot stands, the tour, the findings.

@@ -21,7 +21,7 @@ pub mod server;
 pub mod transport;
 pub mod workspace;
 
-use crate::commands::Context;
+use crate::context::Context;
 pub use server::Ending;
 use transport::Transport;
 

@@ -32,7 +32,7 @@ use super::handlers::{self, code_actions, Answer, Snapshot};
 use super::position::Encoding;
 use super::transport::{Incoming, Outgoing};
 use super::workspace::{self, Workspace};
-use crate::commands::Context;
+use crate::context::Context;
 
 /// How the session ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -5,8 +5,8 @@ use std::path::{Path, PathBuf};
 
 use lsp_types::{InitializeParams, Uri};
 
-use crate::commands::Context;
 use crate::config::{self, Config};
+use crate::context::Context;
 use crate::mission::culture::{self, ValueTypes};
 use crate::mission::setup::{self, MissionPaths};
 use crate::model::build::Options;
@@ -197,7 +197,7 @@ mod tests {
         let options = workspace.options(Some(&root.path().join("data/kb.dat")));
         assert_eq!(
             options.unwrap().0.reader,
-            Some(crate::reader::Reader::V2026_02)
+            Some(crate::robot::Reader::V2026_02)
         );
     }
 

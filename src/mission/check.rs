@@ -1,11 +1,13 @@
 //! The mission's files checked together (`ekb mission check`), and each alone
 //! (`ekb check FILE`, which recognises a mission or a culture file by its content).
 
-use crate::check::{self as env, Checked, Diagnostics, FileKind};
+use crate::check::{self as env, Checked, FileKind};
+
+use crate::diagnostic::Diagnostics;
 use crate::map::LabMap;
 use crate::model::build::Options;
 use crate::model::{KnowledgeBase, Language};
-use crate::reader::Reader;
+use crate::robot::Reader;
 use crate::rules::culture::culture_duplicate_key::Wins;
 use crate::rules::culture::*;
 use crate::rules::mission::*;

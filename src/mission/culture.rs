@@ -4,7 +4,7 @@
 //! values, each read as its key's type says.
 //!
 //! Both are read with `fgets` and a 200-byte buffer (300 in `2026-02`'s copy,
-//! [`crate::reader::Reader::culture_line_buffer`]): a longer line is cut, and its rest
+//! [`crate::robot::Reader::culture_line_buffer`]): a longer line is cut, and its rest
 //! read as a line of its own. Every line, blank lines and comments included, is scanned
 //! with `sscanf(" %s %s")` into a key and a second word that are not cleared between
 //! lines: a line with one word keeps the second word of an earlier line, and a blank line

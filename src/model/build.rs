@@ -15,8 +15,8 @@ use crate::model::{
     words, Arm, Dialect, IdMap, Key, KnowledgeBase, LineFacts, Location, Point, Pose, Tour, Value,
     ValueKind, LINE_STARTS_EVERY,
 };
-use crate::reader::Reader;
 use crate::render::escape::escape;
+use crate::robot::Reader;
 use crate::source::LineStart;
 use crate::syntax::{self, Body, Line, Span};
 
@@ -218,7 +218,7 @@ impl<'a> Builder<'a> {
         self.facts.note_length(line, self.text);
         out.line(line, self.text);
         if let Body::Comment(comment) = line.body {
-            if crate::suppression::may_be_one(self.lexed(comment)) {
+            if crate::syntax::suppression::may_be_one(self.lexed(comment)) {
                 *self.facts.suppression_lines.get_or_insert(0) += 1;
             }
         }

@@ -8,11 +8,10 @@
 pub mod build;
 pub mod export;
 mod ids;
-mod keys;
 mod text;
 
+pub use crate::robot::{Dialect, Key, Language, Phase, ValueKind};
 pub use ids::{IdMap, IdSet};
-pub use keys::{Dialect, Key, Language, Phase, ValueKind};
 pub use text::{is_placeholder, words};
 
 use serde::{Deserialize, Serialize};
@@ -319,7 +318,7 @@ pub const LINE_STARTS_EVERY: usize = 1 << 20;
 impl LineFacts {
     /// Notes `line`'s length, and the length of its first word where it can matter.
     pub fn note_length(&mut self, line: &crate::syntax::Line, text: &str) {
-        use crate::reader::{key_buffer, Reader};
+        use crate::robot::{key_buffer, Reader};
         let length = line.span.len();
         if length >= Reader::SMALLEST_LINE_BUFFER {
             self.long_lines.push(line.span);

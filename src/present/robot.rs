@@ -4,7 +4,8 @@
 use super::field::{Field, FieldValue};
 use crate::model::{Dialect, Key, KnowledgeBase, Location, Point, Pose};
 use crate::reader::view::{self, Held};
-use crate::reader::{Loaded, Reader};
+use crate::reader::Loaded;
+use crate::robot::Reader;
 use crate::syntax::Span;
 
 /// One field of a location as `show` lists it.

@@ -142,7 +142,7 @@ impl<'a> InBuffer<'a> {
     /// reader's `while (skip(input_string[i])) i++` finds it: on past the line's C string,
     /// a NUL and the line's end; `None` where it runs into bytes no line wrote.
     pub fn skip(&self, at: usize, skip: impl Fn(u8) -> bool + Copy) -> Option<usize> {
-        if let Some(found) = super::scan::skip_while(self.c_line(), at, skip) {
+        if let Some(found) = crate::robot::scan::skip_while(self.c_line(), at, skip) {
             return Some(found);
         }
         (at.max(self.c_length)..).find_map(|at| match self.byte(at) {

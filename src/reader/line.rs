@@ -10,9 +10,9 @@
 
 use super::buffer::InBuffer;
 use super::load::TOUR_BUFFER;
-use super::scan::{self, is_alnum};
-use super::Reader;
 use crate::model::{Key, ValueKind};
+use crate::robot::scan::{self, is_alnum};
+use crate::robot::Reader;
 use crate::syntax::Span;
 
 /// What one line does to what the robot holds.

@@ -2,10 +2,10 @@
 
 use super::buffer::{InBuffer, LineBuffer};
 use super::line::{self, LineRead, LoadedValue, ValueAt};
-use super::scan::is_space;
 use super::tree::{ShapeBuilder, TreeShape};
-use super::Reader;
 use crate::model::Key;
+use crate::robot::scan::is_space;
+use crate::robot::Reader;
 use crate::syntax::Span;
 
 /// What the robot holds after reading a file.

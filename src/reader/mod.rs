@@ -8,13 +8,9 @@
 
 pub mod buffer;
 pub mod export;
-pub mod key_buffer;
 pub mod line;
 mod load;
-mod scan;
 pub mod tree;
-mod version;
 pub mod view;
 
 pub use load::{chunks, load, load_fields, Field, Loaded, LoadedLocation, LoadedTour, Locations};
-pub use version::Reader;

@@ -24,7 +24,7 @@ const SECONDS_PER_VISIT: f64 = 45e-9;
 
 impl TreeShape {
     /// About how many seconds loading takes with records of `record_bytes` bytes (see
-    /// [`crate::reader::Reader::record_bytes`]): a larger record makes each copy longer.
+    /// [`crate::robot::Reader::record_bytes`]): a larger record makes each copy longer.
     pub fn load_seconds(&self, record_bytes: usize) -> f64 {
         self.visits as f64 * SECONDS_PER_VISIT * record_bytes as f64 / 1_400.0
     }

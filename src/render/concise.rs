@@ -4,7 +4,7 @@ use std::io::{self, Write};
 
 use super::escape::escape;
 use super::{FileReport, RenderOptions};
-use crate::diagnostic::Summary;
+use crate::check::Summary;
 
 pub fn render(
     reports: &[FileReport<'_>],

@@ -22,7 +22,8 @@ use miette::{
 use super::escape::{escape, escape_lines};
 use super::located::{Locator, Mark};
 use super::{FileReport, LocatedDiagnostic, RenderOptions};
-use crate::diagnostic::{Applicability, Severity, Summary};
+use crate::check::Summary;
+use crate::diagnostic::{Applicability, Severity};
 use crate::source::Position;
 use crate::syntax::Span;
 

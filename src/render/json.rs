@@ -6,7 +6,7 @@ use std::io::{self, Write};
 use serde::Serialize;
 
 use super::{FileReport, LocatedDiagnostic};
-use crate::diagnostic::Summary;
+use crate::check::Summary;
 
 #[derive(Serialize)]
 struct Output<'a> {

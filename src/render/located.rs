@@ -60,7 +60,7 @@ pub struct FileReport<'a> {
 
 impl<'a> FileReport<'a> {
     /// Locates the findings [`Checked::shown`] lists (at most
-    /// [`MAX_SHOWN_PER_RULE`](crate::check::MAX_SHOWN_PER_RULE) of each rule).
+    /// [`MAX_SHOWN_PER_RULE`](crate::diagnostic::MAX_SHOWN_PER_RULE) of each rule).
     pub fn new(checked: &'a Checked<'a>) -> FileReport<'a> {
         let locator = Locator::new(checked.source.text(), &checked.kb.lines.line_starts);
         let diagnostics = checked

@@ -20,8 +20,8 @@ use std::io::{self, Write};
 use clap::ValueEnum;
 
 use crate::check::Checked;
-use crate::diagnostic::Summary;
-use crate::reader::Reader;
+use crate::check::Summary;
+use crate::robot::Reader;
 pub use located::{FileReport, LocatedDiagnostic};
 
 /// `ekb check --format`.

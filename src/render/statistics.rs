@@ -13,7 +13,8 @@ use std::io::{self, Write};
 use serde::Serialize;
 
 use super::{Format, RenderOptions};
-use crate::diagnostic::{Severity, Summary};
+use crate::check::Summary;
+use crate::diagnostic::Severity;
 
 /// One rule's line.
 #[derive(Debug, Serialize)]

@@ -5,7 +5,7 @@
 //! endings, leading symbols). So the model layer names no rule, and the file is still read
 //! once.
 
-use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostics;
 use crate::model::build::{Findings, LineFindings};
 use crate::model::Key;
 use crate::rules::{compat, content, structure, tour};
@@ -14,7 +14,7 @@ use crate::syntax::{Line, Span};
 /// The line rules' findings on the lines of one part of a file.
 #[derive(Debug)]
 pub struct LineRules {
-    /// The findings, at most [`crate::check::kept_at_most`] of each rule.
+    /// The findings, at most [`crate::diagnostic::kept_at_most`] of each rule.
     found: Diagnostics,
     /// The CRLF endings so far: one finding for all of them, when the file is read.
     crlf_endings: compat::compat_crlf::CrlfEndings,
@@ -181,7 +181,7 @@ impl LineFindings for LineRules {
 
 #[cfg(test)]
 mod tests {
-    use crate::check::Diagnostics;
+    use crate::diagnostic::Diagnostics;
     use crate::model::build::{build, Options};
     use crate::syntax::BOM;
 

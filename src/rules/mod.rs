@@ -9,10 +9,10 @@
 //! which asks [`crate::reader`] what each version loads), run afterwards, over the model
 //! ([`check_model`]).
 
-use crate::check::Diagnostics;
-use crate::diagnostic::Severity;
+use crate::diagnostic::Diagnostics;
+pub use crate::diagnostic::{Category, Rule};
 use crate::model::{Dialect, IdSet, Key, KnowledgeBase, Location};
-use crate::reader::Reader;
+use crate::robot::Reader;
 
 pub mod compat;
 mod consequence;
@@ -25,77 +25,6 @@ pub mod selection;
 pub mod structure;
 pub mod tour;
 pub mod translation;
-
-/// A rule's identity and documentation.
-#[derive(Debug, PartialEq, Eq)]
-pub struct Rule {
-    /// Stable kebab-case name (part of the contract).
-    pub name: &'static str,
-    pub category: Category,
-    pub severity: Severity,
-    /// Whether `ekb fix` can repair what it finds.
-    pub fixable: bool,
-    /// One line: when the rule fires.
-    pub summary: &'static str,
-    /// Markdown: what it does, why it matters, an example.
-    pub doc: &'static str,
-}
-
-impl Rule {
-    /// [`Rule::doc`] as plain Markdown (doc comments keep the space after `///`).
-    pub fn markdown(&self) -> String {
-        let mut out = String::with_capacity(self.doc.len());
-        for line in self.doc.lines() {
-            out.push_str(line.strip_prefix(' ').unwrap_or(line));
-            out.push('\n');
-        }
-        out
-    }
-}
-
-/// The sections of the catalogue.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Category {
-    Structure,
-    Tour,
-    Content,
-    Compat,
-    Map,
-    /// The behaviour tree, and what it needs of both knowledge bases (SPEC §11).
-    Mission,
-    /// The culture knowledge base and its types file (SPEC §11).
-    Culture,
-    Translation,
-}
-
-impl Category {
-    /// The name `select`, `ignore` and `--select` use: `structure`, `compat`, ….
-    pub fn name(self) -> &'static str {
-        match self {
-            Category::Structure => "structure",
-            Category::Tour => "tour",
-            Category::Content => "content",
-            Category::Compat => "compat",
-            Category::Mission => "mission",
-            Category::Culture => "culture",
-            Category::Translation => "translation",
-            Category::Map => "map",
-        }
-    }
-
-    pub fn title(self) -> &'static str {
-        match self {
-            Category::Structure => "Structure",
-            Category::Tour => "Tour",
-            Category::Content => "Content",
-            Category::Compat => "Reference-reader compatibility",
-            Category::Map => "Map",
-            Category::Mission => "Mission",
-            Category::Culture => "Culture knowledge base",
-            Category::Translation => "Translation",
-        }
-    }
-}
 
 /// Declares a rule as a `static` [`Rule`] whose doc comment becomes [`Rule::doc`].
 macro_rules! declare_rule {
@@ -110,9 +39,9 @@ macro_rules! declare_rule {
         };
     ) => {
         $(#[doc = $doc])+
-        pub static $ident: $crate::rules::Rule = $crate::rules::Rule {
+        pub static $ident: $crate::diagnostic::Rule = $crate::diagnostic::Rule {
             name: $name,
-            category: $crate::rules::Category::$category,
+            category: $crate::diagnostic::Category::$category,
             severity: $crate::diagnostic::Severity::$severity,
             fixable: $fixable,
             summary: $summary,

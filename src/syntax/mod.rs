@@ -11,6 +11,7 @@ pub mod decimal;
 mod line;
 pub(crate) mod newline;
 mod span;
+pub mod suppression;
 
 pub use line::{lines, lines_from, Body, Line, LineEnding, Lines, BOM};
 pub use span::{floor_char_boundary, Span};

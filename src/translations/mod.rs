@@ -13,7 +13,9 @@ use std::collections::HashMap;
 
 use serde::Serialize;
 
-use crate::check::{Checked, Diagnostics};
+use crate::check::Checked;
+
+use crate::diagnostic::Diagnostics;
 use crate::model::{is_placeholder, words, Key, Language, Phase, Point, Value};
 use crate::rules::translation::{self, same_as_source::SAME_AS_SOURCE};
 use crate::rules::Rule;

@@ -30,7 +30,7 @@ use std::sync::{Arc, LazyLock, RwLock};
 
 use ekb::loader::{self, Finding, KnowledgeBase, LoadError, Location, Messages, Options};
 use ekb::model::Arm;
-use ekb::reader::Reader;
+use ekb::robot::Reader;
 use ekb::settings::Lookup;
 use ekb::Severity;
 

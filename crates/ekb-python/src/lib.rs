@@ -21,7 +21,7 @@ use std::path::PathBuf;
 use ekb::loader::{self, Language, Options, Phase};
 use ekb::model::export::ExportedLocation;
 use ekb::present::language;
-use ekb::reader::Reader;
+use ekb::robot::Reader;
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyKeyError, PyValueError};
 use pyo3::prelude::*;

@@ -138,8 +138,8 @@ pub fn line_edits(positions: &Positions<'_>, new: &str) -> Vec<TextEdit> {
 pub fn with_snapshot<R>(text: &str, f: impl FnOnce(&Snapshot<'_, '_>) -> R) -> R {
     use super::documents::Document;
     use super::position::Encoding;
-    use crate::commands::Context;
     use crate::config::Config;
+    use crate::context::Context;
     let uri: Uri = "untitled:test".parse().expect("a URI");
     let (workspace, _) = Workspace::new(&Context::with_config(Config::default()), None);
     let mut document = Document::new(1, None, text.to_string());

@@ -1,4 +1,4 @@
-use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::rules::declare_rule;
 use crate::syntax::{Span, BOM};

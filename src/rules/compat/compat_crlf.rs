@@ -1,7 +1,8 @@
-use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit, Severity};
+use crate::reader::chunks;
 use crate::reader::line::{self, LineRead, LoadedValue};
-use crate::reader::{chunks, Reader};
+use crate::robot::Reader;
 use crate::rules::declare_rule;
 use crate::syntax::{Line, LineEnding, Span};
 

@@ -1,9 +1,9 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::model::Location;
 use crate::reader::line::word_pieces;
-use crate::reader::Reader;
 use crate::render::clip;
+use crate::robot::Reader;
 use crate::rules::compat::compat_too_many_cultural_keys::{
     crashes, loaded_words, MAX_CULTURAL_KEYS,
 };

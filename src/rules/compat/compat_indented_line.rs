@@ -1,9 +1,10 @@
-use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::model::build::leading_id;
 use crate::model::{Key, KnowledgeBase, Value};
+use crate::reader;
 use crate::reader::line::{LineRead, LoadedValue};
-use crate::reader::{self, Reader};
+use crate::robot::Reader;
 use crate::rules::compat::compat_too_many_cultural_keys::{crashes, MAX_CULTURAL_KEYS};
 use crate::rules::{declare_rule, excerpt};
 use crate::syntax::{self, Body, Span, BOM};

@@ -1,10 +1,11 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::model::build::leading_id;
 use crate::model::{Key, KnowledgeBase};
-use crate::reader::key_buffer;
-use crate::reader::{chunks, Reader};
+use crate::reader::chunks;
 use crate::render::clip;
+use crate::robot::key_buffer;
+use crate::robot::Reader;
 use crate::rules::declare_rule;
 use crate::syntax::{self, Body, Span};
 

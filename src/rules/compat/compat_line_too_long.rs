@@ -1,9 +1,10 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::model::build::leading_id;
 use crate::model::{Key, KnowledgeBase, ValueKind};
+use crate::reader::chunks;
 use crate::reader::line as reader_line;
-use crate::reader::{chunks, Reader};
+use crate::robot::Reader;
 use crate::rules::{declare_rule, excerpt};
 use crate::syntax::{self, Body, Line, Span};
 

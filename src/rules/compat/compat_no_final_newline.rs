@@ -1,9 +1,10 @@
-use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit, Severity};
 use crate::model::build::leading_id;
 use crate::model::{Key, ValueKind};
+use crate::reader;
 use crate::reader::line::{LineRead, LoadedValue};
-use crate::reader::{self, Reader};
+use crate::robot::Reader;
 use crate::rules::declare_rule;
 use crate::syntax::{self, Body, Line, LineEnding, Span};
 

@@ -1,8 +1,8 @@
-use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostics;
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::model::KnowledgeBase;
 use crate::reader::tree::TreeShape;
-use crate::reader::Reader;
+use crate::robot::Reader;
 use crate::rules::declare_rule;
 use crate::syntax::Span;
 

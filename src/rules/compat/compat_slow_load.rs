@@ -1,9 +1,10 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::model::{Key, KnowledgeBase};
+use crate::reader::chunks;
 use crate::reader::line::{self, LineRead};
 use crate::reader::tree::TreeShape;
-use crate::reader::{chunks, Reader};
+use crate::robot::Reader;
 use crate::rules::declare_rule;
 use crate::syntax::Span;
 

@@ -1,9 +1,10 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::model::{Key, KnowledgeBase, Location};
+use crate::reader::chunks;
 use crate::reader::line::{self, word_pieces, LineRead, LoadedValue};
-use crate::reader::{chunks, Reader};
 use crate::render::clip;
+use crate::robot::Reader;
 use crate::rules::declare_rule;
 use crate::syntax::{self, Span};
 

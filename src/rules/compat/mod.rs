@@ -15,10 +15,11 @@ pub mod compat_reader_crash;
 pub mod compat_slow_load;
 pub mod compat_too_many_cultural_keys;
 
-use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostics;
 use crate::diagnostic::Severity;
 use crate::model::{Key, KnowledgeBase};
-use crate::reader::{tree, Reader};
+use crate::reader::tree;
+use crate::robot::Reader;
 use crate::rules::content::trailing_whitespace::TRAILING_WHITESPACE;
 use crate::rules::structure::{self, legacy_key};
 use crate::rules::Rule;

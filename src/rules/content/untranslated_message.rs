@@ -1,5 +1,5 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::model::{is_placeholder, Language, Location, Phase, Value};
 use crate::render::clip;
 use crate::rules::declare_rule;

@@ -1,5 +1,5 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::reader::chunks;
 use crate::rules::declare_rule;
 use crate::syntax::{floor_char_boundary, Span};

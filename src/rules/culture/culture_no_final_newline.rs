@@ -1,4 +1,4 @@
-use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostics;
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::mission::culture::{CultureKnowledgeBase, ValueType, ValueTypes};
 use crate::rules::declare_rule;

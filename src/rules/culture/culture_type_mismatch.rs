@@ -1,5 +1,5 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::mission::culture::{c_integer, is_integer, CultureKnowledgeBase, ValueType, ValueTypes};
 use crate::rules::declare_rule;
 

@@ -1,5 +1,5 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::mission::culture::{Entry, WORD_BUFFER};
 use crate::rules::declare_rule;
 

@@ -5,7 +5,7 @@ pub mod pose_in_obstacle;
 pub mod pose_outside_map;
 pub mod target_outside_map;
 
-use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostics;
 use crate::map::LabMap;
 use crate::model::{Key, KnowledgeBase, Location};
 use crate::reader::{view, Loaded};

@@ -1,6 +1,6 @@
 use super::Loaded3;
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::map::{Blocker, LabMap};
 use crate::rules::declare_rule;
 

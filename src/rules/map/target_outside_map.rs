@@ -1,6 +1,6 @@
 use super::Loaded3;
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::map::LabMap;
 use crate::model::Point;
 use crate::rules::declare_rule;

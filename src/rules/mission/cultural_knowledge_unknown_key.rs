@@ -1,5 +1,5 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::mission::catalogue::nearest_of;
 use crate::model::KnowledgeBase;
 use crate::rules::declare_rule;

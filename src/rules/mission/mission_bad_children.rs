@@ -1,5 +1,5 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::mission::catalogue::NodeModel;
 use crate::mission::tree;
 use crate::mission::xml::Element;

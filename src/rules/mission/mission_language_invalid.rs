@@ -1,5 +1,5 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::mission::culture::{CultureKnowledgeBase, Held, ValueTypes};
 use crate::mission::{robot_language, LANGUAGE_KEY, ROBOT_LANGUAGES};
 use crate::model::Language;

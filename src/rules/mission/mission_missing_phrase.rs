@@ -1,5 +1,5 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::mission::culture::{CultureKnowledgeBase, Held, ValueTypes};
 use crate::mission::tree::Mission;
 use crate::mission::{said_phrases, SaidPhrase};

@@ -1,9 +1,9 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::mission::catalogue::{self, NodeModel};
 use crate::mission::tree::{self, Mission};
 use crate::mission::xml::Element;
-use crate::reader::Reader;
+use crate::robot::Reader;
 use crate::rules::declare_rule;
 use crate::Severity;
 

@@ -1,5 +1,5 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::mission::tree::Mission;
 use crate::rules::declare_rule;
 

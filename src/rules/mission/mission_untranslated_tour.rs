@@ -1,5 +1,5 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::model::{is_placeholder, KnowledgeBase, Language, Phase};
 use crate::rules::declare_rule;
 

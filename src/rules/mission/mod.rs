@@ -16,9 +16,9 @@ pub mod mission_unknown_tree;
 pub mod mission_unreachable_tree;
 pub mod mission_untranslated_tour;
 
-use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostics;
 use crate::mission::tree::{self, Mission};
-use crate::reader::Reader;
+use crate::robot::Reader;
 
 /// Runs the rules about the tree alone: what BehaviorTree.CPP refuses, and the robot's
 /// node parameters.

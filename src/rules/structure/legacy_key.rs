@@ -1,8 +1,8 @@
-use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostics;
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::model::build::leading_id;
 use crate::model::{Key, KnowledgeBase};
-use crate::reader::Reader;
+use crate::robot::Reader;
 use crate::rules::compat::lines_of_key;
 use crate::rules::{consequence, declare_rule};
 

@@ -1,5 +1,5 @@
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::model::{Key, Language, Location, Phase};
 use crate::rules::{consequence, declare_rule, LocationContext};
 
@@ -134,7 +134,7 @@ mod tests {
             source: text,
             pose_key: Key::RobotLocation,
             visited: None,
-            reader: crate::reader::Reader::D542,
+            reader: crate::robot::Reader::D542,
         };
         let mut out = Diagnostics::default();
         check(&location, &context, &mut out);

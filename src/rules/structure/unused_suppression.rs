@@ -1,6 +1,7 @@
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::rules::declare_rule;
-use crate::suppression::{Malformed, Name, Scope, Suppression};
+use crate::rules::selection::RuleSelector;
+use crate::syntax::suppression::{Malformed, Name, Scope, Suppression};
 
 declare_rule! {
     /// ## What it does
@@ -38,8 +39,8 @@ pub fn finding(text: &str, suppression: &Suppression, unused: &[&Name]) -> Diagn
         .collect();
     let why: Vec<String> = unused
         .iter()
-        .map(|name| match &name.selector {
-            Err(reason) => reason.clone(),
+        .map(|name| match RuleSelector::parse(name.span.text(text)) {
+            Err(reason) => reason,
             Ok(_) => match suppression.scope {
                 Scope::File => format!("no `{}` finding in this file", name.span.text(text)),
                 Scope::Line(Some(_)) => {

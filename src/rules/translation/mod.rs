@@ -16,8 +16,8 @@ pub mod space_before_punctuation;
 pub mod unbalanced_delimiters;
 pub mod wrong_language;
 
-use crate::check::Diagnostics;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic::Diagnostics;
 use crate::model::{is_placeholder, Language, Location, Phase, Value};
 use crate::rules::Rule;
 use crate::syntax::Span;

@@ -1,5 +1,5 @@
 use super::Message;
-use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostics;
 use crate::rules::declare_rule;
 
 declare_rule! {

@@ -1,5 +1,5 @@
 use super::Message;
-use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostics;
 use crate::diagnostic::Edit;
 use crate::rules::declare_rule;
 

@@ -1,6 +1,6 @@
 use super::scan::Scan;
 use super::Message;
-use crate::check::Diagnostics;
+use crate::diagnostic::Diagnostics;
 use crate::model::Language;
 use crate::rules::declare_rule;
 

@@ -1,187 +1,16 @@
-//! Suppression comments (SPEC §7): `# ekb: ignore[RULE, …]` on a comment line silences those
-//! rules' findings on the next line that is neither a comment nor blank; `# ekb:
-//! ignore-file[RULE, …]` silences them in the whole file. A name may also be a category
-//! (`content`). A suppression that silences nothing is an `unused-suppression` finding.
-//!
-//! A comment cannot follow a value on its line: the robot would read it as part of the value.
-//! So a suppression is always a line of its own, and `ekb fmt` keeps it with the line below.
+//! What suppression comments silence (SPEC §7): `# ekb: ignore[RULE, …]` silences those
+//! rules' findings on the line it covers, `# ekb: ignore-file[RULE, …]` in the whole file
+//! ([`crate::syntax::suppression`] reads them). A name may also be a category (`content`).
+//! A suppression that silences nothing is an `unused-suppression` finding.
 //! `ekb check --add-ignore` writes one above every line with findings ([`add_ignores`]).
-//!
-//! Files are scanned for `ekb:` first (memchr), so a file without suppressions costs one
-//! quick pass and no line is lexed for this.
 
 use std::collections::BTreeMap;
 
-use crate::diagnostic::Diagnostic;
+use crate::diagnostic::{Diagnostic, Rule};
 use crate::rules::selection::{RuleSelector, RuleSet};
 use crate::rules::structure::unused_suppression;
-use crate::rules::Rule;
-use crate::syntax::{lines_from, Body, Line, Span, BOM};
-
-/// What marks a suppression, after the `#` and any blanks.
-const MARK: &str = "ekb:";
-
-/// One suppression comment.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Suppression {
-    /// The whole line, its ending included (what removing it removes).
-    pub line: Span,
-    /// The comment, from `#` to its last non-blank character.
-    pub comment: Span,
-    pub scope: Scope,
-    /// The names between the brackets, each with its span; empty if the brackets are.
-    pub names: Vec<Name>,
-    /// The span between the brackets, where names are rewritten.
-    pub list: Span,
-}
-
-/// What a suppression covers.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Scope {
-    /// The next line that is neither a comment nor blank (`None` if there is none).
-    Line(Option<Span>),
-    File,
-}
-
-/// One name of a suppression, and whether it is a rule or category.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Name {
-    pub span: Span,
-    /// `Err` with the reason when it names neither.
-    pub selector: Result<RuleSelector, String>,
-}
-
-/// A comment that starts like a suppression (`# ekb: ignore`) but cannot be read as one.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Malformed {
-    /// The whole line, its ending included.
-    pub line: Span,
-    pub comment: Span,
-}
-
-/// Whether `comment`, the text of a comment line, may be a suppression (well formed or not).
-pub fn may_be_one(comment: &str) -> bool {
-    memchr::memmem::find(comment.as_bytes(), MARK.as_bytes()).is_some()
-}
-
-/// The suppression comments of `text`, and those that cannot be read.
-pub fn find(text: &str) -> (Vec<Suppression>, Vec<Malformed>) {
-    let (mut found, mut malformed) = (Vec::new(), Vec::new());
-    let mut last_line_start = None;
-    for at in memchr::memmem::find_iter(text.as_bytes(), MARK) {
-        let line_start = text[..at].rfind('\n').map_or(0, |newline| newline + 1);
-        if last_line_start == Some(line_start) {
-            continue;
-        }
-        last_line_start = Some(line_start);
-        let mut lines = lines_from(text, line_start);
-        let Some(line) = lines.next() else { continue };
-        let Body::Comment(comment) = line.body else {
-            continue;
-        };
-        match parse(text, comment) {
-            Parsed::Suppression(scope, list, names) => {
-                let scope = match scope {
-                    ParsedScope::File => Scope::File,
-                    ParsedScope::Line => Scope::Line(target(lines)),
-                };
-                found.push(Suppression {
-                    line: line.span,
-                    comment,
-                    scope,
-                    names,
-                    list,
-                });
-            }
-            Parsed::Malformed => malformed.push(Malformed {
-                line: line.span,
-                comment,
-            }),
-            Parsed::Other => {}
-        }
-    }
-    (found, malformed)
-}
-
-/// Whether `comment` (from its `#`) is a suppression of the line below it.
-pub fn is_for_next_line(comment: &str) -> bool {
-    let span = Span::new(0, comment.len());
-    matches!(
-        parse(comment, span),
-        Parsed::Suppression(ParsedScope::Line, ..)
-    )
-}
-
-/// The next line that is neither a comment nor blank.
-fn target(lines: impl Iterator<Item = Line>) -> Option<Span> {
-    lines
-        .into_iter()
-        .find(|line| matches!(line.body, Body::Entry { .. }))
-        .map(|line| line.span)
-}
-
-enum ParsedScope {
-    Line,
-    File,
-}
-
-enum Parsed {
-    Suppression(ParsedScope, Span, Vec<Name>),
-    Malformed,
-    /// Some other comment that mentions `ekb:`.
-    Other,
-}
-
-/// Reads `# ekb: ignore[a, b]` or `# ekb: ignore-file[a]` (blanks allowed around each part).
-fn parse(text: &str, comment: Span) -> Parsed {
-    let body = comment.text(text);
-    let start = comment.start as usize;
-    let rest = body[1..].trim_start_matches([' ', '\t']);
-    let Some(rest) = rest.strip_prefix(MARK) else {
-        return Parsed::Other;
-    };
-    let directive = rest.trim_start_matches([' ', '\t']);
-    let (scope, after) = if let Some(after) = directive.strip_prefix("ignore-file") {
-        (ParsedScope::File, after)
-    } else if let Some(after) = directive.strip_prefix("ignore") {
-        (ParsedScope::Line, after)
-    } else {
-        return Parsed::Other;
-    };
-    let after = after.trim_start_matches([' ', '\t']);
-    let Some(list) = after.strip_prefix('[').and_then(|l| l.strip_suffix(']')) else {
-        return Parsed::Malformed;
-    };
-    if list.contains(['[', ']']) {
-        return Parsed::Malformed;
-    }
-    // The list ends where the comment does, before its `]`.
-    let list_start = start + body.len() - 1 - list.len();
-    let mut names = Vec::new();
-    let mut offset = list_start;
-    for part in list.split(',') {
-        let name = part.trim_matches([' ', '\t']);
-        if !name.is_empty() {
-            let name_start = offset + (part.len() - part.trim_start_matches([' ', '\t']).len());
-            names.push(Name {
-                span: Span::new(name_start, name_start + name.len()),
-                selector: RuleSelector::parse(name),
-            });
-        }
-        offset += part.len() + 1;
-    }
-    if names.is_empty() {
-        return Parsed::Malformed;
-    }
-    Parsed::Suppression(scope, Span::new(list_start, list_start + list.len()), names)
-}
-
-/// Whether `text` may hold a suppression comment: it has the mark of one.
-pub fn may_have_suppressions(text: &str) -> bool {
-    // No `#`, no comment: that one byte is found faster than the mark.
-    let bytes = text.as_bytes();
-    memchr::memchr(b'#', bytes).is_some() && memchr::memmem::find(bytes, MARK.as_bytes()).is_some()
-}
+use crate::syntax::suppression::{find, may_have_suppressions, Name, Scope, Suppression};
+use crate::syntax::{lines_from, Body, Span, BOM};
 
 /// Drops the findings of `diagnostics` (sorted by position) that `text`'s suppressions
 /// silence, and adds an `unused-suppression` finding for each suppression that silences
@@ -189,7 +18,7 @@ pub fn may_have_suppressions(text: &str) -> bool {
 /// counted but not kept: a suppression of such a rule may silence one of them, so it is
 /// never called unused.
 ///
-/// `lines`, if known, is how many lines [`may_be_one`] holds for: with none, the text is
+/// `lines`, if known, is how many lines [`crate::syntax::suppression::may_be_one`] holds for: with none, the text is
 /// not read again.
 pub fn apply(
     text: &str,
@@ -208,7 +37,7 @@ pub fn apply(
         .iter()
         .map(|s| vec![false; s.names.len()])
         .collect();
-    let scopes = Scopes::new(&suppressions);
+    let scopes = Scopes::new(text, &suppressions);
     let file_wide = &scopes.file_wide;
     let silences = |diagnostic: &Diagnostic, used: &mut Vec<Vec<bool>>| {
         let mut hit = false;
@@ -248,7 +77,7 @@ pub fn apply(
             .zip(used)
             .filter(|&(name, &used)| {
                 !used
-                    && match name.selector {
+                    && match RuleSelector::parse(name.span.text(text)) {
                         // Off for this file, or with findings not kept: it may well be needed.
                         Ok(selector) => crate::rules::ALL.iter().any(|rule| {
                             selector.matches(rule) && rules.is_enabled(rule) && dropped(rule) == 0
@@ -292,12 +121,12 @@ struct Scopes {
 }
 
 impl Scopes {
-    fn new(suppressions: &[Suppression]) -> Scopes {
+    fn new(text: &str, suppressions: &[Suppression]) -> Scopes {
         let mut by_line: BTreeMap<u32, Vec<_>> = BTreeMap::new();
         for (index, suppression) in suppressions.iter().enumerate() {
             if let Scope::Line(Some(target)) = suppression.scope {
                 for (n, name) in suppression.names.iter().enumerate() {
-                    if let Ok(selector) = name.selector {
+                    if let Ok(selector) = RuleSelector::parse(name.span.text(text)) {
                         by_line
                             .entry(target.start)
                             .or_default()
@@ -307,7 +136,7 @@ impl Scopes {
             }
         }
         Scopes {
-            file_wide: selectors_of(suppressions, Scope::File),
+            file_wide: selectors_of(text, suppressions, Scope::File),
             by_line,
         }
     }
@@ -329,7 +158,7 @@ pub fn silencer(text: &str, lines: Option<u32>) -> Option<impl Fn(&Rule, u32) ->
     if lines == Some(0) || !may_have_suppressions(text) {
         return None;
     }
-    let scopes = Scopes::new(&find(text).0);
+    let scopes = Scopes::new(text, &find(text).0);
     Some(move |rule: &Rule, at: u32| {
         scopes
             .at(text, at)
@@ -338,12 +167,16 @@ pub fn silencer(text: &str, lines: Option<u32>) -> Option<impl Fn(&Rule, u32) ->
 }
 
 /// The names of the suppressions of `scope`, as (suppression, name, selector).
-fn selectors_of(suppressions: &[Suppression], scope: Scope) -> Vec<(usize, usize, RuleSelector)> {
+fn selectors_of(
+    text: &str,
+    suppressions: &[Suppression],
+    scope: Scope,
+) -> Vec<(usize, usize, RuleSelector)> {
     let mut selectors = Vec::new();
     for (index, suppression) in suppressions.iter().enumerate() {
         if suppression.scope == scope {
             for (n, name) in suppression.names.iter().enumerate() {
-                if let Ok(selector) = name.selector {
+                if let Ok(selector) = RuleSelector::parse(name.span.text(text)) {
                     selectors.push((index, n, selector));
                 }
             }
@@ -475,20 +308,6 @@ fn joined(names: &[&str]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn suppressions_are_read_with_blanks_anywhere() {
-        let text = "#ekb:ignore[ key-case ,repeated-word]\n\n# note\nkey 1 x\n  # ekb: ignore-file[content]\n# ekb: ignore\n# ekb: to do\n";
-        let (found, malformed) = find(text);
-        assert_eq!(found.len(), 2);
-        let names: Vec<&str> = found[0].names.iter().map(|n| n.span.text(text)).collect();
-        assert_eq!(names, ["key-case", "repeated-word"]);
-        let key = text.find("key 1").unwrap();
-        assert_eq!(found[0].scope, Scope::Line(Some(Span::new(key, key + 8))));
-        assert_eq!(found[0].list.text(text), " key-case ,repeated-word");
-        assert_eq!(found[1].scope, Scope::File);
-        assert_eq!(malformed.len(), 1, "`# ekb: ignore` names no rule");
-    }
 
     #[test]
     fn a_category_silences_its_rules_and_an_off_rule_is_never_unused() {

@@ -1,6 +1,6 @@
 //! The versions of the robot's reader (SPEC §2.1) and what sets each apart.
 
-use crate::model::{Dialect, Key};
+use super::{Dialect, Key};
 
 /// One version of the robot's `EnvironmentKnowledgeBase` reader. The names are the contract
 /// of `--reader`, `EKB_READER` and `reader` in `ekb.toml`.
@@ -41,6 +41,11 @@ impl Reader {
             Reader::V2026_03 => "2026-03",
             Reader::V2026_04 => "2026-04",
         }
+    }
+
+    /// The versions' names, for messages: `d5.4.2, 2025-06, …`.
+    pub fn names() -> String {
+        Reader::ALL.map(Reader::name).join(", ")
     }
 
     /// The version with this name.

@@ -8,8 +8,7 @@
 
 use std::collections::HashMap;
 
-use crate::diagnostic::Edit;
-use crate::rules::{self, Rule};
+use super::{Edit, Rule};
 use crate::syntax::Span;
 
 /// Replacements no longer than this are kept once, however many edits write them.
@@ -29,6 +28,9 @@ pub struct FixList {
     /// The edits of the fixes that have more than one, or one of another span.
     edits: Vec<CompactEdit>,
     replacements: Replacements,
+    /// The rules of the fixes, each once, in the order first kept (a handful: a fix names
+    /// its rule by its index here).
+    rules: Vec<&'static Rule>,
     /// The rule of the last fix kept, and its index.
     last_rule: Option<(&'static Rule, u8)>,
 }
@@ -44,7 +46,7 @@ struct Entry {
     /// [`FixList::edits`].
     edits: u32,
     edit_count: u16,
-    /// Its rule's index in the catalogue ([`rules::ALL`]).
+    /// Its rule's index in [`FixList::rules`].
     rule: u8,
     safe: bool,
 }
@@ -159,12 +161,25 @@ impl FixList {
         });
     }
 
-    /// The index of `rule` in the catalogue, found at once if it is the last one asked for.
+    /// The index of `rule` in [`FixList::rules`], added if it is new there; found at once
+    /// if it is the last one asked for.
     fn rule_index(&mut self, rule: &'static Rule) -> u8 {
         match self.last_rule {
             Some((last, index)) if std::ptr::eq(last, rule) => index,
             _ => {
-                let index = rules::index_of(rule) as u8;
+                let index = match self
+                    .rules
+                    .iter()
+                    .position(|&known| std::ptr::eq(known, rule))
+                {
+                    Some(index) => index,
+                    None => {
+                        self.rules.push(rule);
+                        self.rules.len() - 1
+                    }
+                };
+                // The catalogue has fewer than 256 rules.
+                let index = u8::try_from(index).expect("fewer than 256 rules");
                 self.last_rule = Some((rule, index));
                 index
             }
@@ -186,12 +201,18 @@ impl FixList {
             ..edit
         });
         self.edits.extend(edits);
+        let rules: Vec<u8> = later
+            .rules
+            .iter()
+            .map(|&rule| self.rule_index(rule))
+            .collect();
         self.fixes.reserve_exact(later.fixes.len());
         let fixes = later.fixes.into_iter().map(|entry| Entry {
             edits: match entry.edit_count {
                 ONE_EDIT_OF_ITS_SPAN => replaced[entry.edits as usize],
                 _ => entry.edits + edits_before,
             },
+            rule: rules[usize::from(entry.rule)],
             ..entry
         });
         self.fixes.extend(fixes);
@@ -229,7 +250,7 @@ impl FixList {
 
     fn listed(&self, entry: Entry) -> ListedFix<'_> {
         ListedFix {
-            rule: rules::ALL[usize::from(entry.rule)],
+            rule: self.rules[usize::from(entry.rule)],
             span: Span::new(entry.start as usize, entry.end as usize),
             safe: entry.safe,
             list: self,
@@ -294,14 +315,18 @@ mod tests {
         let edit = |start: usize, new: &str| vec![Edit::replace(Span::new(start, start + 1), new)];
         first.push(&KEY_CASE, Span::new(0, 1), true, edit(0, "a"));
         let mut later = FixList::default();
+        later.push(&TRAILING_WHITESPACE, Span::new(2, 3), true, edit(2, ""));
         later.push(&KEY_CASE, Span::new(4, 5), true, edit(4, "b"));
         first.append(later);
         assert_eq!(
             listed(&first),
             [
                 (0, vec![(Span::new(0, 1), "a".into())]),
+                (2, vec![(Span::new(2, 3), String::new())]),
                 (4, vec![(Span::new(4, 5), "b".into())]),
             ]
         );
+        let rules: Vec<&str> = first.iter().map(|fix| fix.rule.name).collect();
+        assert_eq!(rules, ["key-case", "trailing-whitespace", "key-case"]);
     }
 }

@@ -2,9 +2,9 @@
 //! write it in place, or send it to standard output; and the refusals that come before.
 //!
 //! A command that rewrites a knowledge base (`fix`, `fmt`, and `set` or `import --po` to
-//! come) takes its files from [`crate::commands::Context::files_to_rewrite`] (which will
+//! come) takes its files from [`crate::context::Context::files_to_rewrite`] (which will
 //! not rewrite a configured file outside the configuration's project unless it is named),
-//! takes [`lock`] before it reads each with [`crate::commands::Context::read`] (and holds it
+//! takes [`lock`] before it reads each with [`crate::context::Context::read`] (and holds it
 //! until the file is written), calls [`ensure_rewritable`], then
 //! [`deliver`], which writes through [`crate::write::rewrite`]: refused if the file changed
 //! since it was read, and every other guard of [`crate::write`]. [`for_each_file`] goes
@@ -16,7 +16,7 @@ use std::time::Duration;
 
 use similar::{Algorithm, DiffOp, TextDiff};
 
-use crate::commands::{CommandError, Exit};
+use crate::context::{CommandError, Exit};
 use crate::render::escape::escape;
 use crate::rules::structure::not_a_knowledge_base;
 use crate::source::{LineIndex, SourceFile};
