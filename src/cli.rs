@@ -104,9 +104,11 @@ pub enum Command {
 
 /// Parses the command line, runs the command and turns the outcome into an exit code.
 pub fn main() -> ExitCode {
-    let matches = Cli::command().get_matches();
-    let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|error| error.exit());
+    let mut matches = Cli::command().get_matches();
+    // Asked before the values are taken out of `matches` (not cloned: a copy of every
+    // argument cost more than the check of a real file's rules).
     let reader_from_env = matches.value_source("reader") == Some(ValueSource::EnvVariable);
+    let cli = Cli::from_arg_matches_mut(&mut matches).unwrap_or_else(|error| error.exit());
     let mut context = Context::new(cli.config.clone());
     context.color = cli.color;
     context.verbose = cli.verbose;

@@ -342,6 +342,20 @@ fn settings_shows_each_value_and_where_it_comes_from() {
     );
     assert!(run.stdout.contains("# no settings file: --isolated"));
     assert!(run.stdout.contains("reader = \"2026-03\"  # --reader"));
+    // The same reader from the environment is told as coming from there.
+    let from_env = Command::cargo_bin("ekb")
+        .unwrap()
+        .current_dir(dir.path())
+        .env_remove("EKB_CONFIG")
+        .env("EKB_READER", "2026-03")
+        .args(["--isolated", "settings", "data/kb.dat"])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8(from_env.stdout).unwrap();
+    assert!(
+        stdout.contains("reader = \"2026-03\"  # EKB_READER"),
+        "{stdout}"
+    );
 }
 
 // ---------------------------------------------------------------------------------------

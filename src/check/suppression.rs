@@ -18,8 +18,8 @@ use crate::syntax::{lines_from, Body, Span, BOM};
 /// counted but not kept: a suppression of such a rule may silence one of them, so it is
 /// never called unused.
 ///
-/// `lines`, if known, is how many lines [`crate::syntax::suppression::may_be_one`] holds for: with none, the text is
-/// not read again.
+/// `lines`, if known, is how many lines [`crate::syntax::suppression::may_be_one`] holds
+/// for: with none, the text is not read again.
 pub fn apply(
     text: &str,
     lines: Option<u32>,

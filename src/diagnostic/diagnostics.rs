@@ -3,12 +3,11 @@
 
 use super::fix_list::FixList;
 use super::{Diagnostic, Edit, Rule};
+use crate::source::MAX_KEPT_PER_RULE;
 use crate::syntax::Span;
 
 /// The most findings of one rule shown for one file; the rest are summed up in a note.
 pub const MAX_SHOWN_PER_RULE: usize = 1000;
-
-use crate::source::MAX_KEPT_PER_RULE;
 
 /// How many findings of `rule` are kept for one file: those shown and the first one not
 /// shown (where the "… and N more" note stands), or for a fixable rule, the fixes one run
