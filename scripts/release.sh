@@ -23,10 +23,9 @@ trap 'rm -rf "$work"' EXIT
 fail() { echo "release: FAILED: $*" >&2; exit 1; }
 same() { [ "$2" = "$3" ] || fail "$1 reports '$2', not '$3'"; echo "ok: $1: $2"; }
 
-version=$(sed -n '/^\[workspace.package\]/,/^\[/ s/^version = "\(.*\)"/\1/p' Cargo.toml)
+. scripts/version.sh
 [ -n "$version" ] || fail "Cargo.toml has no [workspace.package] version"
-commit=$(git rev-parse --short HEAD)
-expected="ekb $version ($commit)"
+[ -n "$commit" ] || fail "not a git checkout: a release is made of a commit"
 
 wheel=$(bash scripts/build-wheel.sh)
 deb=$(bash scripts/build-deb.sh)

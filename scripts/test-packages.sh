@@ -20,9 +20,7 @@ fail() { echo "test-packages: FAILED: $*" >&2; exit 1; }
 passed=0
 ok() { echo "ok: $*"; passed=$((passed + 1)); }
 
-version=$(sed -n '/^\[workspace.package\]/,/^\[/ s/^version = "\(.*\)"/\1/p' Cargo.toml)
-commit=$(git rev-parse --short HEAD 2>/dev/null || true)
-expected="ekb $version${commit:+ ($commit)}"
+. scripts/version.sh
 seed=data/environmentKnowledgeBaseInput.dat
 
 wheel=$(bash scripts/build-wheel.sh)
