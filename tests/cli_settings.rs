@@ -31,15 +31,21 @@ struct Run {
 }
 
 fn ekb(dir: &Path, args: &[&str]) -> Run {
-    let output = Command::cargo_bin("ekb")
-        .unwrap()
+    ekb_with_reader(dir, None, args)
+}
+
+/// [`ekb`] with `EKB_READER` set to `reader`, if there is one.
+fn ekb_with_reader(dir: &Path, reader: Option<&str>, args: &[&str]) -> Run {
+    let mut command = Command::cargo_bin("ekb").unwrap();
+    command
         .current_dir(dir)
         .env_remove("EKB_CONFIG")
         .env_remove("EKB_READER")
-        .env_remove("NO_COLOR")
-        .args(args)
-        .output()
-        .unwrap();
+        .env_remove("NO_COLOR");
+    if let Some(reader) = reader {
+        command.env("EKB_READER", reader);
+    }
+    let output = command.args(args).output().unwrap();
     Run {
         code: output.status.code().expect("exited"),
         stdout: String::from_utf8(output.stdout).unwrap(),
@@ -343,18 +349,15 @@ fn settings_shows_each_value_and_where_it_comes_from() {
     assert!(run.stdout.contains("# no settings file: --isolated"));
     assert!(run.stdout.contains("reader = \"2026-03\"  # --reader"));
     // The same reader from the environment is told as coming from there.
-    let from_env = Command::cargo_bin("ekb")
-        .unwrap()
-        .current_dir(dir.path())
-        .env_remove("EKB_CONFIG")
-        .env("EKB_READER", "2026-03")
-        .args(["--isolated", "settings", "data/kb.dat"])
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8(from_env.stdout).unwrap();
+    let run = ekb_with_reader(
+        dir.path(),
+        Some("2026-03"),
+        &["--isolated", "settings", "data/kb.dat"],
+    );
     assert!(
-        stdout.contains("reader = \"2026-03\"  # EKB_READER"),
-        "{stdout}"
+        run.stdout.contains("reader = \"2026-03\"  # EKB_READER"),
+        "{}",
+        run.stdout
     );
 }
 
