@@ -195,3 +195,37 @@ fn a_crlf_file_shows_its_carriage_returns_escaped() {
         assert!(!diff.contains('\r'), "{diff}");
     }
 }
+
+#[test]
+fn fmt_check_past_16_mib_names_the_one_line_that_would_change() {
+    // A canonical file below 17 MB of comments, with one line of it out of the layout.
+    let seed = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/check/clean-seed.dat");
+    let (dir, path) = temp_file("kb.dat", &std::fs::read(seed).unwrap());
+    let formatted = ekb()
+        .current_dir(dir.path())
+        .args(["--isolated", "fmt", "kb.dat"])
+        .output()
+        .unwrap();
+    assert!(formatted.status.success(), "{formatted:?}");
+    let canonical = std::fs::read_to_string(&path).unwrap();
+    let mut lines: Vec<&str> = canonical.split_inclusive('\n').collect();
+    assert_eq!(lines[1], "robotLocation                 1 2.6 8.1 0\n");
+    lines[1] = "robotLocation 1 2.6 8.1 0\n";
+    let padding = "# padding\n".repeat(1_700_000);
+    std::fs::write(&path, padding + &lines.concat()).unwrap();
+    let output = ekb()
+        .current_dir(dir.path())
+        .args(["--isolated", "fmt", "--check", "kb.dat"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(1), "{output:?}");
+    assert!(output.stdout.is_empty(), "no diff past 16 MiB");
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    let total = 1_700_000 + lines.len();
+    assert!(
+        stderr.starts_with(&format!(
+            "kb.dat: would change lines 1700002 to 1700002 of {total}; the diff of a file over 16 MiB is not shown"
+        )),
+        "{stderr}"
+    );
+}

@@ -290,12 +290,33 @@ impl<'a> Document<'a> {
 
     /// The canonical text.
     pub fn render(&self) -> String {
-        let mut out = String::with_capacity(self.text.len() + self.text.len() / 4);
+        let mut out = Vec::with_capacity(self.text.len() + self.text.len() / 4);
+        self.write_to(&mut out).expect("writing to memory");
+        String::from_utf8(out).expect("the layout writes text")
+    }
+
+    /// Writes the canonical text, as [`Document::render`] makes it, to `out`: laid out a
+    /// buffer at a time, never held whole.
+    pub fn write_to(&self, out: &mut impl Write) -> io::Result<()> {
+        const BUFFER: usize = 1 << 16;
+        let mut buffer = String::with_capacity(BUFFER + 512);
+        let mut failed = None;
         let _ = self.walk(|item, _| {
-            push_item(&mut out, &item);
-            ControlFlow::Continue(())
+            push_item(&mut buffer, &item);
+            if buffer.len() < BUFFER {
+                return ControlFlow::Continue(());
+            }
+            failed = out.write_all(buffer.as_bytes()).err();
+            buffer.clear();
+            match failed {
+                Some(_) => ControlFlow::Break(()),
+                None => ControlFlow::Continue(()),
+            }
         });
-        out
+        match failed {
+            Some(error) => Err(error),
+            None => out.write_all(buffer.as_bytes()),
+        }
     }
 
     /// Writes the canonical text to `out`, each line read back as it is laid out: one that

@@ -154,12 +154,11 @@ fn print_balanced(
     document: &Document<'_>,
     style: DiffStyle,
 ) -> Result<bool, CommandError> {
-    let balanced = document.render();
-    Ok(rewrite::print_diff(
+    Ok(rewrite::print_diff_streamed(
         read.name(),
         read.text(),
-        &balanced,
         style,
+        |mut out| document.write_to(&mut out),
     )?)
 }
 

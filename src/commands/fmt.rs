@@ -64,17 +64,11 @@ fn format_file(
     }
     if mode == Mode::Diff {
         // The layout keeps every line and value: each line written is read back.
-        let mut formatted = Vec::with_capacity(source.text().len() + source.text().len() / 4);
-        document
-            .write_checked(&mut formatted)
-            .map_err(|e| cannot(e.to_string()))?;
-        let formatted = String::from_utf8(formatted).expect("the layout writes text");
-        return Ok(rewrite::print_diff(
-            source.name(),
-            source.text(),
-            &formatted,
-            style,
-        )?);
+        return rewrite::print_diff_streamed(source.name(), source.text(), style, |mut out| {
+            document
+                .write_checked(&mut out)
+                .map_err(|e| cannot(e.to_string()))
+        });
     }
     // A formatted file can be several times the original (every id padded to column 31): it
     // is written as it is made, never held whole; each line is read back as it is written

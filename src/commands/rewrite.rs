@@ -10,6 +10,7 @@
 //! since it was read, and every other guard of [`crate::write`]. [`for_each_file`] goes
 //! on after a file that failed.
 
+use std::hash::{DefaultHasher, Hasher};
 use std::io::{self, BufWriter, Write};
 use std::path::Path;
 use std::time::Duration;
@@ -162,7 +163,9 @@ pub fn print_diff(name: &str, old: &str, new: &str, style: DiffStyle) -> io::Res
         return Ok(false);
     }
     if old.len() + new.len() > LARGEST_DIFF {
-        tell_changed_lines(name, old, new);
+        if let Some(stretch) = changed_lines(old, new) {
+            tell_changed_lines(name, old, stretch);
+        }
         return Ok(true);
     }
     // A line at a time through a buffer: standard output alone is flushed at every line.
@@ -172,10 +175,36 @@ pub fn print_diff(name: &str, old: &str, new: &str, style: DiffStyle) -> io::Res
     Ok(true)
 }
 
-/// Tells on standard error which lines of `old` would change (from the first to the last
-/// that differs), for a text too large to show as a diff.
-fn tell_changed_lines(name: &str, old: &str, new: &str) {
-    let (first, last) = changed_lines(old, new);
+/// [`print_diff`] of `old` and the text that `write` writes. Past [`LARGEST_DIFF`] of `old`,
+/// where only the lines that change are told, that text is compared with `old` as it is
+/// written and never held whole (a formatted or balanced file can be larger than the
+/// original).
+pub fn print_diff_streamed<E: From<io::Error>>(
+    name: &str,
+    old: &str,
+    style: DiffStyle,
+    write: impl FnOnce(&mut dyn Write) -> Result<(), E>,
+) -> Result<bool, E> {
+    if old.len() <= LARGEST_DIFF {
+        let mut new = Vec::with_capacity(old.len() + old.len() / 4);
+        write(&mut new)?;
+        let new = String::from_utf8(new).map_err(io::Error::other)?;
+        return Ok(print_diff(name, old, &new, style)?);
+    }
+    let mut compared = ChangedStretch::new(old);
+    write(&mut compared)?;
+    Ok(match compared.finish() {
+        Some(stretch) => {
+            tell_changed_lines(name, old, stretch);
+            true
+        }
+        None => false,
+    })
+}
+
+/// Tells on standard error which lines of `old` would change (`stretch`: from the first to
+/// the last that differs), for a text too large to show as a diff.
+fn tell_changed_lines(name: &str, old: &str, (first, last): (usize, usize)) {
     stderr_line!(
         "{}: would change lines {first} to {last} of {}; the diff of a file over {} MiB is not \
          shown (write the result to another file with `ekb fmt - < FILE > OTHER` or \
@@ -188,23 +217,106 @@ fn tell_changed_lines(name: &str, old: &str, new: &str) {
 
 /// The first and the last line (1-based) of `old` that `new` does not have in the same place
 /// counted from the start or from the end: the stretch of `old` that changes. For an
-/// insertion between two lines, the line after it.
-fn changed_lines(old: &str, new: &str) -> (usize, usize) {
-    let (old_lines, new_lines) = (old.split_inclusive('\n'), new.split_inclusive('\n'));
-    let same_start = old_lines
-        .clone()
-        .zip(new_lines.clone())
-        .take_while(|(a, b)| a == b)
-        .count();
-    let old_count = old_lines.clone().count();
-    let same_end = old_lines
-        .rev()
-        .zip(new_lines.rev())
-        .take_while(|(a, b)| a == b)
-        .count()
-        .min(old_count - same_start);
-    let first = same_start + 1;
-    (first, (old_count - same_end).max(first))
+/// insertion between two lines, the line after it. `None` if they are equal.
+fn changed_lines(old: &str, new: &str) -> Option<(usize, usize)> {
+    let mut compared = ChangedStretch::new(old);
+    compared
+        .write_all(new.as_bytes())
+        .expect("comparing never fails");
+    compared.finish()
+}
+
+/// The stretch of `old` that a new text changes ([`changed_lines`]), found as the new text
+/// is written: its lines (each with its newline) are compared with `old`'s from the start as
+/// they come, and kept only as hashes, to be compared from the end once all are written.
+struct ChangedStretch<'o> {
+    old: &'o str,
+    /// `old`'s lines not yet compared from the start.
+    old_lines: std::str::SplitInclusive<'o, char>,
+    /// How many lines at the start the two texts share; whether one has differed since.
+    same_start: usize,
+    differed: bool,
+    /// The new text's last line, while its newline has not come.
+    partial: Vec<u8>,
+    new_lines: Vec<u64>,
+}
+
+impl<'o> ChangedStretch<'o> {
+    fn new(old: &'o str) -> ChangedStretch<'o> {
+        ChangedStretch {
+            old,
+            old_lines: old.split_inclusive('\n'),
+            same_start: 0,
+            differed: false,
+            partial: Vec::new(),
+            new_lines: Vec::new(),
+        }
+    }
+
+    fn line(&mut self, line: &[u8]) {
+        if !self.differed {
+            match self.old_lines.next() {
+                Some(old) if old.as_bytes() == line => self.same_start += 1,
+                _ => self.differed = true,
+            }
+        }
+        self.new_lines.push(line_hash(line));
+    }
+
+    /// The stretch of `old` that changes; `None` if the new text is `old`.
+    fn finish(mut self) -> Option<(usize, usize)> {
+        if !self.partial.is_empty() {
+            let last = std::mem::take(&mut self.partial);
+            self.line(&last);
+        }
+        let old_count = self.old.split_inclusive('\n').count();
+        if !self.differed && self.new_lines.len() == old_count {
+            return None;
+        }
+        let same_end = self
+            .old
+            .split_inclusive('\n')
+            .rev()
+            .zip(self.new_lines.iter().rev())
+            .take_while(|(old, &new)| line_hash(old.as_bytes()) == new)
+            .count()
+            .min(old_count - self.same_start);
+        let first = self.same_start + 1;
+        Some((first, (old_count - same_end).max(first)))
+    }
+}
+
+impl Write for ChangedStretch<'_> {
+    fn write(&mut self, mut bytes: &[u8]) -> io::Result<usize> {
+        let written = bytes.len();
+        while let Some(newline) = memchr::memchr(b'\n', bytes) {
+            let (line, rest) = bytes.split_at(newline + 1);
+            if self.partial.is_empty() {
+                self.line(line);
+            } else {
+                let mut whole = std::mem::take(&mut self.partial);
+                whole.extend_from_slice(line);
+                self.line(&whole);
+                whole.clear();
+                self.partial = whole;
+            }
+            bytes = rest;
+        }
+        self.partial.extend_from_slice(bytes);
+        Ok(written)
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+}
+
+/// A line's hash, to compare it with another without holding it (a different line with the
+/// same hash, one chance in 2^64, would only narrow the stretch told).
+fn line_hash(line: &[u8]) -> u64 {
+    let mut hasher = DefaultHasher::new();
+    hasher.write(line);
+    hasher.finish()
 }
 
 /// Writes the unified diff of `old` and `new` (which differ) to `out`, with three lines of
@@ -363,11 +475,34 @@ mod tests {
 
     #[test]
     fn a_text_too_large_for_a_diff_names_the_lines_that_change() {
-        assert_eq!(changed_lines("a\nb\nc\nd\n", "a\nB\nC\nd\n"), (2, 3));
-        assert_eq!(changed_lines("a\nb\n", "x\nb\n"), (1, 1));
-        assert_eq!(changed_lines("a\nb\n", "a\nb\nc\n"), (3, 3));
-        assert_eq!(changed_lines("a\nb\n", "a\n"), (2, 2));
+        let changed = |old, new| changed_lines(old, new).expect("they differ");
+        assert_eq!(changed("a\nb\nc\nd\n", "a\nB\nC\nd\n"), (2, 3));
+        assert_eq!(changed("a\nb\n", "x\nb\n"), (1, 1));
+        assert_eq!(changed("a\nb\n", "a\nb\nc\n"), (3, 3));
+        assert_eq!(changed("a\nb\n", "a\n"), (2, 2));
         // An insertion between two equal lines: the line after it.
-        assert_eq!(changed_lines("a\na\n", "a\nx\na\n"), (2, 2));
+        assert_eq!(changed("a\na\n", "a\nx\na\n"), (2, 2));
+        // A last line without its newline is not the same line with it.
+        assert_eq!(changed("a\nb", "a\nb\n"), (2, 2));
+        assert_eq!(changed_lines("a\nb", "a\nb"), None);
+        assert_eq!(changed_lines("", ""), None);
+    }
+
+    #[test]
+    fn the_stretch_is_the_same_whatever_pieces_the_text_comes_in() {
+        let old = "one\ntwo\nthree\nfour\nfive\n";
+        let new = "one\ntwo\nTHREE\nfour\nfive\n";
+        for piece in [1, 2, 3, 7, 100] {
+            let mut compared = ChangedStretch::new(old);
+            for chunk in new.as_bytes().chunks(piece) {
+                compared.write_all(chunk).unwrap();
+            }
+            assert_eq!(compared.finish(), Some((3, 3)), "pieces of {piece}");
+        }
+        let mut same = ChangedStretch::new(old);
+        for chunk in old.as_bytes().chunks(4) {
+            same.write_all(chunk).unwrap();
+        }
+        assert_eq!(same.finish(), None);
     }
 }
