@@ -1,4 +1,6 @@
-//! Findings: what a rule reports, where, and how to fix it.
+//! Findings: what a rule reports, where, and how to fix it; the identity of the rule that
+//! reports it ([`Rule`]); where the rules report them, a bounded number of each rule
+//! ([`Diagnostics`]); and the compact fixes `ekb fix` applies ([`fix_list`]).
 
 use serde::Serialize;
 
