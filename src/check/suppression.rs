@@ -32,12 +32,13 @@ pub fn apply(
         return suppressed;
     }
     let (suppressions, malformed) = find(text);
+    let resolved = resolve(text, &suppressions);
     // For each suppression, which of its names silenced something.
     let mut used: Vec<Vec<bool>> = suppressions
         .iter()
         .map(|s| vec![false; s.names.len()])
         .collect();
-    let scopes = Scopes::new(text, &suppressions);
+    let scopes = Scopes::new(&suppressions, &resolved);
     let file_wide = &scopes.file_wide;
     let silences = |diagnostic: &Diagnostic, used: &mut Vec<Vec<bool>>| {
         let mut hit = false;
@@ -70,14 +71,15 @@ pub fn apply(
         }
     }
     let mut unused = Vec::new();
-    for (suppression, used) in suppressions.iter().zip(&used) {
-        let unused_names: Vec<&Name> = suppression
+    for ((suppression, used), resolved) in suppressions.iter().zip(&used).zip(&resolved) {
+        let unused_names: Vec<(&Name, Option<&str>)> = suppression
             .names
             .iter()
             .zip(used)
-            .filter(|&(name, &used)| {
+            .zip(resolved)
+            .filter(|&((_, &used), selector)| {
                 !used
-                    && match RuleSelector::parse(name.span.text(text)) {
+                    && match selector {
                         // Off for this file, or with findings not kept: it may well be needed.
                         Ok(selector) => crate::rules::ALL.iter().any(|rule| {
                             selector.matches(rule) && rules.is_enabled(rule) && dropped(rule) == 0
@@ -85,7 +87,7 @@ pub fn apply(
                         Err(_) => true,
                     }
             })
-            .map(|(name, _)| name)
+            .map(|((name, _), selector)| (name, selector.as_ref().err().map(String::as_str)))
             .collect();
         if !unused_names.is_empty() {
             unused.push(unused_suppression::finding(
@@ -112,6 +114,22 @@ pub fn apply(
     suppressed
 }
 
+/// What each name of each suppression selects, or why it names nothing (read once: a name
+/// that is no rule's is compared with every rule's to suggest one).
+type Resolved = Vec<Vec<Result<RuleSelector, String>>>;
+
+fn resolve(text: &str, suppressions: &[Suppression]) -> Resolved {
+    suppressions
+        .iter()
+        .map(|suppression| {
+            let names = suppression.names.iter();
+            names
+                .map(|name| RuleSelector::parse(name.span.text(text)))
+                .collect()
+        })
+        .collect()
+}
+
 /// The names of the suppressions of a file, by what they cover, each as (suppression,
 /// name, selector).
 struct Scopes {
@@ -121,12 +139,12 @@ struct Scopes {
 }
 
 impl Scopes {
-    fn new(text: &str, suppressions: &[Suppression]) -> Scopes {
+    fn new(suppressions: &[Suppression], resolved: &Resolved) -> Scopes {
         let mut by_line: BTreeMap<u32, Vec<_>> = BTreeMap::new();
         for (index, suppression) in suppressions.iter().enumerate() {
             if let Scope::Line(Some(target)) = suppression.scope {
-                for (n, name) in suppression.names.iter().enumerate() {
-                    if let Ok(selector) = RuleSelector::parse(name.span.text(text)) {
+                for (n, selector) in resolved[index].iter().enumerate() {
+                    if let Ok(selector) = *selector {
                         by_line
                             .entry(target.start)
                             .or_default()
@@ -136,7 +154,7 @@ impl Scopes {
             }
         }
         Scopes {
-            file_wide: selectors_of(text, suppressions, Scope::File),
+            file_wide: selectors_of(suppressions, resolved, Scope::File),
             by_line,
         }
     }
@@ -158,7 +176,8 @@ pub fn silencer(text: &str, lines: Option<u32>) -> Option<impl Fn(&Rule, u32) ->
     if lines == Some(0) || !may_have_suppressions(text) {
         return None;
     }
-    let scopes = Scopes::new(text, &find(text).0);
+    let suppressions = find(text).0;
+    let scopes = Scopes::new(&suppressions, &resolve(text, &suppressions));
     Some(move |rule: &Rule, at: u32| {
         scopes
             .at(text, at)
@@ -168,15 +187,15 @@ pub fn silencer(text: &str, lines: Option<u32>) -> Option<impl Fn(&Rule, u32) ->
 
 /// The names of the suppressions of `scope`, as (suppression, name, selector).
 fn selectors_of(
-    text: &str,
     suppressions: &[Suppression],
+    resolved: &Resolved,
     scope: Scope,
 ) -> Vec<(usize, usize, RuleSelector)> {
     let mut selectors = Vec::new();
     for (index, suppression) in suppressions.iter().enumerate() {
         if suppression.scope == scope {
-            for (n, name) in suppression.names.iter().enumerate() {
-                if let Ok(selector) = RuleSelector::parse(name.span.text(text)) {
+            for (n, selector) in resolved[index].iter().enumerate() {
+                if let Ok(selector) = *selector {
                     selectors.push((index, n, selector));
                 }
             }
@@ -341,6 +360,33 @@ mod tests {
             ..Choice::default()
         };
         assert!(names(&RuleSet::chosen(&[&without_tour])).is_empty());
+    }
+
+    #[test]
+    fn a_misspelt_name_is_unused_with_the_name_it_may_mean() {
+        use crate::model::build::Options;
+        let text = "# ekb: ignore[repeated-word, repeated-wrod]\n\
+                    preGestureMessageEnglish 1 the the\n";
+        let source = crate::SourceFile::from_bytes("t", text.into());
+        let checked = crate::check::check(&source, &Options::default());
+        let unused: Vec<_> = checked
+            .diagnostics
+            .iter()
+            .filter(|d| d.rule.name == "unused-suppression")
+            .collect();
+        assert_eq!(unused.len(), 1, "{:?}", checked.diagnostics);
+        assert_eq!(
+            unused[0].message,
+            "this suppression of `repeated-wrod` silences nothing (`repeated-wrod` is no rule or \
+             category; did you mean `repeated-word`?): the robot skips the comment, but it would \
+             hide a later finding here"
+        );
+        let fix = unused[0].fix.as_ref().expect("a fix");
+        assert_eq!(fix.edits[0].replacement, "repeated-word");
+        assert!(checked
+            .diagnostics
+            .iter()
+            .all(|d| d.rule.name != "repeated-word"));
     }
 
     #[test]

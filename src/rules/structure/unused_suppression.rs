@@ -1,6 +1,5 @@
 use crate::diagnostic::{Diagnostic, Edit};
 use crate::rules::declare_rule;
-use crate::rules::selection::RuleSelector;
 use crate::syntax::suppression::{Malformed, Name, Scope, Suppression};
 
 declare_rule! {
@@ -31,17 +30,22 @@ declare_rule! {
     };
 }
 
-/// The finding for `suppression`, whose `unused` names silence nothing.
-pub fn finding(text: &str, suppression: &Suppression, unused: &[&Name]) -> Diagnostic {
+/// The finding for `suppression`, whose `unused` names silence nothing, each with why it
+/// names no rule or category, if it does not.
+pub fn finding(
+    text: &str,
+    suppression: &Suppression,
+    unused: &[(&Name, Option<&str>)],
+) -> Diagnostic {
     let quoted: Vec<String> = unused
         .iter()
-        .map(|name| format!("`{}`", name.span.text(text)))
+        .map(|(name, _)| format!("`{}`", name.span.text(text)))
         .collect();
     let why: Vec<String> = unused
         .iter()
-        .map(|name| match RuleSelector::parse(name.span.text(text)) {
-            Err(reason) => reason,
-            Ok(_) => match suppression.scope {
+        .map(|&(name, names_nothing)| match names_nothing {
+            Some(reason) => reason.to_string(),
+            None => match suppression.scope {
                 Scope::File => format!("no `{}` finding in this file", name.span.text(text)),
                 Scope::Line(Some(_)) => {
                     format!("no `{}` finding on the line below", name.span.text(text))
@@ -57,7 +61,7 @@ pub fn finding(text: &str, suppression: &Suppression, unused: &[&Name]) -> Diagn
         let kept: Vec<&str> = suppression
             .names
             .iter()
-            .filter(|name| !unused.iter().any(|u| u.span == name.span))
+            .filter(|name| !unused.iter().any(|(u, _)| u.span == name.span))
             .map(|name| name.span.text(text))
             .collect();
         (
