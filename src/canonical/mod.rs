@@ -290,9 +290,12 @@ impl<'a> Document<'a> {
 
     /// The canonical text.
     pub fn render(&self) -> String {
-        let mut out = Vec::with_capacity(self.text.len() + self.text.len() / 4);
-        self.write_to(&mut out).expect("writing to memory");
-        String::from_utf8(out).expect("the layout writes text")
+        let mut out = String::with_capacity(self.text.len() + self.text.len() / 4);
+        let _ = self.walk(|item, _| {
+            push_item(&mut out, &item);
+            ControlFlow::Continue(())
+        });
+        out
     }
 
     /// Writes the canonical text, as [`Document::render`] makes it, to `out`: laid out a
