@@ -19,7 +19,7 @@ struct Args {
     /// Number of locations
     locations: usize,
     /// Dialect of the file
-    #[arg(long, value_enum, default_value_t = Dialect::Seed)]
+    #[arg(long, value_parser = ekb::commands::named_values::dialect(), default_value = "seed")]
     dialect: Dialect,
     /// Write the locations in random order instead of by ascending id
     #[arg(long)]

@@ -36,7 +36,7 @@ pub struct Cli {
     #[arg(
         long,
         global = true,
-        value_enum,
+        value_parser = crate::commands::named_values::reader(),
         env = "EKB_READER",
         value_name = "VERSION"
     )]

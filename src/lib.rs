@@ -33,36 +33,23 @@
 #![deny(clippy::print_stdout, clippy::print_stderr)]
 
 pub mod canonical;
-pub mod check;
 pub mod cli;
 pub mod commands;
-pub mod config;
 pub mod context;
-pub mod diagnostic;
 pub mod diff;
 pub mod draw;
 pub mod edit;
-pub mod encoding;
 pub mod fixing;
-pub mod loader;
 pub mod lsp;
-pub mod map;
-pub mod mission;
-pub mod model;
 pub mod present;
-pub mod reader;
 pub mod render;
 pub mod report;
-pub mod robot;
-pub mod rules;
-pub mod settings;
-pub mod source;
-pub mod streams;
-pub mod syntax;
 pub mod translations;
 pub mod write;
 
-pub use check::{check, Checked};
-pub use diagnostic::{Diagnostic, Severity};
-pub use model::KnowledgeBase;
-pub use source::SourceFile;
+// The core's layers, at the paths they have always had here.
+pub use ekb_core::{
+    check, config, diagnostic, encoding, loader, map, mission, model, reader, robot, rules,
+    settings, source, stderr_line, streams, syntax,
+};
+pub use ekb_core::{Checked, Diagnostic, KnowledgeBase, Severity, SourceFile};

@@ -3,18 +3,28 @@
 //! the layers below it, and the entries of one layer import no circle. The table is read
 //! from ARCHITECTURE.md itself, so the document and the test cannot drift apart. Unit tests
 //! (`#[cfg(test)]` items) may use anything: they are no part of the library.
+//!
+//! Two crates share the map: the core (`crates/ekb-core/src/`), whose `crate::` is its own,
+//! and the command line's (`src/`), whose `crate::` also reaches the core's modules that it
+//! re-exports at the same paths (`crate::model` is `ekb_core::model`). The core depends on
+//! no crate of a face.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
-/// One row of the code map: a path under `src/` (a folder ends in `/`) and its layer.
+/// The core's sources, from the repository's root.
+const CORE: &str = "crates/ekb-core/src/";
+
+/// One row of the code map: a path under `src/` or [`CORE`] (a folder ends in `/`) and
+/// its layer.
 #[derive(Debug, Clone, PartialEq, Eq)]
 struct Entry {
     path: String,
     layer: u32,
 }
 
-/// The rows of the table of section "Code map" of ARCHITECTURE.md: `| `src/…` | N | … |`.
+/// The rows of the table of section "Code map" of ARCHITECTURE.md: `| `src/…` | N | … |`
+/// (or `crates/ekb-core/src/…`).
 fn code_map(architecture: &str) -> Vec<Entry> {
     let section = architecture
         .split("\n## ")
@@ -26,7 +36,7 @@ fn code_map(architecture: &str) -> Vec<Entry> {
             let mut cells = line.split('|').map(str::trim).skip(1);
             let path = cells.next()?.strip_prefix('`')?.strip_suffix('`')?;
             let layer = cells.next()?.parse().ok()?;
-            path.starts_with("src/").then(|| Entry {
+            (path.starts_with("src/") || path.starts_with(CORE)).then(|| Entry {
                 path: path.to_string(),
                 layer,
             })
@@ -55,22 +65,40 @@ const ROOT_ITEMS: &[(&str, &str)] = &[
     ("stderr_line", "streams"),
 ];
 
-/// The entry a path of a `use crate::` tree (`["render", "escape", "escape"]`) imports
-/// from: its longest leading part that names a file or folder of the map.
-fn imported<'m>(map: &'m [Entry], segments: &[&str]) -> Option<&'m Entry> {
+/// The entry a path of a `use crate::` tree (`["render", "escape", "escape"]`) in the file
+/// `file` imports from: its longest leading part that names a file of its crate or, for a
+/// file of the command line's crate, of the core's (`exists` tells which files there are).
+fn imported<'m>(
+    map: &'m [Entry],
+    file: &str,
+    segments: &[&str],
+    exists: &dyn Fn(&str) -> bool,
+) -> Option<&'m Entry> {
     let first = ROOT_ITEMS
         .iter()
         .find(|(item, _)| *item == segments[0])
         .map_or(segments[0], |(_, module)| module);
     let mut segments: Vec<&str> = segments.to_vec();
     segments[0] = first;
-    (1..=segments.len())
-        .flat_map(|length| {
-            let module = segments[..length].join("/");
-            [format!("src/{module}.rs"), format!("src/{module}/mod.rs")]
-        })
-        .filter_map(|file| owner(map, &file))
-        .max_by_key(|entry| entry.path.len())
+    let roots: &[&str] = match file.starts_with(CORE) {
+        true => &[CORE],
+        false => &["src/", CORE],
+    };
+    // The deepest module the path names, wherever it is: the command line's `render`
+    // holds the core's `render::escape` by a re-export.
+    (1..=segments.len()).rev().find_map(|length| {
+        let module = segments[..length].join("/");
+        roots
+            .iter()
+            .flat_map(|root| {
+                [
+                    format!("{root}{module}.rs"),
+                    format!("{root}{module}/mod.rs"),
+                ]
+            })
+            .find(|file| exists(file))
+            .and_then(|file| owner(map, &file))
+    })
 }
 
 /// The paths of a use tree (`{a, b::{c, d}}` gives `a`, `b::c`, `b::d`), each as its
@@ -269,15 +297,15 @@ impl std::fmt::Display for Import {
     }
 }
 
-/// The uses, in the library code of the file `file` (a path under `src/`) whose text is
-/// `source`, of items of other entries of the code map.
-fn imports(map: &[Entry], file: &str, source: &str) -> Vec<Import> {
+/// The uses, in the library code of the file `file` (a path from the repository's root)
+/// whose text is `source`, of items of other entries of the code map.
+fn imports(map: &[Entry], file: &str, source: &str, exists: &dyn Fn(&str) -> bool) -> Vec<Import> {
     let from = owner(map, file)
         .unwrap_or_else(|| panic!("{file} is in no entry of the code map of ARCHITECTURE.md"));
     let mut found = Vec::new();
     for (line, path) in crate_paths(source) {
         let segments: Vec<&str> = path.iter().map(String::as_str).collect();
-        let to = imported(map, &segments).unwrap_or_else(|| {
+        let to = imported(map, file, &segments, exists).unwrap_or_else(|| {
             panic!(
                 "{file}:{line}: `crate::{}` is in no entry of the code map",
                 path.join("::")
@@ -374,12 +402,20 @@ fn crate_imports() -> Vec<Import> {
     assert!(map.len() >= 10, "the code map has {} rows", map.len());
     let mut files = Vec::new();
     rust_files(root, &root.join("src"), &mut files);
-    assert!(files.len() > 100, "found {} source files", files.len());
+    let command_line = files.len();
+    rust_files(root, &root.join(CORE), &mut files);
+    assert!(command_line > 50, "found {command_line} files in src/");
+    assert!(
+        files.len() - command_line > 100,
+        "found {} in {CORE}",
+        files.len() - command_line
+    );
+    let exists = |file: &str| root.join(file).is_file();
     files
         .iter()
         .flat_map(|file| {
             let source = std::fs::read_to_string(root.join(file)).expect("a source file");
-            imports(&map, file, &source)
+            imports(&map, file, &source, &exists)
         })
         .collect()
 }
@@ -427,7 +463,20 @@ fn an_added_upward_import_or_circle_is_found() {
          ## Invariants\n\n| `src/x/` | 9 |\n",
     );
     assert_eq!(map.len(), 7, "{map:?}");
-    let found = |file: &str, source: &str| imports(&map, file, source);
+    let files = [
+        "src/syntax/mod.rs",
+        "src/syntax/span.rs",
+        "src/syntax/line.rs",
+        "src/render/mod.rs",
+        "src/render/escape.rs",
+        "src/render/human.rs",
+        "src/rules/mod.rs",
+        "src/diagnostic.rs",
+        "src/check.rs",
+        "src/fixing.rs",
+    ];
+    let exists = |file: &str| files.contains(&file);
+    let found = |file: &str, source: &str| imports(&map, file, source, &exists);
     let upward_in = |file: &str, source: &str| {
         upward(&found(file, source))
             .iter()
@@ -487,4 +536,90 @@ fn an_added_upward_import_or_circle_is_found() {
         .map(|import| format!("{}:{}", import.file, import.line))
         .collect();
     assert_eq!(circle, ["src/check.rs:1", "src/fixing.rs:1"]);
+}
+
+/// In a made-up map of both crates, the command line's `crate::model` is the core's model
+/// (it has none of its own), and its `crate::render::human` its own renderer, while
+/// `crate::render::escape` is the core's, which the command line's `render` re-exports.
+#[test]
+fn a_path_of_the_command_line_reaches_the_core_it_re_exports() {
+    let map = code_map(
+        "# A\n\n## Code map\n\n| `crates/ekb-core/src/model/` | 2 |\n\
+         | `crates/ekb-core/src/render/` | 0 |\n| `src/render/` | 7 |\n| `src/lsp/` | 9 |\n",
+    );
+    let files = [
+        "crates/ekb-core/src/model/mod.rs",
+        "crates/ekb-core/src/render/escape.rs",
+        "src/render/human.rs",
+    ];
+    let exists = |file: &str| files.contains(&file);
+    let layers = |file: &str, source: &str| {
+        imports(&map, file, source, &exists)
+            .iter()
+            .map(|import| format!("{} {}", import.path, import.to.layer))
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(
+        layers(
+            "src/lsp/server.rs",
+            "use crate::model::Location;\nuse crate::render::{escape::escape, human};\n"
+        ),
+        [
+            "model::Location 2",
+            "render::escape::escape 0",
+            "render::human 7"
+        ]
+    );
+    assert_eq!(
+        layers(
+            "crates/ekb-core/src/render/escape.rs",
+            "use crate::model::Location;\n"
+        ),
+        ["model::Location 2"]
+    );
+}
+
+/// The crates the faces bring in: the core, which the C ABI and the Python module link
+/// alone, depends on none of them.
+const FACES_ONLY: &[&str] = &[
+    "clap",
+    "clap_complete",
+    "clap_mangen",
+    "miette",
+    "comfy-table",
+    "anstream",
+    "terminal_size",
+    "similar",
+    "resvg",
+    "base64",
+    "lsp-server",
+    "lsp-types",
+    "crossbeam-channel",
+    "self_cell",
+    "serde_path_to_error",
+];
+
+#[test]
+fn the_core_depends_on_no_crate_of_a_face() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let manifest = std::fs::read_to_string(root.join("crates/ekb-core/Cargo.toml")).unwrap();
+    let dependencies = manifest
+        .split("\n[dependencies]\n")
+        .nth(1)
+        .expect("crates/ekb-core/Cargo.toml has [dependencies]");
+    let dependencies = dependencies.split("\n[").next().unwrap_or(dependencies);
+    let names: Vec<&str> = dependencies
+        .lines()
+        .filter_map(|line| line.split_once('=').map(|(name, _)| name.trim()))
+        .filter(|name| !name.starts_with('#'))
+        .collect();
+    assert!(names.contains(&"serde"), "read no dependency: {names:?}");
+    let faces: Vec<&&str> = names
+        .iter()
+        .filter(|name| FACES_ONLY.contains(name))
+        .collect();
+    assert!(
+        faces.is_empty(),
+        "the core depends on {faces:?}: move what needs it to a face"
+    );
 }

@@ -33,7 +33,7 @@ pub struct Args {
     pub rules: RuleArgs,
 
     /// Show only findings at or above this severity (the summary still counts them all)
-    #[arg(long, value_enum, value_name = "SEVERITY")]
+    #[arg(long, value_parser = super::named_values::severity(), value_name = "SEVERITY")]
     pub level: Option<Severity>,
 
     /// Instead of the findings, one line per rule: its count, and whether `ekb fix` can fix

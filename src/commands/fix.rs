@@ -33,7 +33,7 @@ pub struct Args {
     pub diff: bool,
 
     /// Migrate to this dialect (`current`: robotLocation becomes robotLocationPose; `seed`: the reverse)
-    #[arg(long, value_enum, value_name = "DIALECT")]
+    #[arg(long, value_parser = super::named_values::dialect(), value_name = "DIALECT")]
     pub dialect: Option<Dialect>,
 
     /// Apply the unsafe fixes too, which guess what was meant: a dash before a number becomes a

@@ -14,6 +14,7 @@ pub mod lsp;
 pub mod man;
 pub mod map;
 pub mod mission;
+pub mod named_values;
 pub mod report;
 pub mod rewrite;
 pub mod rules;

@@ -378,18 +378,8 @@ pub fn note_errors(checked: &Checked<'_>, quiet: bool) {
     }
 }
 
-/// `count` pseudo-random 64-bit patterns (xorshift), the same every run: floats to test
-/// with.
 #[cfg(test)]
-pub(crate) fn random_bits(count: usize) -> impl Iterator<Item = u64> {
-    std::iter::successors(Some(0x9E37_79B9_7F4A_7C15_u64), |&bits| {
-        let bits = bits ^ (bits << 13);
-        let bits = bits ^ (bits >> 7);
-        Some(bits ^ (bits << 17))
-    })
-    .skip(1)
-    .take(count)
-}
+pub(crate) use ekb_core::testing::random_bits;
 
 #[cfg(test)]
 mod tests {

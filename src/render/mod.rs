@@ -3,15 +3,13 @@
 //! Every format works from [`FileReport`]s: a file's diagnostics with positions already
 //! converted to lines and columns ([`located`]).
 
-pub mod clip;
+pub use ekb_core::render::{clip, escape, located, safe_json};
+
 pub mod concise;
-pub mod escape;
 pub mod github;
 pub mod human;
 pub mod json;
-pub mod located;
 pub mod markup;
-pub mod safe_json;
 pub mod sarif;
 pub mod statistics;
 

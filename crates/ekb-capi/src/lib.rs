@@ -28,11 +28,11 @@ use std::path::Path;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, LazyLock, RwLock};
 
-use ekb::loader::{self, Finding, KnowledgeBase, LoadError, Location, Messages, Options};
-use ekb::model::Arm;
-use ekb::robot::Reader;
-use ekb::settings::Lookup;
-use ekb::Severity;
+use ekb_core::loader::{self, Finding, KnowledgeBase, LoadError, Location, Messages, Options};
+use ekb_core::model::Arm;
+use ekb_core::robot::Reader;
+use ekb_core::settings::Lookup;
+use ekb_core::Severity;
 
 /// What a call did.
 #[repr(C)]

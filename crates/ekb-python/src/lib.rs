@@ -1,5 +1,5 @@
 //! `ekb._ekb`: the native part of the Python module `ekb`, a thin face over
-//! [`ekb::loader`] (SPEC §12, §13).
+//! [`ekb_core::loader`] (SPEC §12, §13).
 //!
 //! A knowledge base loads exactly as `ekb export` shows it, and a file that `ekb check`
 //! finds an error in is refused with the same findings, as a `RefusedError`:
@@ -18,10 +18,10 @@
 
 use std::path::PathBuf;
 
-use ekb::loader::{self, Language, Options, Phase};
-use ekb::model::export::ExportedLocation;
-use ekb::present::language;
-use ekb::robot::Reader;
+use ekb_core::loader::{self, Language, Options, Phase};
+use ekb_core::model::export::ExportedLocation;
+use ekb_core::present::language;
+use ekb_core::robot::Reader;
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyKeyError, PyValueError};
 use pyo3::prelude::*;

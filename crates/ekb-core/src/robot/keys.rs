@@ -3,18 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 /// One of the two spellings of the format (SPEC §1).
-#[derive(
-    Debug,
-    Clone,
-    Copy,
-    PartialEq,
-    Eq,
-    Hash,
-    Serialize,
-    Deserialize,
-    clap::ValueEnum,
-    schemars::JsonSchema,
-)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum Dialect {
     /// The document's dialect (v1.1): `robotLocation`.
@@ -24,6 +13,18 @@ pub enum Dialect {
 }
 
 impl Dialect {
+    pub const ALL: [Dialect; 2] = [Dialect::Seed, Dialect::Current];
+
+    /// What this dialect is, in a line (`ekb fix --help` shows it beside the name).
+    pub fn summary(self) -> &'static str {
+        match self {
+            Dialect::Seed => "The document's dialect (v1.1): `robotLocation`",
+            Dialect::Current => {
+                "The robot's current dialect: `robotLocationPose`, `culturalKnowledge`, `gestureArm`"
+            }
+        }
+    }
+
     pub fn name(self) -> &'static str {
         match self {
             Dialect::Seed => "seed",

@@ -105,7 +105,7 @@ impl FileReport<'_> {
 
 /// A byte offset whose position is known: where a scan can start.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) struct Mark {
+pub struct Mark {
     pub offset: u32,
     pub position: Position,
 }
@@ -129,7 +129,7 @@ impl Mark {
 /// built (on a 100,000-location file that index was 900,000 entries, built to locate a
 /// thousand findings). Locating many findings on one huge line (a million-stop tour) costs
 /// the line's length once, not once per finding.
-pub(super) struct Locator<'a> {
+pub struct Locator<'a> {
     text: &'a str,
     /// Where the last region started.
     cursor: Cell<Mark>,

@@ -6,7 +6,7 @@
 //! that `ekb check` finds an error in is refused with the same findings (SPEC §12).
 //!
 //! ```
-//! use ekb::loader::{load_bytes, Options};
+//! use ekb_core::loader::{load_bytes, Options};
 //!
 //! // A location with no pose, no messages and no tour: refused, with every finding.
 //! let text = b"robotLocationDescription 1 Entrance\n";

@@ -98,7 +98,7 @@ mod tests {
             1e-45,
             f32::INFINITY,
         ];
-        for bits in crate::present::random_bits(300_000) {
+        for bits in crate::testing::random_bits(300_000) {
             samples.push(f32::from_bits(bits as u32));
             samples.push((bits % 200_000) as f32 / 100.0 - 1000.0);
         }

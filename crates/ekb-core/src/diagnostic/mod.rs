@@ -15,7 +15,7 @@ pub use diagnostics::{kept_at_most, Diagnostics, MAX_SHOWN_PER_RULE};
 pub use rule::{Category, Rule};
 
 /// How serious a finding is (graver first: `Error < Warning`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Severity {
     Error,
@@ -24,6 +24,8 @@ pub enum Severity {
 }
 
 impl Severity {
+    pub const ALL: [Severity; 3] = [Severity::Error, Severity::Warning, Severity::Info];
+
     pub fn name(self) -> &'static str {
         match self {
             Severity::Error => "error",

@@ -81,12 +81,14 @@ pub fn check(text: &str) -> Option<Diagnostic> {
 mod tests {
     use super::*;
 
-    const BAD: &str =
-        include_str!("../../../tests/fixtures/rules/not-an-environment-knowledge-base/bad.dat");
-    const GOOD: &str =
-        include_str!("../../../tests/fixtures/rules/not-an-environment-knowledge-base/good.dat");
+    const BAD: &str = include_str!(
+        "../../../../../tests/fixtures/rules/not-an-environment-knowledge-base/bad.dat"
+    );
+    const GOOD: &str = include_str!(
+        "../../../../../tests/fixtures/rules/not-an-environment-knowledge-base/good.dat"
+    );
     const CULTURE: &str = include_str!(
-        "../../../tests/fixtures/corpus/upstream-2025-06-cultureKnowledgeBaseInput.dat"
+        "../../../../../tests/fixtures/corpus/upstream-2025-06-cultureKnowledgeBaseInput.dat"
     );
 
     #[test]

@@ -133,7 +133,7 @@ pub static ALL: &[&Rule] = &[
 ];
 
 /// `text` from the file, cut to a length that fits in a one-line message.
-pub(crate) fn excerpt(text: &str) -> std::borrow::Cow<'_, str> {
+pub fn excerpt(text: &str) -> std::borrow::Cow<'_, str> {
     const MAX_CHARS: usize = 40;
     match text.char_indices().nth(MAX_CHARS) {
         Some((cut, _)) => format!("{}…", &text[..cut]).into(),
