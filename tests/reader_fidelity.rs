@@ -680,3 +680,54 @@ fn a_lone_carriage_return_where_the_buffer_cuts_the_line_ends_it() {
         assert!(description(&loaded, 0).contains('\r'), "{version}");
     }
 }
+
+/// Found against the real readers: three `culturalKnowledge` words on an id that has no
+/// location yet make one, with the pointer to the third word written over its word count,
+/// and no crash; the reader crashes only where another line of the location that it reads
+/// makes it update the location (the description of location 6 here, or on `2026-03` the
+/// `gestureArm` of location 5). `ekb` said it crashed on a line the version ignores too.
+#[test]
+fn three_cultural_words_on_a_new_id_overwrite_its_word_count_without_a_crash() {
+    let rule = "compat-too-many-cultural-keys";
+    for version in &Reader::ALL[1..] {
+        let source = SourceFile::from_bytes(
+            "three-words",
+            std::fs::read(
+                std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                    .join("tests/fixtures/reader/cultural-knowledge-three-words.dat"),
+            )
+            .unwrap(),
+        );
+        let options = Options {
+            reader: Some(*version),
+            ..Options::default()
+        };
+        let index = LineIndex::new(source.text());
+        let checked = ekb::check(&source, &options);
+        let message = |line: u32| {
+            checked
+                .diagnostics
+                .iter()
+                .find(|d| d.rule.name == rule && index.line(d.span.start) == line)
+                .map(|d| (d.severity(), d.message.clone()))
+                .unwrap_or_else(|| panic!("{version}: no {rule} at line {line}"))
+        };
+        let (severity, new_id) = message(1);
+        assert_eq!(severity, Severity::Error, "{version}");
+        match *version {
+            Reader::V2026_03 => assert!(new_id.ends_with("crashes while the robot starts")),
+            _ => assert!(
+                new_id.contains("third word's pointer over the location's word count")
+                    && new_id.contains("does not crash"),
+                "{version}: {new_id}"
+            ),
+        }
+        let (_, existing) = message(4);
+        assert!(
+            existing.ends_with("crashes while the robot starts"),
+            "{version}: {existing}"
+        );
+    }
+    let (_, findings) = loaded_fixture("cultural-knowledge-three-words.dat", Reader::D542);
+    assert!(!findings.iter().any(|(name, ..)| name == rule));
+}
