@@ -616,3 +616,118 @@ fn the_text_after_a_nul_byte_is_loaded() {
         }
     }
 }
+
+/// Found against the real readers: a lone `\r` that is the last byte a version's line
+/// buffer holds of its line (byte 199, 299 or 599 of it) ends that line: the reader drops
+/// it, as it takes the last byte of a text for its newline, and reads what follows as a
+/// line of its own. It changes nothing loaded, so it is no `compat-line-too-long`, and the
+/// robot never says it, so it is no `control-character`; `ekb` reported both. A version
+/// whose buffer holds the line on past the `\r` keeps it in the text (and the check says
+/// so); a `\r` a byte before the cut is one on every version.
+#[test]
+fn a_lone_carriage_return_where_the_buffer_cuts_the_line_ends_it() {
+    let description = |loaded: &serde_json::Value, at: usize| {
+        loaded["locations"][at]["description"]
+            .as_str()
+            .unwrap()
+            .to_string()
+    };
+    for buffer in [200, 300, 600] {
+        let name = format!("lone-cr-at-the-cut-{buffer}.dat");
+        for version in Reader::ALL {
+            let (loaded, findings) = loaded_fixture(&name, version);
+            let on_the_line = |rule: &str| has(&findings, rule, 4, Severity::Error);
+            if version.line_buffer() == buffer {
+                let first = description(&loaded, 0);
+                assert_eq!(first.len(), buffer - 2 - 27, "{version} {name}");
+                // The fixture's text ends in an `s` before its `\r`.
+                assert!(first.ends_with('s'), "{version} {name}: {first:?}");
+                assert_eq!(description(&loaded, 1), "Lab", "{version} {name}");
+                assert!(
+                    !on_the_line("compat-line-too-long") && !on_the_line("control-character"),
+                    "{version} {name}: {findings:?}"
+                );
+            } else {
+                assert!(
+                    description(&loaded, 0).contains('\r') || version.line_buffer() < buffer,
+                    "{version} {name}"
+                );
+                assert!(
+                    on_the_line("control-character"),
+                    "{version} {name}: {findings:?}"
+                );
+                let cut = version.line_buffer() < buffer;
+                assert_eq!(
+                    on_the_line("compat-line-too-long"),
+                    cut,
+                    "{version} {name}: {findings:?}"
+                );
+            }
+        }
+    }
+    for version in Reader::ALL {
+        let (loaded, findings) = loaded_fixture("lone-cr-before-the-cut.dat", version);
+        assert!(
+            has(&findings, "control-character", 4, Severity::Error),
+            "{version}: {findings:?}"
+        );
+        let cut = version.line_buffer() == 200;
+        assert_eq!(
+            has(&findings, "compat-line-too-long", 4, Severity::Error),
+            cut,
+            "{version}: {findings:?}"
+        );
+        assert!(description(&loaded, 0).contains('\r'), "{version}");
+    }
+}
+
+/// Found against the real readers: three `culturalKnowledge` words on an id that has no
+/// location yet make one, with the pointer to the third word written over its word count,
+/// and no crash; the reader crashes only where another line of the location that it reads
+/// makes it update the location (the description of location 6 here, or on `2026-03` the
+/// `gestureArm` of location 5). `ekb` said it crashed on a line the version ignores too.
+#[test]
+fn three_cultural_words_on_a_new_id_overwrite_its_word_count_without_a_crash() {
+    let rule = "compat-too-many-cultural-keys";
+    for version in &Reader::ALL[1..] {
+        let source = SourceFile::from_bytes(
+            "three-words",
+            std::fs::read(
+                std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                    .join("tests/fixtures/reader/cultural-knowledge-three-words.dat"),
+            )
+            .unwrap(),
+        );
+        let options = Options {
+            reader: Some(*version),
+            ..Options::default()
+        };
+        let index = LineIndex::new(source.text());
+        let checked = ekb::check(&source, &options);
+        let message = |line: u32| {
+            checked
+                .diagnostics
+                .iter()
+                .find(|d| d.rule.name == rule && index.line(d.span.start) == line)
+                .map(|d| (d.severity(), d.message.clone()))
+                .unwrap_or_else(|| panic!("{version}: no {rule} at line {line}"))
+        };
+        let (severity, new_id) = message(1);
+        assert_eq!(severity, Severity::Error, "{version}");
+        match *version {
+            Reader::V2026_03 => assert!(new_id.ends_with("crashes while the robot starts")),
+            _ => assert!(
+                new_id.contains("third word's pointer over the location's word count")
+                    && new_id.contains("does not crash"),
+                "{version}: {new_id}"
+            ),
+        }
+        let (_, existing) = message(4);
+        assert!(
+            existing.ends_with("crashes while the robot starts"),
+            "{version}: {existing}"
+        );
+    }
+    let (_, findings) = loaded_fixture("cultural-knowledge-three-words.dat", Reader::D542);
+    assert!(!findings.iter().any(|(name, ..)| name == rule));
+}

@@ -346,6 +346,25 @@ fn starts_with_one_of(line: &[u8], names: &[&[u8]]) -> bool {
     })
 }
 
+/// Whether the byte at `at` of `text` is a lone `\r` (no `\n` after it) that is the last
+/// byte of a piece filling a line buffer of `buffer` bytes before its line ends: the reader
+/// takes it for the line's end (it drops the last byte of a text, taking it for the
+/// newline) and reads what follows as a line of its own, as if the `\r` were a `\n`.
+pub fn is_carriage_return_at_a_cut(text: &[u8], at: usize, buffer: usize) -> bool {
+    if text.get(at) != Some(&b'\r') || text.get(at + 1).is_none_or(|&next| next == b'\n') {
+        return false;
+    }
+    let line_start = memchr::memrchr(b'\n', &text[..at]).map_or(0, |newline| newline + 1);
+    (at + 1 - line_start) % (buffer - 1) == 0
+}
+
+/// Where `text` has a lone `\r` that a line buffer of `buffer` bytes cuts its line after
+/// ([`is_carriage_return_at_a_cut`]).
+pub fn carriage_returns_at_cuts(text: &[u8], buffer: usize) -> impl Iterator<Item = usize> + '_ {
+    memchr::memchr_iter(b'\r', text)
+        .filter(move |&at| is_carriage_return_at_a_cut(text, at, buffer))
+}
+
 /// The file as `fgets` with a buffer of `buffer` bytes returns it: each line, newline
 /// included, in pieces of at most `buffer - 1` bytes; with where each starts.
 pub fn chunks(text: &[u8], buffer: usize) -> impl Iterator<Item = (usize, &[u8])> {

@@ -13,4 +13,7 @@ mod load;
 pub mod tree;
 pub mod view;
 
-pub use load::{chunks, load, load_fields, Field, Loaded, LoadedLocation, LoadedTour, Locations};
+pub use load::{
+    carriage_returns_at_cuts, chunks, is_carriage_return_at_a_cut, load, load_fields, Field,
+    Loaded, LoadedLocation, LoadedTour, Locations,
+};

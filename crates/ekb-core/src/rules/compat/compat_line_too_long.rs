@@ -2,8 +2,8 @@ use crate::diagnostic::Diagnostic;
 use crate::diagnostic::Diagnostics;
 use crate::model::build::leading_id;
 use crate::model::{Key, KnowledgeBase, ValueKind};
-use crate::reader::chunks;
 use crate::reader::line as reader_line;
+use crate::reader::{chunks, is_carriage_return_at_a_cut};
 use crate::robot::Reader;
 use crate::rules::{declare_rule, excerpt};
 use crate::syntax::{self, Body, Line, Span};
@@ -16,7 +16,10 @@ declare_rule! {
     /// accent takes two.
     ///
     /// Not a line whose cut changes nothing the reader loads: a line of blanks, a comment
-    /// whose rest is no line the reader reads, a CRLF line cut between its `\r` and `\n`.
+    /// whose rest is no line the reader reads, a CRLF line cut between its `\r` and `\n`,
+    /// a line cut right after a lone `\r` (the reader takes that `\r` for the line's end,
+    /// drops it as it would the newline, and reads what follows as a line of its own, as
+    /// if the `\r` were a `\n`). A cut in what follows such a `\r` is still one.
     ///
     /// ## Why it matters
     /// The robot's reader reads lines into a fixed buffer. A longer line is cut after 199
@@ -41,22 +44,47 @@ declare_rule! {
 pub fn check(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagnostics) {
     let buffer = reader.line_buffer();
     for &span in &kb.lines.long_lines {
-        if span.len() < buffer || !cut_changes_what_loads(&text.as_bytes()[span.range()], reader) {
+        if span.len() < buffer {
             continue;
         }
+        let Some(after) = changing_part(&text.as_bytes()[span.range()], reader) else {
+            continue;
+        };
         out.push_with(&COMPAT_LINE_TOO_LONG, || {
-            let line = syntax::lines_from(text, span.start as usize)
+            let line = syntax::lines_from(text, span.start as usize + after)
                 .next()
                 .expect("a line starts there");
-            diagnostic(&line, text, reader)
+            diagnostic(&line, text, reader, after)
         });
     }
+}
+
+/// Where the first part of `line` (its ending included) starts whose cut changes what
+/// `reader` loads ([`cut_changes_what_loads`]), if one does: the parts are what the reader
+/// reads as lines, the line cut after each lone `\r` that ends what its buffer holds
+/// ([`is_carriage_return_at_a_cut`]), which the reader takes for the line's end.
+fn changing_part(line: &[u8], reader: Reader) -> Option<usize> {
+    let buffer = reader.line_buffer();
+    let mut ends: Vec<usize> = memchr::memchr_iter(b'\r', line)
+        .filter(|&at| is_carriage_return_at_a_cut(line, at, buffer))
+        .map(|at| at + 1)
+        .collect();
+    ends.push(line.len());
+    let mut start = 0;
+    for end in ends {
+        if cut_changes_what_loads(&line[start..end], reader) {
+            return Some(start);
+        }
+        start = end;
+    }
+    None
 }
 
 /// Whether cutting `line` (its ending included) into the pieces that `reader` reads
 /// changes what it loads: a piece after the first loads something, or the first loads
 /// other than the line whole would, with a `\n` for its ending (the `\r` of a CRLF ending
-/// is `compat-crlf`'s).
+/// is `compat-crlf`'s; a lone `\r` that ends a part of a line, [`changing_part`], is its
+/// ending).
 fn cut_changes_what_loads(line: &[u8], reader: Reader) -> bool {
     let mut pieces = chunks(line, reader.line_buffer());
     let Some((_, first)) = pieces.next() else {
@@ -67,16 +95,17 @@ fn cut_changes_what_loads(line: &[u8], reader: Reader) -> bool {
     }) {
         return true;
     }
-    let content = line
-        .strip_suffix(b"\n")
-        .map_or(line, |line| line.strip_suffix(b"\r").unwrap_or(line));
+    let content = line.strip_suffix(b"\n").unwrap_or(line);
+    let content = content.strip_suffix(b"\r").unwrap_or(content);
     let whole = [content, b"\n"].concat();
     let cut = reader_line::read(first, 0, reader);
     !reader_line::same_load(&cut, first, &reader_line::read(&whole, 0, reader), &whole)
 }
 
-/// The finding about `line`, which is too long for `reader`.
-fn diagnostic(line: &Line, text: &str, reader: Reader) -> Diagnostic {
+/// The finding about `line`, which is too long for `reader`; or, if `after` is not 0, about
+/// what follows the first `after` bytes of it, which end in a lone `\r` that the reader
+/// takes for the line's end (`line` then starts after that `\r`).
+fn diagnostic(line: &Line, text: &str, reader: Reader, after: usize) -> Diagnostic {
     let buffer = reader.line_buffer();
     let length = line.span.len();
     let content = line.content();
@@ -130,11 +159,17 @@ fn diagnostic(line: &Line, text: &str, reader: Reader) -> Diagnostic {
     } else {
         last_char(content_end)
     };
+    let this = match after {
+        0 => "this line".to_string(),
+        _ => format!(
+            "what follows the `\\r` after the first {after} bytes of this line, which reader {reader} takes for the line's end and reads as a line of its own,"
+        ),
+    };
     Diagnostic::new(
         &COMPAT_LINE_TOO_LONG,
         Span::new(lost, content_end),
         format!(
-            "this line is {length} bytes long, but reader {reader} reads at most {} bytes per line: {what}",
+            "{this} is {length} bytes long, but reader {reader} reads at most {} bytes per line: {what}",
             buffer - 1
         ),
     )

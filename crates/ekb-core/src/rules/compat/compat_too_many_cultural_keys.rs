@@ -21,12 +21,18 @@ pub fn loaded_words(value: &str) -> usize {
 
 /// Whether `reader` crashes on `location`'s culturalKnowledge words, counted as the reader
 /// reads their line (written apart, split by the reader, or an indented line's id). A word
-/// past the buffer's two is written over what follows it, and the reader crashes the next
-/// time it updates the location, which each of its other lines makes it do, before or after
-/// (measured on the real readers: a location of that one line alone loads, its memory
-/// corrupt).
+/// past the buffer's two is written over what follows it (the third over the location's
+/// word count), and the reader crashes the next time it updates the location, which each
+/// of its other lines that it reads makes it do, before or after. A line of a key that the
+/// version ignores (`gestureArm` but on `2026-03`, the other pose key) updates nothing: on
+/// an id with no line the reader reads but this one, the words make a new location, which
+/// loads with its word count overwritten and no crash (measured on the real readers).
 pub fn crashes(location: &Location<'_>, reader: Reader) -> bool {
-    let other_lines = location.given & !(1 << Key::CulturalKnowledge.order()) != 0;
+    let read_keys = Key::ALL
+        .into_iter()
+        .filter(|&key| key != Key::CulturalKnowledge && reader.reads(key))
+        .fold(0u16, |keys, key| keys | 1 << key.order());
+    let other_lines = location.given & read_keys != 0;
     reader.reads(Key::CulturalKnowledge)
         && other_lines
         && location.cultural_knowledge().is_some_and(|words| {
@@ -59,7 +65,12 @@ declare_rule! {
     /// the rest past the end of that buffer, over the memory that follows: a third word
     /// (counted as the reader counts them, `compat-cultural-word-split`) corrupts the
     /// location's words, and the reader crashes while the robot starts as soon as another
-    /// line of the location, before or after, makes it update the location.
+    /// line of the location, before or after, makes it update the location. Where no other
+    /// line of the location is one the chosen reader reads (a location of that line alone,
+    /// or with a `gestureArm` line that the version ignores), it does not crash, but the
+    /// third word's pointer lands on the location's word count: the location loads with a
+    /// word count that is garbage, and whatever reads its culture knowledge reads memory that
+    /// holds no word.
     ///
     /// ## Example
     /// ```text
@@ -88,16 +99,18 @@ pub fn check(location: &Location<'_>, reader: Reader, out: &mut Diagnostics) {
     let dropped = &words[MAX_CULTURAL_KEYS..];
     let span = dropped[0].0.cover(dropped[dropped.len() - 1].0);
     let names: Vec<&str> = dropped.iter().map(|(_, word)| *word).collect();
+    let id = location.id;
     let consequence = if crashes(location, reader) {
-        "and crashes while the robot starts"
+        " and crashes while the robot starts".to_string()
     } else {
-        "and corrupts the robot's memory"
+        format!(
+            ", the third word's pointer over the location's word count; no other line of location {id} that reader {reader} reads makes it update the location, so it does not crash, but location {id} loads with a garbage word count, and whatever reads its culture knowledge reads memory that holds no word"
+        )
     };
     out.push_with(&COMPAT_TOO_MANY_CULTURAL_KEYS, || Diagnostic::new(&COMPAT_TOO_MANY_CULTURAL_KEYS,
             span,
             format!(
-                "location {} has {} culturalKnowledge words, but the robot's reader has room for {MAX_CULTURAL_KEYS}: it writes {} past the end of its buffer {consequence}",
-                location.id,
+                "location {id} has {} culturalKnowledge words, but the robot's reader has room for {MAX_CULTURAL_KEYS}: it writes {} past the end of its buffer{consequence}",
                 words.len(),
                 clip::shown(&names.join(", "))
             ),

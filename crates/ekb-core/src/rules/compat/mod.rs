@@ -38,6 +38,7 @@ pub fn check_file(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut 
     compat_too_many_cultural_keys::check_overwritten(kb, text, reader, out);
     arm_blanks_are_errors(kb, text, reader, out);
     compat_crlf::grade(text, reader, out);
+    structure::control_character::check_at_cuts(text, reader, out);
 }
 
 /// The shape of the tree of locations that `reader` builds from the file: the reader's own
@@ -71,7 +72,8 @@ const INSERTED_OTHERWISE: [&Rule; 7] = [
 ];
 
 /// Whether the tree that the written model's order of first lines builds is the one that
-/// `reader` builds: no finding so far says a line is inserted otherwise, and no location's
+/// `reader` builds: no finding so far says a line is inserted otherwise, no lone `\r` ends
+/// a line where the reader's buffer cuts it, and no location's
 /// first line is of a key the reader ignores (`gestureArm` first, say, on a version that
 /// does not read it: the reader first inserts that location at its next line).
 pub fn model_tree_is_the_readers(
@@ -83,6 +85,15 @@ pub fn model_tree_is_the_readers(
     if INSERTED_OTHERWISE
         .iter()
         .any(|&rule| found.reported(rule) > 0)
+    {
+        return false;
+    }
+    // A lone `\r` that ends what the reader's buffer holds of a line ends that line: what
+    // follows is a line of its own to the reader, which the model does not see.
+    let buffer = reader.line_buffer();
+    if crate::reader::carriage_returns_at_cuts(text.as_bytes(), buffer)
+        .next()
+        .is_some()
     {
         return false;
     }

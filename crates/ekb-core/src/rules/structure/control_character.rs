@@ -1,13 +1,22 @@
 use crate::diagnostic::Diagnostic;
 use crate::diagnostic::Diagnostics;
+use crate::reader::is_carriage_return_at_a_cut;
+use crate::robot::Reader;
 use crate::rules::declare_rule;
-use crate::syntax::Span;
+use crate::syntax::{Body, Span};
 
 declare_rule! {
     /// ## What it does
     /// Flags a control character (other than tab) inside a line's values: NUL, a lone
     /// carriage return, escape sequences, DEL, a C1 control, or an invisible
     /// text-direction control (U+202A–U+202E, U+2066–U+2069).
+    ///
+    /// Not a lone carriage return that is the last byte the chosen reader's line buffer
+    /// holds of its line (byte 199, 299 or 599, or a multiple of 199, 299 or 599, for a
+    /// buffer of 200, 300 or 600 bytes): the reader takes it for the line's end, drops it as
+    /// it would the newline, and reads what follows as a line of its own. The robot neither
+    /// says nor prints it (whether that cut changes what it loads is
+    /// `compat-line-too-long`'s).
     ///
     /// ## Why it matters
     /// Control characters are invisible in most editors. The robot's text-to-speech may
@@ -27,7 +36,9 @@ declare_rule! {
     };
 }
 
-/// Reports the first control character in `span`.
+/// Reports the first control character in `span`, but a lone `\r` where some version's
+/// line buffer cuts the line ([`at_some_cut`]): [`check_at_cuts`] reports those that the
+/// chosen version does not cut at.
 pub fn check(span: Span, text: &str, out: &mut Diagnostics) {
     let value = span.text(text);
     // Fast path: nearly every value is printable ASCII. Folded into a byte without an
@@ -41,13 +52,63 @@ pub fn check(span: Span, text: &str, out: &mut Diagnostics) {
     if !value.as_bytes().chunks(64).any(suspect) {
         return;
     }
-    let Some((offset, ch)) = value
-        .char_indices()
-        .find(|&(_, ch)| (ch.is_control() && ch != '\t') || is_bidi_control(ch))
-    else {
+    let Some(start) = first_control(span, text, |at| at_some_cut(text.as_bytes(), at)) else {
         return;
     };
-    let start = span.start as usize + offset;
+    report(span, start, text, out);
+}
+
+/// Where the first control character of the value at `span` is, but any at an offset that
+/// `passed` passes over.
+fn first_control(span: Span, text: &str, passed: impl Fn(usize) -> bool) -> Option<usize> {
+    span.text(text)
+        .char_indices()
+        .map(|(offset, ch)| (span.start as usize + offset, ch))
+        .find(|&(at, ch)| ((ch.is_control() && ch != '\t') || is_bidi_control(ch)) && !passed(at))
+        .map(|(at, _)| at)
+}
+
+/// Whether the byte at `at` is a lone `\r` where the line buffer of some version of the
+/// reader cuts its line.
+fn at_some_cut(text: &[u8], at: usize) -> bool {
+    Reader::ALL
+        .into_iter()
+        .any(|reader| is_carriage_return_at_a_cut(text, at, reader.line_buffer()))
+}
+
+/// Reports the lone `\r`s that [`check`] passed over and that `reader` does not take for a
+/// line's end: where one is the first control character of its value that `reader` would
+/// say or print.
+pub fn check_at_cuts(text: &str, reader: Reader, out: &mut Diagnostics) {
+    let bytes = text.as_bytes();
+    let buffer = reader.line_buffer();
+    for at in memchr::memchr_iter(b'\r', bytes) {
+        if !at_some_cut(bytes, at) || is_carriage_return_at_a_cut(bytes, at, buffer) {
+            continue;
+        }
+        let line_start = memchr::memrchr(b'\n', &bytes[..at]).map_or(0, |newline| newline + 1);
+        let Some(line) = crate::syntax::lines_from(text, line_start).next() else {
+            continue;
+        };
+        let Body::Entry { args, .. } = line.body else {
+            continue;
+        };
+        let first = first_control(args, text, |at| {
+            is_carriage_return_at_a_cut(bytes, at, buffer)
+        });
+        if first == Some(at) {
+            report(args, at, text, out);
+        }
+    }
+}
+
+/// Reports the control character at `start` in the value at `span`.
+fn report(span: Span, start: usize, text: &str, out: &mut Diagnostics) {
+    let value = span.text(text);
+    let ch = text[start..]
+        .chars()
+        .next()
+        .expect("a character starts there");
     out.push_with(&CONTROL_CHARACTER, || Diagnostic::new(&CONTROL_CHARACTER,
             Span::new(start, start + ch.len_utf8()),
             if is_bidi_control(ch) {
