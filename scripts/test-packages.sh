@@ -103,10 +103,13 @@ bash -c 'source /usr/share/bash-completion/completions/ekb && complete -p ekb' >
   fail "the bash completion does not register for ekb"
 ok "the package installs the bash, zsh and fish completions"
 for file in /usr/include/ekb.h /usr/include/ekb.hpp /usr/include/environmentKnowledgeBaseInterface.h \
+  /usr/include/utilities/environmentKnowledgeBaseInterface.h \
+  /usr/include/behaviorController/environmentKnowledgeBaseInterface.h /usr/share/doc/ekb/library.md \
   /usr/lib/libekb_capi.a /usr/lib/cmake/ekb/ekbConfig.cmake /usr/lib/cmake/ekb/ekbConfigVersion.cmake; do
   [ -s "$file" ] || fail "the package has no $file"
 done
-# A consumer of the loader (SPEC §12) finds the installed package with find_package(ekb).
+# A consumer of the loader (SPEC §12) finds the installed package with find_package(ekb), and
+# compiles the drop-in under its three include spellings.
 cmake -S crates/ekb-capi/tests/consumer -B "$work/consumer" >/dev/null
 grep -q 'ekb_DIR:PATH=/usr/lib/cmake/ekb' "$work/consumer/CMakeCache.txt" ||
   fail "the consumer did not find the installed CMake package"

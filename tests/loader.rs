@@ -230,3 +230,65 @@ fn what_a_finding_quotes_of_the_file_is_escaped() {
         assert!(!all.contains('\0'), "{all}");
     }
 }
+
+#[test]
+fn the_drop_in_string_length_is_the_programs() {
+    // A 335-byte message, under the 2026-04 reader (a 600-byte line buffer): a program
+    // built with the document's STRING_LENGTH 200 is refused it, naming the limit; one
+    // built with the 2026-04 header's 600 loads it whole.
+    let message = "x".repeat(335);
+    let text = std::fs::read_to_string(fixture("check/clean-current.dat"))
+        .unwrap()
+        .replace(
+            "preGestureMessageEnglish      1 Welcome to the robotics lab",
+            &format!("preGestureMessageEnglish      1 {message}"),
+        );
+    assert!(text.contains(&message));
+    let options = |string_length| Options {
+        reader: Some(ekb::robot::Reader::V2026_04),
+        fixed_size_limits: true,
+        string_length,
+        ..isolated()
+    };
+
+    let error = loader::load_bytes("long.dat", text.as_bytes(), &options(200)).unwrap_err();
+    let refused: Vec<&loader::Finding> = error
+        .findings()
+        .iter()
+        .filter(|f| f.severity == Severity::Error)
+        .collect();
+    assert_eq!(refused.len(), 1, "{refused:?}");
+    assert_eq!(refused[0].rule, "drop-in-string-length");
+    assert_eq!((refused[0].line, refused[0].location_id), (4, Some(1)));
+    assert!(
+        refused[0].message.contains("335 bytes")
+            && refused[0].message.contains("at most 199")
+            && refused[0].message.contains("STRING_LENGTH 200"),
+        "{}",
+        refused[0].message
+    );
+    assert_eq!(
+        Options::default().string_length,
+        loader::STRING_LENGTH,
+        "the document's size is the default"
+    );
+
+    let kb = loader::load_bytes("long.dat", text.as_bytes(), &options(600)).unwrap();
+    assert_eq!(
+        kb.location(1).unwrap().pre_gesture_message.english,
+        Some(message.as_str())
+    );
+    // 335 bytes and the NUL need a STRING_LENGTH of 336.
+    let error = loader::load_bytes("long.dat", text.as_bytes(), &options(335)).unwrap_err();
+    assert!(error.findings()[0].message.contains("STRING_LENGTH 335"));
+    assert!(loader::load_bytes("long.dat", text.as_bytes(), &options(336)).is_ok());
+
+    // A size no program has is a clear error, not a check.
+    for absurd in [0, 1, usize::MAX] {
+        let error = loader::load_bytes("long.dat", text.as_bytes(), &options(absurd)).unwrap_err();
+        assert!(
+            matches!(&error, LoadError::Unreadable { reason, .. } if reason.contains(&format!("STRING_LENGTH {absurd} is not a size"))),
+            "{error:?}"
+        );
+    }
+}

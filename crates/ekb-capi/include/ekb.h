@@ -57,11 +57,15 @@ typedef struct ekb_options {
   // `2026-04`); absent (`{NULL, 0}`): as `ekb check` chooses.
   struct ekb_str reader;
   // Refuse a value that the document's fixed-size types cannot hold (a text of
-  // `STRING_LENGTH` bytes or more, a tour of more than 20 stops, more than 2 culture
+  // `string_length` bytes or more, a tour of more than 20 stops, more than 2 culture
   // words): what the drop-in class `Environment::EnvironmentKnowledgeBase` needs.
   bool fixed_size_limits;
   // Ignore the project settings (`ekb.toml`), as `ekb --isolated`.
   bool isolated;
+  // The `STRING_LENGTH` of those types, its NUL included, as the program was compiled
+  // with it (600 for the `2026-04` header); 0: the document's 200. Outside 2 ..= 1048576:
+  // [`EKB_BAD_ARGUMENT`].
+  size_t string_length;
 } ekb_options;
 
 // An open knowledge base (or a refused one, with its findings); 0 is no handle.

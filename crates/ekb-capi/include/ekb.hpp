@@ -11,6 +11,10 @@
 #ifndef EKB_HPP
 #define EKB_HPP
 
+#if (defined(_MSVC_LANG) ? _MSVC_LANG : __cplusplus) < 201703L
+#error "ekb.hpp needs C++17 or later: g++/clang++ -std=c++17; CMake: link ekb::ekb (it asks for cxx_std_17), or set CXX_STANDARD 17"
+#endif
+
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -122,6 +126,9 @@ struct Options {
     bool fixedSizeLimits = false;
     // Ignore the project settings (ekb.toml), as `ekb --isolated`.
     bool isolated = false;
+    // With fixedSizeLimits: the STRING_LENGTH of those types, its NUL included (the
+    // program's: 600 for the 2026-04 header); 0: the document's 200. Else 2 to 1048576.
+    std::size_t stringLength = 0;
 };
 
 namespace detail {
@@ -140,10 +147,14 @@ inline void expect(ekb_status status, const char *call) {
 inline ekb_str str(std::string_view text) { return ekb_str{text.data(), text.size()}; }
 
 inline ekb_options options(const Options &options) {
+    if (options.stringLength == 1 || options.stringLength > (std::size_t(1) << 20))
+        throw std::invalid_argument("ekb::Options::stringLength is " + std::to_string(options.stringLength) +
+                                    ": a STRING_LENGTH is 2 to 1048576 bytes (0: the document's 200)");
     ekb_options out{};
     out.reader = options.reader.empty() ? ekb_str{nullptr, 0} : str(options.reader);
     out.fixed_size_limits = options.fixedSizeLimits;
     out.isolated = options.isolated;
+    out.string_length = options.stringLength;
     return out;
 }
 

@@ -3,18 +3,48 @@
 //
 // A program written for the robot's `Environment::EnvironmentKnowledgeBase` compiles
 // unchanged against this header and links ekb::ekb; what it loads is what `ekb check`
-// validated. The constructor reads the configuration as the robot's class does:
-//   - under ROS (ROS_PACKAGE_NAME defined and <ros/package.h> available):
-//     `ros::package::getPath(ROS_PACKAGE_NAME)/config/environmentKnowledgeBaseConfiguration.ini`,
-//     the knowledge base in the package's data/ folder;
-//   - otherwise the configuration that EKB_CONFIG names, else
-//     config/environmentKnowledgeBaseConfiguration.ini under the current folder.
-// A file with an error is never loaded, in part or whole: the constructor logs every
-// finding (ROS_ERROR/ROS_WARN under ROS, standard error otherwise) with file, line, column
-// and rule, and throws ekb::LoadError, whose what() names the first error. So is a value
-// that the fixed-size types below cannot hold (a text of STRING_LENGTH bytes or more, more
+// validated. It may include it as `environmentKnowledgeBaseInterface.h`,
+// `utilities/environmentKnowledgeBaseInterface.h` (the document's) or
+// `behaviorController/environmentKnowledgeBaseInterface.h` (the robot's): the two others
+// include this one.
+//
+// Where the configuration is. The constructor reads the first of
+//   <root>/config/environmentKnowledgeBaseConfiguration.ini                  (the document's)
+//   <root>/behaviorController/config/environmentKnowledgeBaseConfiguration.ini   (the robot's)
+//   <root>/behaviorController/include/utilities/config/environmentKnowledgeBaseConfiguration.ini
+//                                                                        (the 2026-02 example's)
+// that exists, <root> being the ROS package (under ROS: ROS_PACKAGE_NAME defined and
+// <ros/ros.h> available; ros::package::getPath, else the package on ROS_PACKAGE_PATH), or
+// without ROS the current folder. The knowledge base it names is in the data/ folder beside
+// that config/ folder. EKB_CONFIG, when set, names the configuration instead. When none
+// exists, the file is not loaded, and the message lists every path tried.
+//
+// A refused file. A file with an error is never loaded, in part or whole, and neither is a
+// value the fixed-size types below cannot hold (a text of STRING_LENGTH bytes or more, more
 // than MAX_NUMBER_OF_TOUR_LOCATIONS stops, more than MAX_CULTURE_KEYS culture words): it is
-// never cut. Both dialects (robotLocation, robotLocationPose) load.
+// never cut. The constructor then throws ekb::LoadError (a std::runtime_error; findings()
+// has every finding, what() names the first error) and logs nothing itself:
+//   - a program that catches it has the findings, and logs them as it likes, or with
+//     Environment::EnvironmentKnowledgeBase::report(error), which logs as below;
+//   - a program that does not (the document's, a node holding the object at namespace
+//     scope, constructed before main) does not end with `terminate` and SIGABRT: the
+//     terminate handler the constructor installs logs the findings, errors first, then one
+//     fatal line that names the file and the commands that show and fix it, and ends the
+//     program with exit status 1 (std::_Exit: no static destructor runs on a half-started
+//     program). Under ROS through ROS_ERROR, ROS_WARN and ROS_FATAL, else on standard error:
+//       data/environmentKnowledgeBaseInput.dat:34:1: error[key-case]: ...
+//       data/environmentKnowledgeBaseInput.dat:3:1: warning[...]: ...
+//       the environment knowledge base data/environmentKnowledgeBaseInput.dat was refused
+//       (1 error, 9 warnings): `ekb check data/environmentKnowledgeBaseInput.dat` shows them,
+//       `ekb fix data/environmentKnowledgeBaseInput.dat` fixes what it can
+//     (one line). Any other exception goes on to the terminate handler there was before.
+// Both dialects (robotLocation, robotLocationPose) load.
+//
+// Sizes. STRING_LENGTH, MAX_STRING_LENGTH, MAX_FILENAME_LENGTH and KEY_LENGTH are the
+// document's (200, 200, 200, 100) unless defined before (on the compiler line:
+// -DSTRING_LENGTH=600 for a program built for the 2026-04 header); the loader then refuses
+// a text of STRING_LENGTH bytes or more (rule drop-in-string-length), and loads a shorter
+// one whole. Every file of a program must see the same sizes, as with the document's header.
 //
 // The `2026-03` robot's KeyValueType has `char gestureArm[STRING_LENGTH]` after
 // culturalKnowledge ("left", "right", or "" when the file gives none): define
@@ -26,9 +56,13 @@
 // <math.h> and <ctype.h>, and says `using namespace std;` (define
 // EKB_NO_USING_NAMESPACE_STD to leave it out). The types and the class are in namespace
 // Environment, and also named at global scope (as appendix A shows them), unless
-// EKB_NO_GLOBAL_NAMES is defined.
+// EKB_NO_GLOBAL_NAMES is defined. It needs C++17.
 #ifndef ENVIRONMENT_KNOWLEDGE_BASE_INTERFACE_H
 #define ENVIRONMENT_KNOWLEDGE_BASE_INTERFACE_H
+
+#if (defined(_MSVC_LANG) ? _MSVC_LANG : __cplusplus) < 201703L
+#error "environmentKnowledgeBaseInterface.h (ekb's drop-in) needs C++17 or later: g++ -std=c++17; CMake: link ekb::ekb (it asks for cxx_std_17), or set CXX_STANDARD 17"
+#endif
 
 #include <ctype.h>
 #include <math.h>
@@ -38,6 +72,10 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -51,7 +89,6 @@
 #define EKB_DROP_IN_ROSLIB 1
 #include <ros/package.h>
 #else
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #endif
@@ -68,14 +105,29 @@ using namespace std;
 #ifndef FALSE
 #define FALSE 0
 #endif
+// The document's sizes, unless the program chose its version's (the 2026-04 header:
+// STRING_LENGTH, MAX_STRING_LENGTH and MAX_FILENAME_LENGTH 600, KEY_LENGTH 200).
+#ifndef MAX_STRING_LENGTH
 #define MAX_STRING_LENGTH 200
+#endif
+#ifndef MAX_FILENAME_LENGTH
 #define MAX_FILENAME_LENGTH 200
+#endif
+#ifndef STRING_LENGTH
 #define STRING_LENGTH 200
+#endif
+#ifndef KEY_LENGTH
 #define KEY_LENGTH 100
+#endif
 #define MAX_CULTURE_KEYS 2
 #define NUMBER_OF_CONFIGURATION_KEYS 3
 #define NUMBER_OF_VALUE_KEYS 13
 #define MAX_NUMBER_OF_TOUR_LOCATIONS 20
+
+static_assert(STRING_LENGTH >= 2 && STRING_LENGTH <= 1048576,
+              "STRING_LENGTH is the bytes of a text field, its NUL included: 2 to 1048576 (the document's is 200)");
+static_assert(MAX_FILENAME_LENGTH >= 2 && KEY_LENGTH >= 2 && MAX_STRING_LENGTH >= 2,
+              "MAX_FILENAME_LENGTH, KEY_LENGTH and MAX_STRING_LENGTH are sizes of text fields: 2 or more");
 
 namespace Environment {
 
@@ -127,13 +179,14 @@ typedef struct {
 
 class EnvironmentKnowledgeBase {
 public:
-    // Reads the configuration, then the knowledge base; throws ekb::LoadError (after
-    // logging every finding) if the file has an error or cannot be read.
+    // Reads the configuration, then the knowledge base; throws ekb::LoadError if the file
+    // has an error or cannot be read. Uncaught, it ends the program with the findings and
+    // exit status 1 (see the top of this header).
     EnvironmentKnowledgeBase() {
         try {
             load(ekb::KnowledgeBase::configured(configurationPath(), dropInOptions()));
-        } catch (const ekb::LoadError &error) {
-            report(error);
+        } catch (const ekb::LoadError &) {
+            installTerminateHandler();
             throw;
         }
     }
@@ -190,17 +243,119 @@ public:
         fflush(stdout);
     }
 
+    // Logs what a refused or unreadable file's error says, as an uncaught one ends the
+    // program: every finding, errors first (ROS_ERROR, ROS_WARN, ROS_INFO under ROS,
+    // standard error otherwise), then one fatal line (ROS_FATAL) naming the file and
+    // `ekb check FILE`, `ekb fix FILE`.
+    static void report(const ekb::LoadError &error) {
+        std::vector<const ekb::Finding *> findings;
+        for (const ekb::Finding &finding : error.findings()) findings.push_back(&finding);
+        std::stable_sort(findings.begin(), findings.end(), [](const ekb::Finding *a, const ekb::Finding *b) {
+            return static_cast<int>(a->severity) < static_cast<int>(b->severity);
+        });
+        std::size_t errors = 0, warnings = 0;
+        for (const ekb::Finding *finding : findings) {
+            std::string line = finding->toString();
+            if (finding->help) line += " (help: " + *finding->help + ")";
+            log(finding->severity, line);
+            if (finding->severity == ekb::Severity::error) ++errors;
+            if (finding->severity == ekb::Severity::warning) ++warnings;
+        }
+        std::string fatal;
+        if (findings.empty()) {
+            fatal = std::string("the environment knowledge base was not loaded: ") + error.what();
+        } else {
+            const std::string &file = findings.front()->file;
+            std::string quoted = shellWord(file);
+            fatal = "the environment knowledge base " + file + " was refused (" + count(errors, "error") + ", " +
+                    count(warnings, "warning") + "): `ekb check " + quoted + "` shows them, `ekb fix " + quoted +
+                    "` fixes what it can";
+        }
+#ifdef EKB_DROP_IN_ROS
+        ROS_FATAL("%s", fatal.c_str());
+#else
+        fprintf(stderr, "%s\n", fatal.c_str());
+#endif
+        fflush(stdout);
+        fflush(stderr);
+    }
+
 private:
-    // The configuration the robot's class reads; nullopt: EKB_CONFIG, else the default.
+    // The configuration to read; nullopt: the one EKB_CONFIG names. Throws ekb::LoadError,
+    // naming every path tried, when none of the layouts has one.
     static std::optional<std::string> configurationPath() {
+        const char *named = getenv("EKB_CONFIG");
+        if (named != nullptr && *named != '\0') return std::nullopt;
+        std::string root;
+        std::string where = "under the current folder";
 #ifdef EKB_DROP_IN_ROS
         std::string package = packagePath(ROS_PACKAGE_NAME);
-        if (!package.empty()) return package + "/config/environmentKnowledgeBaseConfiguration.ini";
-        ROS_WARN("package %s not found on ROS_PACKAGE_PATH: reading the configuration that EKB_CONFIG names, "
-                 "else config/environmentKnowledgeBaseConfiguration.ini under the current folder",
-                 ROS_PACKAGE_NAME);
+        if (!package.empty()) {
+            root = package + "/";
+            where = std::string("in the ROS package ") + ROS_PACKAGE_NAME;
+        } else {
+            ROS_WARN("package %s not found on ROS_PACKAGE_PATH: looking for the configuration under the current folder",
+                     ROS_PACKAGE_NAME);
+        }
 #endif
-        return std::nullopt;
+        static const char *const layouts[] = {
+            "config/",                                 // the document's (Figure 2)
+            "behaviorController/config/",              // the robot's
+            "behaviorController/include/utilities/config/",  // the 2026-02 example's
+        };
+        std::string tried;
+        for (const char *layout : layouts) {
+            std::string candidate = root + layout + "environmentKnowledgeBaseConfiguration.ini";
+            std::error_code ignored;
+            if (std::filesystem::exists(candidate, ignored)) return candidate;
+            std::filesystem::path shown = std::filesystem::absolute(candidate, ignored);
+            tried += (tried.empty() ? "" : ", ") + (shown.empty() ? candidate : shown.string());
+        }
+        throw ekb::LoadError("no environmentKnowledgeBaseConfiguration.ini " + where + "; tried " + tried +
+                                 " (EKB_CONFIG, not set, may name one)",
+                             {}, true);
+    }
+
+    static std::string count(std::size_t n, const char *what) {
+        return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+    }
+
+    // `text` as one word of a POSIX shell command.
+    static std::string shellWord(const std::string &text) {
+        bool plain = !text.empty();
+        for (char c : text)
+            if (!isalnum(static_cast<unsigned char>(c)) && strchr("/._-+:@%,=", c) == nullptr) plain = false;
+        if (plain) return text;
+        std::string out = "'";
+        for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        return out + "'";
+    }
+
+    // Ends the program as a refused file should, when nothing catches the LoadError.
+    [[noreturn]] static void onTerminate() {
+        if (std::exception_ptr current = std::current_exception()) {
+            try {
+                std::rethrow_exception(current);
+            } catch (const ekb::LoadError &error) {
+                report(error);
+                std::_Exit(1);
+            } catch (...) {
+            }
+        }
+        if (std::terminate_handler previous = previousTerminateHandler()) previous();
+        std::abort();
+    }
+
+    static std::terminate_handler &previousTerminateHandler() {
+        static std::terminate_handler previous = nullptr;
+        return previous;
+    }
+
+    static void installTerminateHandler() {
+        std::terminate_handler current = std::get_terminate();
+        if (current == &EnvironmentKnowledgeBase::onTerminate) return;
+        previousTerminateHandler() = current;
+        std::set_terminate(&EnvironmentKnowledgeBase::onTerminate);
     }
 
 #ifdef EKB_DROP_IN_ROS
@@ -246,17 +401,8 @@ private:
     static ekb::Options dropInOptions() {
         ekb::Options options;
         options.fixedSizeLimits = true;
+        options.stringLength = STRING_LENGTH;
         return options;
-    }
-
-    // Logs every finding of a refused file, or why it could not be read.
-    static void report(const ekb::LoadError &error) {
-        if (error.findings().empty()) log(ekb::Severity::error, error.what());
-        for (const ekb::Finding &finding : error.findings()) {
-            std::string line = finding.toString();
-            if (finding.help) line += " (help: " + *finding.help + ")";
-            log(finding.severity, line);
-        }
     }
 
     static void log(ekb::Severity severity, const std::string &line) {

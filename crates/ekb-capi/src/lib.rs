@@ -98,11 +98,15 @@ pub struct ekb_options {
     /// `2026-04`); absent (`{NULL, 0}`): as `ekb check` chooses.
     pub reader: ekb_str,
     /// Refuse a value that the document's fixed-size types cannot hold (a text of
-    /// `STRING_LENGTH` bytes or more, a tour of more than 20 stops, more than 2 culture
+    /// `string_length` bytes or more, a tour of more than 20 stops, more than 2 culture
     /// words): what the drop-in class `Environment::EnvironmentKnowledgeBase` needs.
     pub fixed_size_limits: bool,
     /// Ignore the project settings (`ekb.toml`), as `ekb --isolated`.
     pub isolated: bool,
+    /// The `STRING_LENGTH` of those types, its NUL included, as the program was compiled
+    /// with it (600 for the `2026-04` header); 0: the document's 200. Outside 2 ..= 1048576:
+    /// [`EKB_BAD_ARGUMENT`].
+    pub string_length: usize,
 }
 
 /// Where the robot stands: metres, metres, degrees.
@@ -290,9 +294,15 @@ unsafe fn options(options: *const ekb_options) -> Result<Options, ekb_status> {
         None => None,
         Some(name) => Some(Reader::from_name(name).ok_or(EKB_BAD_ARGUMENT)?),
     };
+    let string_length = match options.string_length {
+        0 => loader::STRING_LENGTH,
+        length if loader::STRING_LENGTH_RANGE.contains(&length) => length,
+        _ => return Err(EKB_BAD_ARGUMENT),
+    };
     Ok(Options {
         reader,
         fixed_size_limits: options.fixed_size_limits,
+        string_length,
         settings: if options.isolated {
             Lookup::Isolated
         } else {

@@ -32,6 +32,7 @@ use crate::settings::Lookup;
 use crate::source::SourceFile;
 
 pub use crate::model::{Arm, Language, Phase, Point, Pose};
+pub use fixed_size::{STRING_LENGTH, STRING_LENGTH_RANGE};
 
 /// One location, as `ekb export` writes it (a field absent from the file is `None`), its
 /// texts borrowed from the [`KnowledgeBase`] it is in.
@@ -118,6 +119,10 @@ pub struct Options {
     /// with a finding that names the limit: for the drop-in class, which hands out those
     /// types. Off by default: the library itself has no such limits.
     pub fixed_size_limits: bool,
+    /// The `STRING_LENGTH` of those types, its NUL included: the program's (the document's
+    /// 200 by default; 600 in the `2026-04` header). One outside
+    /// [`STRING_LENGTH_RANGE`] makes the load unreadable.
+    pub string_length: usize,
 }
 
 impl Default for Options {
@@ -127,6 +132,7 @@ impl Default for Options {
             dialect: None,
             settings: Lookup::Discover,
             fixed_size_limits: false,
+            string_length: fixed_size::STRING_LENGTH,
         }
     }
 }
@@ -396,6 +402,18 @@ pub fn load_configured(
     };
     let named = config.unwrap_or(Path::new(crate::config::DEFAULT_PATH));
     let config = Config::discover(config).map_err(|error| unreadable(named, error.0))?;
+    if config.path.is_none() {
+        // In the library's words: a program has no `--config` and no FILE to give.
+        let tried = std::path::absolute(named).unwrap_or_else(|_| named.to_path_buf());
+        return Err(unreadable(
+            named,
+            format!(
+                "no configuration found: {} is not set, and there is no {}",
+                crate::config::ENV_VAR,
+                tried.display()
+            ),
+        ));
+    }
     let file: PathBuf = config
         .knowledge_base()
         .map_err(|error| unreadable(config.path.as_deref().unwrap_or(named), error.0))?
@@ -423,6 +441,19 @@ fn with_checked<T>(
     options: &Options,
     then: impl FnOnce(&Checked<'_>) -> T,
 ) -> Result<T, LoadError> {
+    if options.fixed_size_limits
+        && !fixed_size::STRING_LENGTH_RANGE.contains(&options.string_length)
+    {
+        return Err(LoadError::Unreadable {
+            file: path.display().to_string(),
+            reason: format!(
+                "STRING_LENGTH {} is not a size for a text field: it is {} to {} bytes",
+                options.string_length,
+                fixed_size::STRING_LENGTH_RANGE.start(),
+                fixed_size::STRING_LENGTH_RANGE.end()
+            ),
+        });
+    }
     let settings = options
         .settings
         .settings_for(path)
@@ -441,7 +472,9 @@ fn with_checked<T>(
     let rules = settings.rules_for(path, &Default::default());
     let mut checked = check_with(source, &build_options, &rules);
     if options.fixed_size_limits {
-        checked.diagnostics.extend(fixed_size::check(&checked.kb));
+        checked
+            .diagnostics
+            .extend(fixed_size::check(&checked.kb, options.string_length));
         checked
             .diagnostics
             .sort_by_key(|diagnostic| diagnostic.span.start);

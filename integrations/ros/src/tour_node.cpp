@@ -2,7 +2,10 @@
 // through the document's class (here ekb's drop-in), and logs the tour with its English
 // messages. It needs no roscore: it only logs.
 //
-// A file with an error is refused: the class logs every finding, and the node exits 1.
+// A file with an error is refused: the node catches the ekb::LoadError, logs its findings
+// as the class does when nothing catches it (errors first, then a fatal line naming the
+// file), and exits 1. (A node that catches nothing ends the same way: see
+// crates/ekb-capi/tests/cssr_system.)
 #include <ros/ros.h>
 
 #include "environmentKnowledgeBaseInterface.h"
@@ -29,7 +32,7 @@ int main(int argc, char **argv) {
                      location.postGestureMessageEnglish);
         }
     } catch (const ekb::LoadError &error) {
-        ROS_FATAL("the environment knowledge base was refused: %s", error.what());
+        Environment::EnvironmentKnowledgeBase::report(error);
         return 1;
     }
     return 0;

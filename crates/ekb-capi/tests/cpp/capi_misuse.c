@@ -74,6 +74,25 @@ int main(int argc, char **argv) {
         }
         expect(ekb_free(missing), EKB_OK, "free");
     }
+    {
+        /* The drop-in's STRING_LENGTH: 0 is the document's 200, 2 ..= 1048576 a size, the
+           rest a bad argument (a field of 1 byte holds no text; 2^62 bytes no program has). */
+        ekb_options options;
+        memset(&options, 0, sizeof options);
+        options.fixed_size_limits = true;
+        options.string_length = 1;
+        expect(ekb_open_path(clean, strlen(clean), &options, &missing), EKB_BAD_ARGUMENT, "a STRING_LENGTH of 1");
+        options.string_length = (size_t)1 << 62;
+        expect(ekb_open_path(clean, strlen(clean), &options, &missing), EKB_BAD_ARGUMENT, "a STRING_LENGTH of 2^62");
+        options.string_length = (size_t)-1;
+        expect(ekb_open_path(clean, strlen(clean), &options, &missing), EKB_BAD_ARGUMENT, "a STRING_LENGTH of SIZE_MAX");
+        options.string_length = 0;
+        expect(ekb_open_path(clean, strlen(clean), &options, &missing), EKB_OK, "the document's STRING_LENGTH");
+        expect(ekb_free(missing), EKB_OK, "free");
+        options.string_length = 600;
+        expect(ekb_open_path(clean, strlen(clean), &options, &missing), EKB_OK, "the 2026-04 STRING_LENGTH");
+        expect(ekb_free(missing), EKB_OK, "free");
+    }
     expect(ekb_open_buffer("empty.dat", 9, NULL, 0, NULL, &missing), EKB_REFUSED, "an empty buffer has no tour");
     expect(ekb_free(missing), EKB_OK, "free the empty buffer's handle");
 

@@ -4,6 +4,9 @@
 //! `KeyValueType` and `TourSpecificationType`: texts in `char[STRING_LENGTH]`, at most
 //! `MAX_NUMBER_OF_TOUR_LOCATIONS` stops, at most `MAX_CULTURE_KEYS` culture words. A value
 //! they cannot hold is refused with a finding that names the limit, never cut (SPEC §12).
+//! `STRING_LENGTH` is the one the program was compiled with
+//! ([`Options::string_length`](super::Options), the document's 200 by default): 600 for a
+//! program built for the `2026-04` header.
 //! The library's own API has no such limits, so these are not rules of `ekb check`: only
 //! a load with [`Options::fixed_size_limits`](super::Options) adds them.
 //!
@@ -15,8 +18,12 @@ use crate::diagnostic::Diagnostic;
 use crate::model::{KnowledgeBase, Language, Phase, Value};
 use crate::rules::declare_rule;
 
-/// `STRING_LENGTH`: a text field's bytes, its terminating NUL included.
+/// The document's `STRING_LENGTH`: a text field's bytes, its terminating NUL included (the
+/// default of [`Options::string_length`](super::Options)).
 pub const STRING_LENGTH: usize = 200;
+/// The smallest and the largest `STRING_LENGTH` a load accepts: a field holds one byte and
+/// its NUL at least, and no knowledge base has a text of a mebibyte.
+pub const STRING_LENGTH_RANGE: std::ops::RangeInclusive<usize> = 2..=1 << 20;
 /// `MAX_NUMBER_OF_TOUR_LOCATIONS`.
 pub const MAX_NUMBER_OF_TOUR_LOCATIONS: usize = 20;
 /// `MAX_CULTURE_KEYS`.
@@ -24,11 +31,12 @@ pub const MAX_CULTURE_KEYS: usize = 2;
 
 declare_rule! {
     /// ## What it does
-    /// Refuses, in the drop-in class, a text of `STRING_LENGTH` (200) bytes or more.
+    /// Refuses, in the drop-in class, a text of `STRING_LENGTH` bytes or more (200 in the
+    /// document, 600 in the `2026-04` header: the program's own).
     ///
     /// ## Why it matters
-    /// The document's `KeyValueType` holds each text in `char[200]`, its NUL included:
-    /// a longer text would be cut.
+    /// The document's `KeyValueType` holds each text in `char[STRING_LENGTH]`, its NUL
+    /// included: a longer text would be cut.
     pub static DROP_IN_STRING_LENGTH = {
         name: "drop-in-string-length",
         category: Compat,
@@ -69,8 +77,9 @@ declare_rule! {
     };
 }
 
-/// A finding for every value of `kb` that the document's types cannot hold.
-pub fn check(kb: &KnowledgeBase<'_>) -> Vec<Diagnostic> {
+/// A finding for every value of `kb` that the document's types cannot hold, their texts
+/// `char[string_length]`.
+pub fn check(kb: &KnowledgeBase<'_>, string_length: usize) -> Vec<Diagnostic> {
     let mut out = Vec::new();
     for location in kb.locations().iter() {
         let messages = Phase::ALL.into_iter().flat_map(|phase| {
@@ -80,15 +89,15 @@ pub fn check(kb: &KnowledgeBase<'_>) -> Vec<Diagnostic> {
         });
         let texts = std::iter::once(location.description()).chain(messages);
         for Value { value, span } in texts.flatten() {
-            if value.len() >= STRING_LENGTH {
+            if value.len() >= string_length {
                 out.push(
                     Diagnostic::new(
                         &DROP_IN_STRING_LENGTH,
                         span,
                         format!(
-                            "this text is {} bytes, but the document's class holds at most {} (STRING_LENGTH {STRING_LENGTH}, with its NUL): it would be cut",
+                            "this text is {} bytes, but the document's class holds at most {} (STRING_LENGTH {string_length}, with its NUL): it would be cut",
                             value.len(),
-                            STRING_LENGTH - 1
+                            string_length - 1
                         ),
                     )
                     .at_location(Some(location.id))
