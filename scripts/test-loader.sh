@@ -230,7 +230,7 @@ while read -r name; do
     && cmake --build "$snippets/$name/build"; } >"$work/snippets.log" 2>&1 \
     || { cat "$snippets/$name/CMakeLists.txt" "$work/snippets.log"; fail "a CMake snippet of docs/library.md does not build"; }
 done <"$snippets/cmake.list"
-rm -rf "$work/prefix" "$snippets"
+rm -rf "$snippets"
 
 step "a catkin workspace with the example node"
 ws=$work/catkin_ws
@@ -263,13 +263,13 @@ grep -q 'Stop 2: location 4, Roomba, .*"This is the Roomba" ... "We use it for t
 
 step "the package cssr_system: the robot's layout, a global object, nothing caught"
 cssr=$ws/src/cssr_system
-run_cssr() {
-  local status=0
+run_cssr() { # [the workspace, else $ws]
+  local status=0 space=${1:-$ws}
   (
     set +u
     # shellcheck disable=SC1091
-    source "$ws/devel/setup.bash"
-    cd "$work" && "$ws/devel/lib/cssr_system/behaviorController"
+    source "$space/devel/setup.bash"
+    cd "$work" && "$space/devel/lib/cssr_system/behaviorController"
   ) >"$work/cssr.raw" 2>&1 || status=$?
   sed 's/\x1b\[[0-9;]*m//g' "$work/cssr.raw" >"$work/cssr.out" # rosconsole's colours
   return "$status"
@@ -298,6 +298,20 @@ status=0
 run_cssr || status=$?
 expect_no_configuration "cssr_system" "$(cd "$cssr" && pwd -P)" "$work/cssr.out" "$status"
 grep -q 'in the ROS package cssr_system' "$work/cssr.out" || { cat "$work/cssr.out"; fail "cssr_system: the package not named"; }
+
+step "the package cssr_system alone in a workspace, on the installed CMake package"
+rws=$work/robot_ws
+mkdir -p "$rws/src"
+cp -rL crates/ekb-capi/tests/cssr_system "$rws/src/cssr_system"
+(cd "$rws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -Dekb_DIR="$work/prefix/lib/cmake/ekb" \
+  >"$work/robot_ws.log" 2>&1) || { tail -40 "$work/robot_ws.log"; fail "catkin_make of cssr_system alone failed"; }
+grep -q "^ekb_DIR:PATH=$work/prefix/lib/cmake/ekb$" "$rws/build/CMakeCache.txt" \
+  || fail "cssr_system did not find the installed package"
+status=0
+run_cssr "$rws" || status=$?
+expect_refused_seed "cssr_system on the installed package" "$work/cssr.out" "$status"
+rm -rf "$work/prefix" "$rws"
+
 if [ -n "${EKB_LOADER_LOGS:-}" ]; then # where to keep the logs of the seed file, to read
   mkdir -p "$EKB_LOADER_LOGS"
   cp "$work/cssr-seed.log" "$work/document-example.log" "$EKB_LOADER_LOGS/"
