@@ -305,8 +305,8 @@ mkdir -p "$rws/src"
 cp -rL crates/ekb-capi/tests/cssr_system "$rws/src/cssr_system"
 (cd "$rws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -Dekb_DIR="$work/prefix/lib/cmake/ekb" \
   >"$work/robot_ws.log" 2>&1) || { tail -40 "$work/robot_ws.log"; fail "catkin_make of cssr_system alone failed"; }
-grep -q "^ekb_DIR:PATH=$work/prefix/lib/cmake/ekb$" "$rws/build/CMakeCache.txt" \
-  || fail "cssr_system did not find the installed package"
+grep -rqF "$work/prefix/lib/libekb_capi.a" "$rws/build/cssr_system/CMakeFiles/behaviorController.dir/link.txt" \
+  || fail "cssr_system was not linked with the installed library"
 status=0
 run_cssr "$rws" || status=$?
 expect_refused_seed "cssr_system on the installed package" "$work/cssr.out" "$status"
