@@ -1,5 +1,9 @@
 //! `ekb`: author and validate the environment knowledge base of a tour-guide robot.
 //!
+//! The layers up to the loader's front door are the core's (`ekb-core`, which the C ABI and
+//! the Python module link alone), re-exported here at the same paths; the renderers, the
+//! rewriting commands, the language server and the command line are this crate's.
+//!
 //! The layers, from the bytes up (ARCHITECTURE.md's code map numbers them, and a test
 //! keeps every import pointing down it):
 //! - [`source`]: a file read from disk (always valid UTF-8 text, invalid bytes recorded;
