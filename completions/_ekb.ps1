@@ -73,6 +73,7 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('--settings', '--settings', [CompletionResultType]::ParameterName, 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file''s folder or above')
             [CompletionResult]::new('--deny-warnings', '--deny-warnings', [CompletionResultType]::ParameterName, 'Exit 1 on warnings too')
             [CompletionResult]::new('--statistics', '--statistics', [CompletionResultType]::ParameterName, 'Instead of the findings, one line per rule: its count, and whether `ekb fix` can fix it, the most frequent first')
+            [CompletionResult]::new('--show-all', '--show-all', [CompletionResultType]::ParameterName, 'Draw every finding in full: without it, a rule with more than three warnings in a file is one paragraph (its count, its lines, the first message)')
             [CompletionResult]::new('--exit-zero', '--exit-zero', [CompletionResultType]::ParameterName, 'Exit 0 even when there are findings (2 still means ekb could not do its job)')
             [CompletionResult]::new('--add-ignore', '--add-ignore', [CompletionResultType]::ParameterName, 'Write a `# ekb: ignore[RULE]` comment above every line with findings, so that the files check clean (to adopt ekb on an existing file); run again, it adds nothing')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')

@@ -212,7 +212,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__check)
-            opts="-v -q -h -V --format --deny-warnings --select --extend-select --ignore --level --statistics --exit-zero --output-file --add-ignore --map-config --map-image --map-size --config --color --verbose --reader --quiet --settings --isolated --help --version"
+            opts="-v -q -h -V --format --deny-warnings --select --extend-select --ignore --level --statistics --show-all --exit-zero --output-file --add-ignore --map-config --map-image --map-size --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0

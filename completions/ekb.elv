@@ -69,6 +69,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand --settings 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file''s folder or above'
             cand --deny-warnings 'Exit 1 on warnings too'
             cand --statistics 'Instead of the findings, one line per rule: its count, and whether `ekb fix` can fix it, the most frequent first'
+            cand --show-all 'Draw every finding in full: without it, a rule with more than three warnings in a file is one paragraph (its count, its lines, the first message)'
             cand --exit-zero 'Exit 0 even when there are findings (2 still means ekb could not do its job)'
             cand --add-ignore 'Write a `# ekb: ignore[RULE]` comment above every line with findings, so that the files check clean (to adopt ekb on an existing file); run again, it adds nothing'
             cand -v 'Print what is read, as it is read, on standard error'

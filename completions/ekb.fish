@@ -87,6 +87,7 @@ complete -c ekb -n "__fish_ekb_using_subcommand check" -l reader -d 'The version
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l deny-warnings -d 'Exit 1 on warnings too'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l statistics -d 'Instead of the findings, one line per rule: its count, and whether `ekb fix` can fix it, the most frequent first'
+complete -c ekb -n "__fish_ekb_using_subcommand check" -l show-all -d 'Draw every finding in full: without it, a rule with more than three warnings in a file is one paragraph (its count, its lines, the first message)'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l exit-zero -d 'Exit 0 even when there are findings (2 still means ekb could not do its job)'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l add-ignore -d 'Write a `# ekb: ignore[RULE]` comment above every line with findings, so that the files check clean (to adopt ekb on an existing file); run again, it adds nothing'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -s v -l verbose -d 'Print what is read, as it is read, on standard error'

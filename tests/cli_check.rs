@@ -5,6 +5,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use assert_cmd::Command;
+use ekb::robot::Reader;
 use serde_json::{json, Value};
 
 fn fixtures() -> PathBuf {
@@ -101,7 +102,11 @@ fn clean_files_of_both_dialects_exit_0() {
         assert_eq!(run.stderr, "");
         let run = run_human(file);
         assert_eq!(run.code, 0);
-        assert_eq!(run.stdout, expected);
+        let words = Reader::from_name(reader).unwrap().in_words();
+        assert_eq!(
+            run.stdout,
+            format!("No problems found; as the robot's software {words} reads it ({reader})\n")
+        );
     }
 }
 
@@ -440,31 +445,65 @@ fn sarif_names_standard_input_stdin_as_a_uri_reference() {
 
 #[test]
 fn human_is_the_default_and_says_what_to_change() {
-    let run = run_human("seed.dat");
-    assert_eq!(run.code, 1);
-    let out = &run.stdout;
+    let checked = run(ekb()
+        .env("COLUMNS", "100")
+        .args(["--color", "never", "check", "seed.dat"]));
+    assert_eq!(checked.code, 1);
+    let out = &checked.stdout;
+    // The cause first: the key-case error, then what it causes, right under it.
+    assert!(out.starts_with("error[key-case]\n"), "{out}");
     for expected in [
-        "error[key-case]",
         "× `postGestureMessageenglish` is `postGestureMessageEnglish` in the wrong case",
         "╭─[seed.dat:34:1]",
         " 34 │ postGestureMessageenglish     4 We use it for teaching mobile robotics",
         "╰── rename to `postGestureMessageEnglish`",
         "help: write the key as `postGestureMessageEnglish`",
-        "fix available: rename to `postGestureMessageEnglish` (run `ekb fix`)",
-        "warning[repeated-word]",
-        "error[missing-field]",
+        "fix available: rename to `postGestureMessageEnglish` (run `ekb fix`)\n\n\
+         error[missing-field]: location 4 has no `postGestureMessageEnglish`: location 4 will say \
+         nothing\n  after the gesture in English\n  \
+         at seed.dat:28:1, because of the key-case error above\n",
         // One typo, and the two findings agree on its one fix.
-        "help: the file has a line of `postGestureMessageEnglish` with the key in the wrong",
+        "help: the line of `postGestureMessageEnglish` is there, its key in the wrong case:",
+        "warning[repeated-word]",
+        // A rule's many warnings: one paragraph, and the command that shows them all.
+        "\nwarning[untranslated-message]: 20 findings, on lines 5, 6, 8, 9, 14, 15, 17, 18, 23, 24 \
+         and 10 more\n",
+        "\n  see all: ekb check --show-all --select untranslated-message seed.dat\n",
     ] {
         assert!(out.contains(expected), "missing {expected:?} in\n{out}");
     }
-    assert_eq!(out.matches("warning[untranslated-message]").count(), 20);
-    // The summary leads with what matters: each severity, broken down by rule.
-    assert!(out.ends_with(
-        "\nFound 2 errors: key-case, missing-field · 21 warnings: 20 untranslated-message, \
-         1 repeated-word (1 fixable with ekb fix: key-case), checked against reader d5.4.2\n"
-    ));
-    assert_eq!(run.stderr, "");
+    assert!(out.rfind("error[") < out.find("warning["), "{out}");
+    // In sight: with the command above it and the prompt below, all of it fits a terminal
+    // of 100 × 40.
+    assert!(
+        out.lines().count() <= 38,
+        "{} lines:\n{out}",
+        out.lines().count()
+    );
+    // The summary leads with what matters, each severity broken down by rule, and wraps
+    // between words.
+    let summary = &out[out.rfind("\n\nFound").unwrap() + 2..];
+    assert!(
+        summary.lines().all(|line| line.chars().count() <= 100),
+        "{summary}"
+    );
+    assert_eq!(
+        summary.split_whitespace().collect::<Vec<_>>().join(" "),
+        "Found 2 errors: key-case, missing-field · 21 warnings: 20 untranslated-message, \
+         1 repeated-word (1 fixable with ekb fix: key-case); as the robot's software of \
+         document D5.4.2 reads it (d5.4.2)"
+    );
+    assert_eq!(checked.stderr, "");
+
+    // Every finding drawn when asked for.
+    let all = run(ekb().args(["--color", "never", "check", "--show-all", "seed.dat"]));
+    assert_eq!(
+        all.stdout
+            .matches("warning[untranslated-message]\n")
+            .count(),
+        20
+    );
+    assert!(!all.stdout.contains("see all"));
 }
 
 #[test]
@@ -807,9 +846,15 @@ fn each_format_says_which_reader_it_checked_against() {
         json!({ "clean-current.dat": "2025-06", "seed.dat": "d5.4.2" })
     );
     let human = run(ekb().args(["check", "seed.dat", "clean-current.dat"]));
+    // Wrapped between words.
+    let words = human
+        .stdout
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
     assert!(
-        human.stdout.ends_with(
-            "checked against readers 2025-06 for clean-current.dat, d5.4.2 for seed.dat\n"
+        words.ends_with(
+            "; as the robot's software reads it: 2025-06 for clean-current.dat, d5.4.2 for seed.dat"
         ),
         "{}",
         human.stdout

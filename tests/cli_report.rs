@@ -131,6 +131,26 @@ fn the_page_lists_every_location_and_every_finding() {
 }
 
 #[test]
+fn the_table_lists_errors_first_each_cause_before_what_it_causes() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, page) = report(dir.path(), SEED, &[]);
+    let table = &page[page.find("<table class=\"findings\">").unwrap()..];
+    let rules: Vec<&str> = table
+        .split("<td><code>")
+        .skip(1)
+        .map(|row| &row[..row.find("</code>").unwrap()])
+        .collect();
+    assert_eq!(
+        rules[..3],
+        ["key-case", "missing-field", "repeated-word"],
+        "{rules:?}"
+    );
+    assert!(
+        table.contains("<caption>Every finding: errors first, each after what causes it</caption>")
+    );
+}
+
+#[test]
 fn copies_of_the_english_and_failing_translations_are_marked() {
     let dir = tempfile::tempdir().unwrap();
     let (_, page) = report(

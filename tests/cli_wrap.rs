@@ -45,7 +45,10 @@ fn setup() -> tempfile::TempDir {
 #[test]
 fn wraps_at_100_columns_when_not_a_terminal() {
     let dir = setup();
-    let output = ekb(dir.path()).args(["check", "kb.dat"]).output().unwrap();
+    let output = ekb(dir.path())
+        .args(["check", "--show-all", "kb.dat"])
+        .output()
+        .unwrap();
     let report = String::from_utf8(output.stdout).unwrap();
     let lines = wrapping_lines(&report);
     assert!(lines.len() > 8, "{report}");
@@ -57,12 +60,41 @@ fn wraps_at_columns_when_set() {
     let dir = setup();
     let output = ekb(dir.path())
         .env("COLUMNS", "60")
-        .args(["check", "kb.dat"])
+        .args(["check", "--show-all", "kb.dat"])
         .output()
         .unwrap();
     let report = String::from_utf8(output.stdout).unwrap();
     let lines = wrapping_lines(&report);
     assert!((50..=60).contains(&widest(&lines)), "{report}");
+}
+
+#[test]
+fn a_grouped_rule_and_the_summary_wrap_between_words() {
+    let dir = setup();
+    let output = ekb(dir.path())
+        .env("COLUMNS", "60")
+        .args(["check", "kb.dat"])
+        .output()
+        .unwrap();
+    let report = String::from_utf8(output.stdout).unwrap();
+    // Four placeholders, one paragraph; nothing of the file drawn, so every line wraps.
+    assert!(report.starts_with("warning[untranslated-message]: 4 findings, on lines"));
+    let lines: Vec<&str> = report.lines().collect();
+    assert!((50..=60).contains(&widest(&lines)), "{report}");
+    let summary = &report[report.find("\nFound").unwrap() + 1..];
+    assert_eq!(
+        summary.split_whitespace().collect::<Vec<_>>().join(" "),
+        "Found 4 warnings: 4 untranslated-message; as the robot's software of document D5.4.2 \
+         reads it (d5.4.2)"
+    );
+    // Between words: each line but the first starts with the indent, then a word.
+    assert!(
+        summary
+            .lines()
+            .skip(1)
+            .all(|line| line.starts_with("  ") && !line[2..].starts_with(' ')),
+        "{summary}"
+    );
 }
 
 #[test]
@@ -75,7 +107,7 @@ fn wraps_at_the_terminals_width() {
     let dir = setup();
     let ekb = assert_cmd::cargo::cargo_bin("ekb");
     let shell = format!(
-        "stty rows 40 cols 70; {} --color never check kb.dat",
+        "stty rows 40 cols 70; {} --color never check --show-all kb.dat",
         ekb.display()
     );
     let output = Process::new("script")

@@ -88,7 +88,22 @@ fn a_file_with_an_error_is_refused_with_the_findings_of_ekb_check() {
         .iter()
         .map(|f| (f.rule.to_string(), u64::from(f.line), u64::from(f.column)))
         .collect();
-    assert_eq!(got, expected);
+    // The findings of `ekb check`, in reading order: errors first, the key-case error (the
+    // cause) before the missing field it causes, then the warnings in the file's order.
+    let mut sorted = got.clone();
+    sorted.sort_by_key(|(_, line, column)| (*line, *column));
+    assert_eq!(sorted, expected);
+    assert_eq!(
+        got[..3]
+            .iter()
+            .map(|(rule, line, _)| (rule.as_str(), *line))
+            .collect::<Vec<_>>(),
+        [
+            ("key-case", 34),
+            ("missing-field", 28),
+            ("repeated-word", 4)
+        ]
+    );
     let key_case = findings.iter().find(|f| f.rule == "key-case").unwrap();
     assert_eq!((key_case.line, key_case.severity), (34, Severity::Error));
     // The one-line reason names the first error, with its place.

@@ -41,6 +41,11 @@ pub struct Args {
     #[arg(long, conflicts_with = "add_ignore")]
     pub statistics: bool,
 
+    /// Draw every finding in full: without it, a rule with more than three warnings in a
+    /// file is one paragraph (its count, its lines, the first message)
+    #[arg(long)]
+    pub show_all: bool,
+
     /// Exit 0 even when there are findings (2 still means ekb could not do its job)
     #[arg(long)]
     pub exit_zero: bool,
@@ -133,6 +138,7 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
             exit_zero: args.exit_zero,
             level: args.level,
             statistics: args.statistics,
+            show_all: args.show_all,
             output_file: args.output_file.as_deref(),
         };
         report(checked, &shown, context)?
@@ -148,6 +154,7 @@ pub struct Shown<'a> {
     pub exit_zero: bool,
     pub level: Option<Severity>,
     pub statistics: bool,
+    pub show_all: bool,
     pub output_file: Option<&'a Path>,
 }
 
@@ -182,6 +189,7 @@ pub fn report(mut checked: Vec<Checked<'_>>, shown: &Shown, context: &Context) -
         color: to_file.is_none() && context.color_stdout(),
         quiet: context.quiet,
         width: render::stdout_width(),
+        show_all: shown.show_all,
     };
     let render = |out: &mut dyn Write| {
         if shown.statistics {

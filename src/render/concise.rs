@@ -25,7 +25,12 @@ pub fn render(
         )?;
     }
     if !options.quiet {
-        writeln!(out, "{}{}", summary.sentence(), super::reader_note(reports))?;
+        writeln!(
+            out,
+            "{}{}",
+            summary.sentence(),
+            super::reader_note(reports, false)
+        )?;
     }
     Ok(())
 }

@@ -21,7 +21,7 @@ use miette::{
 
 use super::escape::{escape, escape_lines};
 use super::located::{Locator, Mark};
-use super::{FileReport, LocatedDiagnostic, RenderOptions};
+use super::{compact, FileReport, LocatedDiagnostic, RenderOptions};
 use crate::check::Summary;
 use crate::diagnostic::{Applicability, Severity};
 use crate::source::Position;
@@ -45,37 +45,61 @@ pub fn render(
     options: &RenderOptions,
 ) -> io::Result<()> {
     let handlers = Handlers::new(options.color, options.width);
-    // A person reads from the top: every file's errors first, then the other findings,
-    // each in line order.
+    let in_order: Vec<Vec<&LocatedDiagnostic>> =
+        reports.iter().map(FileReport::in_reading_order).collect();
+    // A person reads from the top: every file's errors first, then the other findings, in
+    // reading order; a rule's many warnings are one line each, after the findings drawn.
     for errors_pass in [true, false] {
-        for report in reports.iter().filter(|r| !r.diagnostics.is_empty()) {
-            let mut part = report
-                .diagnostics
+        for (report, findings) in reports.iter().zip(&in_order) {
+            let part: Vec<&LocatedDiagnostic> = findings
                 .iter()
+                .copied()
                 .filter(|d| (d.severity == Severity::Error) == errors_pass)
-                .peekable();
-            if part.peek().is_none() {
+                .collect();
+            if part.is_empty() {
                 continue;
             }
+            let groups = match options.show_all {
+                true => Vec::new(),
+                false => compact::groups(report, &part),
+            };
+            let drawn: Vec<&LocatedDiagnostic> = part
+                .into_iter()
+                .filter(|d| !groups.iter().any(|group| group.rule == d.rule))
+                .collect();
             let source = Source::new(report.checked.source.name(), report.checked.source.text());
-            draw_in_order(&source, part, &handlers, out)?;
+            // A consequence right after its cause is a short paragraph under it.
+            let mut run = Vec::new();
+            for (index, &finding) in drawn.iter().enumerate() {
+                let after_cause = index > 0 && compact::follows(finding, drawn[index - 1]);
+                if !after_cause {
+                    run.push(finding);
+                    continue;
+                }
+                draw_in_order(&source, run.drain(..), &handlers, out)?;
+                writeln!(out, "{}\n", compact::consequence(finding, options.width))?;
+            }
+            draw_in_order(&source, run.into_iter(), &handlers, out)?;
+            for group in &groups {
+                writeln!(out, "{}\n", group.paragraph(options.width))?;
+            }
         }
     }
     if !options.quiet {
-        writeln!(
-            out,
+        let summary = format!(
             "{}{}",
             summary.breakdown(),
-            super::reader_note(reports)
-        )?;
+            super::reader_note(reports, true)
+        );
+        writeln!(out, "{}", compact::wrapped(&summary, options.width, ""))?;
     }
     Ok(())
 }
 
-/// Draws `diagnostics`, in the order of the file, of `source`.
-fn draw_in_order<'d>(
+/// Draws `diagnostics` of `source`, in the order given.
+fn draw_in_order<'d, 'r: 'd>(
     source: &Source<'_>,
-    diagnostics: impl Iterator<Item = &'d LocatedDiagnostic<'d>>,
+    diagnostics: impl Iterator<Item = &'d LocatedDiagnostic<'r>>,
     handlers: &Handlers,
     out: &mut dyn Write,
 ) -> io::Result<()> {
@@ -616,19 +640,97 @@ mod tests {
     /// The width the tests draw at: that of output that is not a terminal.
     const WIDTH: usize = crate::render::DEFAULT_WIDTH;
 
+    /// The findings of `text`, every one drawn (`--show-all`): the tests of drawing.
     fn human(name: &str, text: &str) -> String {
+        let every_one = RenderOptions {
+            show_all: true,
+            ..RenderOptions::default()
+        };
+        human_with(name, text, &every_one)
+    }
+
+    fn human_with(name: &str, text: &str, options: &RenderOptions) -> String {
         let source = SourceFile::from_bytes(name, text.as_bytes().to_vec());
         let checked = check(&source, &Options::default());
         let report = FileReport::new(&checked);
         let mut out = Vec::new();
-        render(
-            &[report],
-            &checked.summary(),
-            &mut out,
-            &RenderOptions::default(),
-        )
-        .unwrap();
+        render(&[report], &checked.summary(), &mut out, options).unwrap();
         String::from_utf8(out).unwrap()
+    }
+
+    /// Four placeholders in isiZulu at location `id`, and its other fields.
+    fn untranslated_location(id: u32) -> String {
+        let mut text = format!(
+            "robotLocationDescription {id} Roomba\nrobotLocation {id} 1.0 2.0 90\n\
+             gestureTarget {id} 1.0 2.0 0.5\n"
+        );
+        for phase in ["pre", "post"] {
+            text.push_str(&format!("{phase}GestureMessageEnglish {id} Hello there\n"));
+            text.push_str(&format!(
+                "{phase}GestureMessageIsiZulu {id} No message in isiZulu\n"
+            ));
+            text.push_str(&format!(
+                "{phase}GestureMessageKinyarwanda {id} Muraho neza\n"
+            ));
+        }
+        text
+    }
+
+    #[test]
+    fn a_rules_many_warnings_are_one_paragraph_unless_all_are_asked_for() {
+        // Two locations: four placeholders, grouped; one: two, each drawn.
+        let text = format!(
+            "{}{}tourSpecification 2 1 2\n",
+            untranslated_location(1),
+            untranslated_location(2)
+        );
+        let grouped = human_with("kb.dat", &text, &RenderOptions::default());
+        assert_eq!(
+            grouped.matches("warning[untranslated-message]").count(),
+            1,
+            "{grouped}"
+        );
+        assert!(
+            grouped.starts_with(
+                "warning[untranslated-message]: 4 findings, on lines 5, 8, 14, 17\n  the first: "
+            ),
+            "{grouped}"
+        );
+        assert!(
+            grouped.contains(
+                "\n  see all: ekb check --show-all --select untranslated-message kb.dat\n"
+            ),
+            "{grouped}"
+        );
+        assert!(!grouped.contains("╭─["), "{grouped}");
+        let every_one = human("kb.dat", &text);
+        assert_eq!(
+            every_one.matches("warning[untranslated-message]").count(),
+            4
+        );
+
+        let near_miss = format!("{}tourSpecification 1 1\n", untranslated_location(1));
+        let drawn = human_with("kb.dat", &near_miss, &RenderOptions::default());
+        assert_eq!(
+            drawn.matches("warning[untranslated-message]\n").count(),
+            2,
+            "{drawn}"
+        );
+        assert!(!drawn.contains("see all"), "{drawn}");
+    }
+
+    #[test]
+    fn a_grouped_rule_names_a_file_the_shell_reads_as_one_word() {
+        let text = format!(
+            "{}{}tourSpecification 2 1 2\n",
+            untranslated_location(1),
+            untranslated_location(2)
+        );
+        let out = human_with("lab 2/it's.dat", &text, &RenderOptions::default());
+        assert!(
+            out.contains("--select untranslated-message 'lab 2/it'\\''s.dat'\n"),
+            "{out}"
+        );
     }
 
     #[test]

@@ -5,6 +5,7 @@
 
 pub use ekb_core::render::{clip, escape, located, safe_json};
 
+pub mod compact;
 pub mod concise;
 pub mod github;
 pub mod human;
@@ -60,13 +61,18 @@ pub fn render(
 
 /// The versions of the robot's reader that the files were checked against, for the
 /// summary line: `, checked against reader 2025-06`, or with several `, checked against
-/// readers d5.4.2 for a.dat, …`.
-pub fn reader_note(reports: &[FileReport<'_>]) -> String {
+/// readers d5.4.2 for a.dat, …`; for people (`in_words`), which of the robot's software
+/// that is: `; as the robot's software of June 2025 reads it (2025-06)`.
+pub fn reader_note(reports: &[FileReport<'_>], in_words: bool) -> String {
     let reports: Vec<&FileReport> = reports.iter().filter(|r| r.read_by_reader()).collect();
     let mut readers: Vec<Reader> = reports.iter().map(|r| r.checked.reader).collect();
     readers.dedup();
     match readers.as_slice() {
         [] => String::new(),
+        [one] if in_words => format!(
+            "; as the robot's software {} reads it ({one})",
+            one.in_words()
+        ),
         [one] => format!(", checked against reader {one}"),
         _ => {
             let each: Vec<String> = reports
@@ -79,7 +85,10 @@ pub fn reader_note(reports: &[FileReport<'_>]) -> String {
                     )
                 })
                 .collect();
-            format!(", checked against readers {}", each.join(", "))
+            match in_words {
+                true => format!("; as the robot's software reads it: {}", each.join(", ")),
+                false => format!(", checked against readers {}", each.join(", ")),
+            }
         }
     }
 }
@@ -92,6 +101,8 @@ pub struct RenderOptions {
     pub quiet: bool,
     /// Where `--format human` wraps messages and help ([`stdout_width`]).
     pub width: usize,
+    /// Draw every finding, not one paragraph for a rule's many warnings (`--show-all`).
+    pub show_all: bool,
 }
 
 impl Default for RenderOptions {
@@ -100,6 +111,7 @@ impl Default for RenderOptions {
             color: false,
             quiet: false,
             width: DEFAULT_WIDTH,
+            show_all: false,
         }
     }
 }

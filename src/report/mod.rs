@@ -404,8 +404,8 @@ fn findings_section(html: &mut String, report: &FileReport<'_>) {
         html.push_str("<p>No findings: the file is clean.</p>\n</section>\n");
         return;
     }
-    html.push_str("<table class=\"findings\">\n<caption>Every finding, in file order</caption>\n<thead><tr><th scope=\"col\">Line</th><th scope=\"col\">Severity</th><th scope=\"col\">Rule</th><th scope=\"col\">Location</th><th scope=\"col\">What is wrong</th></tr></thead>\n<tbody>\n");
-    for finding in &report.diagnostics {
+    html.push_str("<table class=\"findings\">\n<caption>Every finding: errors first, each after what causes it</caption>\n<thead><tr><th scope=\"col\">Line</th><th scope=\"col\">Severity</th><th scope=\"col\">Rule</th><th scope=\"col\">Location</th><th scope=\"col\">What is wrong</th></tr></thead>\n<tbody>\n");
+    for finding in report.in_reading_order() {
         let location = finding
             .location_id
             .map_or_else(String::new, |id| id.to_string());

@@ -179,7 +179,7 @@ enum ekb_status ekb_error_message(ekb_handle handle, struct ekb_str *out);
 // `out` is valid for a write.
 enum ekb_status ekb_finding_count(ekb_handle handle, size_t *out);
 
-// The finding at `index`, in the order of the file.
+// The finding at `index`, in reading order: errors first, a consequence after its cause.
 //
 // # Safety
 // `out` is valid for a write.

@@ -76,7 +76,8 @@ private:
 };
 
 // The knowledge base was not loaded: the file has an error (every finding of the check is
-// here, errors and warnings, in file order), or it could not be read (no findings).
+// here, errors first, a consequence after its cause), or it could not be read (no
+// findings).
 // what() names the first error and how many there are.
 class LoadError : public std::runtime_error {
 public:

@@ -459,7 +459,7 @@ pub unsafe extern "C" fn ekb_finding_count(handle: ekb_handle, out: *mut usize) 
     })
 }
 
-/// The finding at `index`, in the order of the file.
+/// The finding at `index`, in reading order: errors first, a consequence after its cause.
 ///
 /// # Safety
 /// `out` is valid for a write.

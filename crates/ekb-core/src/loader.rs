@@ -178,7 +178,7 @@ pub enum LoadError {
     /// the file's content can be made (`ekb` exits 2 for this).
     Unreadable { file: String, reason: String },
     /// The file has an error: the robot would load something other than it says. Every
-    /// finding of the check is here, errors and warnings, in the order of the file.
+    /// finding of the check is here, errors first, a consequence after its cause.
     Refused { findings: Vec<Finding> },
 }
 
@@ -339,7 +339,8 @@ impl KnowledgeBase {
     }
 }
 
-/// Checks the file at `path` as `ekb check` does; its findings, in the order of the file.
+/// Checks the file at `path` as `ekb check` does; its findings, errors first, a
+/// consequence after its cause.
 pub fn check_path(path: &Path, options: &Options) -> Result<Vec<Finding>, LoadError> {
     let source = read(path)?;
     with_checked(&source, path, options, findings)
@@ -482,10 +483,12 @@ fn with_checked<T>(
     Ok(then(&checked))
 }
 
+/// The findings of `checked`, in the order a person reads them (errors first, a
+/// consequence after its cause).
 fn findings(checked: &Checked<'_>) -> Vec<Finding> {
     FileReport::new(checked)
-        .diagnostics
-        .iter()
+        .in_reading_order()
+        .into_iter()
         .map(|located| Finding {
             file: escape(located.file).into_owned(),
             rule: located.rule,

@@ -85,6 +85,26 @@ mod tests {
     }
 
     #[test]
+    fn a_missing_field_points_at_the_miscased_line_that_causes_it() {
+        let text = "robotLocationDescription 1 A\nrobotLocation 1 1 1 1\ngestureTarget 1 1 1 1\n\
+                    preGestureMessageEnglish 1 Hi\npreGestureMessageIsiZulu 1 Sawubona\n\
+                    preGestureMessageKinyarwanda 1 Muraho\npostGestureMessageEnglish 1 Bye\n\
+                    postGestureMessageIsiZulu 1 Hamba kahle\n\
+                    postgestureMessageKinyarwanda 1 Murabeho\ntourSpecification 1 1\n";
+        let missing = with_snapshot(text, |snapshot| {
+            publish(snapshot)
+                .diagnostics
+                .into_iter()
+                .find(|d| d.code == Some(NumberOrString::String("missing-field".into())))
+                .expect("a missing-field finding")
+        });
+        assert_eq!(missing.range.start.line, 0);
+        let related = missing.related_information.expect("its cause");
+        assert_eq!(related[0].location.range.start.line, 8);
+        assert_eq!(related[0].message, "because of this (key-case)");
+    }
+
+    #[test]
     fn an_unused_suppression_is_unnecessary() {
         // The rule comes with suppression comments (SPEC §7); what matters here is its name.
         static UNUSED: Rule = Rule {

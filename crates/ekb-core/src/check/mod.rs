@@ -11,7 +11,7 @@
 
 use crate::diagnostic::fix_list::FixList;
 use crate::diagnostic::{
-    kept_at_most, Diagnostic, Diagnostics, Rule, RuleCounts, Severity, MAX_SHOWN_PER_RULE,
+    kept_at_most, Diagnostic, Diagnostics, Label, Rule, RuleCounts, Severity, MAX_SHOWN_PER_RULE,
 };
 use crate::map::LabMap;
 use crate::model::build::{build, Options, Unheeded};
@@ -19,6 +19,8 @@ use crate::model::KnowledgeBase;
 use crate::robot::Reader;
 use crate::rules::selection::{RuleSelector, RuleSet};
 use crate::rules::{self, compat, structure};
+use crate::syntax::Span;
+use std::collections::HashMap;
 
 pub use summary::{Hidden, RuleCount, Summary};
 
@@ -315,6 +317,32 @@ fn check_unverified<'a>(
     )
 }
 
+/// Gives each finding that follows from another ([`Diagnostic::follows_from`]) a label at
+/// its cause's place, the first finding of that rule at its location: an editor shows it as
+/// related information, and a report drawn in full underlines the cause's line with it.
+fn point_at_causes(diagnostics: &mut [Diagnostic]) {
+    if diagnostics.iter().all(|d| d.follows_from.is_none()) {
+        return;
+    }
+    let mut first_of: HashMap<(&'static str, Option<u32>), Span> = HashMap::new();
+    for diagnostic in diagnostics.iter() {
+        first_of
+            .entry((diagnostic.rule.name, diagnostic.location_id))
+            .or_insert(diagnostic.span);
+    }
+    for diagnostic in diagnostics.iter_mut() {
+        let Some(cause) = diagnostic.follows_from else {
+            continue;
+        };
+        if let Some(&span) = first_of.get(&(cause.name, diagnostic.location_id)) {
+            diagnostic.labels.push(Label {
+                span,
+                message: format!("because of this ({})", cause.name),
+            });
+        }
+    }
+}
+
 /// A checked file of `kind`: the findings of `found` that `rules` chose and no suppression
 /// silenced, sorted, at the severities of `rules`. `kb` is empty unless the file is an
 /// environment knowledge base.
@@ -375,6 +403,7 @@ pub fn finish<'a>(
             }
         }
     }
+    point_at_causes(&mut diagnostics);
     let omitted = omitted_notes(&diagnostics, &counts);
     Checked {
         source,

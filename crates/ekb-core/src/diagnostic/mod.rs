@@ -111,6 +111,10 @@ pub struct Diagnostic {
     pub help: Option<String>,
     pub fix: Option<Fix>,
     pub labels: Vec<Label>,
+    /// The rule whose finding at the same location causes this one (a `missing-field`
+    /// because the line is there with its key miscased): people read this finding right
+    /// after its cause ([`crate::render::located::FileReport::in_reading_order`]).
+    pub follows_from: Option<&'static Rule>,
 }
 
 impl Diagnostic {
@@ -124,6 +128,7 @@ impl Diagnostic {
             help: None,
             fix: None,
             labels: Vec::new(),
+            follows_from: None,
         }
     }
 
@@ -166,6 +171,12 @@ impl Diagnostic {
             fix.applicability = Applicability::Unsafe;
         }
         diagnostic
+    }
+
+    /// This finding is a consequence of `cause`'s finding at the same location.
+    pub fn following(mut self, cause: &'static Rule) -> Diagnostic {
+        self.follows_from = Some(cause);
+        self
     }
 
     pub fn with_label(mut self, span: Span, message: impl Into<String>) -> Diagnostic {

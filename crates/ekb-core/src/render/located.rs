@@ -1,6 +1,7 @@
 //! Diagnostics with byte spans turned into 1-based lines and columns (end exclusive).
 
 use std::cell::Cell;
+use std::collections::HashMap;
 
 use serde::Serialize;
 
@@ -95,7 +96,41 @@ impl<'a> FileReport<'a> {
     }
 }
 
-impl FileReport<'_> {
+impl<'a> FileReport<'a> {
+    /// The findings in the order a person reads them (the JSON of SPEC §5 keeps the file's
+    /// order): errors first, then warnings, then the rest, each in the file's order, except
+    /// that a finding that follows from another ([`Diagnostic::follows_from`]) comes right
+    /// after the first finding of its cause at its location, when that is no milder. Every
+    /// face that lists findings for people lists them so: `ekb check`, the report's table,
+    /// the loader's findings (and through it the ROS log and Python's `ekb.check()`).
+    pub fn in_reading_order(&self) -> Vec<&LocatedDiagnostic<'a>> {
+        let mut first_of: HashMap<(&'static str, Option<u32>), usize> = HashMap::new();
+        for (index, finding) in self.diagnostics.iter().enumerate() {
+            first_of
+                .entry((finding.rule, finding.location_id))
+                .or_insert(index);
+        }
+        let cause_of = |finding: &LocatedDiagnostic| {
+            let rule = finding.diagnostic.follows_from?;
+            let &cause = first_of.get(&(rule.name, finding.location_id))?;
+            (self.diagnostics[cause].severity <= finding.severity).then_some(cause)
+        };
+        let mut order: Vec<(Severity, usize, bool, usize)> = self
+            .diagnostics
+            .iter()
+            .enumerate()
+            .map(|(index, finding)| match cause_of(finding) {
+                Some(cause) => (self.diagnostics[cause].severity, cause, true, index),
+                None => (finding.severity, index, false, index),
+            })
+            .collect();
+        order.sort_unstable();
+        order
+            .into_iter()
+            .map(|(.., index)| &self.diagnostics[index])
+            .collect()
+    }
+
     /// Whether the file was checked against a version of the environment knowledge base's
     /// reader (`--reader`); the mission and the culture knowledge base have their own.
     pub fn read_by_reader(&self) -> bool {

@@ -51,6 +51,18 @@ impl Reader {
         }
     }
 
+    /// Which of the robot's software this version is, in words a content editor knows:
+    /// "the robot's software {of June 2025}".
+    pub fn in_words(self) -> &'static str {
+        match self {
+            Reader::D542 => "of document D5.4.2",
+            Reader::V2025_06 => "of June 2025",
+            Reader::V2026_02 => "of February 2026",
+            Reader::V2026_03 => "of March 2026",
+            Reader::V2026_04 => "of April 2026",
+        }
+    }
+
     /// The versions' names, for messages: `d5.4.2, 2025-06, …`.
     pub fn names() -> String {
         Reader::ALL.map(Reader::name).join(", ")

@@ -124,6 +124,6 @@ def load(path: _Path, *, reader: Optional[_Reader] = None) -> KnowledgeBase:
     ``ekb.toml`` names, else the one of the file's dialect)."""
 
 def check(path: _Path, *, reader: Optional[_Reader] = None) -> list[Finding]:
-    """Check the knowledge base at ``path`` as ``ekb check`` does: its findings, in the
-    order of the file (empty for a clean file). ``UnreadableError`` if it cannot be
+    """Check the knowledge base at ``path`` as ``ekb check`` does: its findings, errors
+    first, a consequence after its cause (empty for a clean file). ``UnreadableError`` if it cannot be
     read."""

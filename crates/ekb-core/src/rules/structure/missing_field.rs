@@ -1,6 +1,8 @@
 use crate::diagnostic::Diagnostic;
 use crate::diagnostic::Diagnostics;
 use crate::model::{Key, Language, Location, Phase};
+use crate::rules::structure::key_case::KEY_CASE;
+use crate::rules::structure::unknown_key::UNKNOWN_KEY;
 use crate::rules::{consequence, declare_rule, LocationContext};
 
 declare_rule! {
@@ -79,7 +81,7 @@ pub fn check(location: &Location<'_>, context: &LocationContext<'_>, out: &mut D
         if !miscased.is_empty() {
             let keys: Vec<String> = miscased.iter().map(|key| format!("`{}`", key.name())).collect();
             help.push(format!(
-                "the file has a line of {} with the key in the wrong case: correct the case there (see its key-case finding; `ekb fix` does it)",
+                "the line of {} is there, its key in the wrong case: `ekb fix` corrects it (key-case)",
                 keys.join(", ")
             ));
         }
@@ -90,9 +92,15 @@ pub fn check(location: &Location<'_>, context: &LocationContext<'_>, out: &mut D
                 keys.join(", ")
             ));
         }
-        Diagnostic::new(&MISSING_FIELD, location.first_line, message)
+        let diagnostic = Diagnostic::new(&MISSING_FIELD, location.first_line, message)
             .at_location(Some(id))
-            .with_help(help.join("; "))
+            .with_help(help.join("; "));
+        // Read with its cause: the line that is there, its key mistyped.
+        match (miscased.is_empty(), misspelled.is_empty()) {
+            (false, _) => diagnostic.following(&KEY_CASE),
+            (true, false) => diagnostic.following(&UNKNOWN_KEY),
+            (true, true) => diagnostic,
+        }
     });
 }
 
