@@ -37,18 +37,21 @@ fail() {
 step() { echo "== $*"; }
 
 # How a program written for the document's class ended on the seed file ($1: its name, $2:
-# its log, $3: its exit status): exit 1, the key-case error at line 34 before any warning,
-# and a last line that names the file and `ekb check`.
+# its log, $3: its exit status): exit 1, the key-case error at line 34 first (before the
+# missing field it causes, and any warning), and a last line that names the file and
+# `ekb check`.
 expect_refused_seed() {
   local name=$1 log=$2 status=$3
   [ "$status" = 1 ] || { cat "$log"; fail "$name: exit status $status on the seed file, not 1"; }
   ! grep -q 'terminate called' "$log" || { cat "$log"; fail "$name: terminate"; }
-  local key_case first_warning last_error
+  local key_case first_error first_warning last_error
   # (awk, not grep | head: no SIGPIPE under pipefail)
   key_case=$(awk '/environmentKnowledgeBaseInput\.dat:34:1: error\[key-case\]/ { print NR; exit }' "$log")
+  first_error=$(awk '/: error\[/ { print NR; exit }' "$log")
   first_warning=$(awk '/: warning\[/ { print NR; exit }' "$log")
   last_error=$(awk '/: error\[/ { line = NR } END { print line }' "$log")
   [ -n "$key_case" ] || { cat "$log"; fail "$name: no key-case error at line 34"; }
+  [ "$key_case" = "$first_error" ] || { cat "$log"; fail "$name: the key-case error, the cause, is not the first"; }
   [ -n "$first_warning" ] && [ "$key_case" -lt "$first_warning" ] && [ "$last_error" -lt "$first_warning" ] \
     || { cat "$log"; fail "$name: an error after a warning"; }
   tail -1 "$log" | grep -q 'the environment knowledge base .*environmentKnowledgeBaseInput\.dat was refused (2 errors, [0-9]* warnings): `ekb check .*environmentKnowledgeBaseInput\.dat` shows them, `ekb fix .*environmentKnowledgeBaseInput\.dat` fixes what it can$' \

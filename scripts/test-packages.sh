@@ -6,7 +6,8 @@
 #   crates/ekb-python/tests (pytest); `uv tool install` puts `ekb` on PATH too;
 # - the Debian package (scripts/build-deb.sh), installed with apt-get: `ekb --version`, its
 #   man page (`man -w ekb`) and the bash, zsh and fish completions in their system places, and
-#   the loader library, whose CMake package a consumer finds and links.
+#   the loader library, whose CMake package a consumer finds and links; the example ROS
+#   package it carries, built and run with rosrun by the steps of docs/library.md.
 #
 # Installs the package system-wide: run it as root, on a machine you may change (as CI).
 # Needs PyPI for pytest and uv (in the throwaway environment).
@@ -117,4 +118,26 @@ cmake --build "$work/consumer" -j2 >/dev/null
 "$work/consumer/cpp_api" "$seed" >"$work/out" && fail "the installed loader loaded the seed file as it is"
 grep -q ':34:1: error\[key-case\]' "$work/out" || fail "the installed loader gave no key-case finding at line 34"
 ok "the package installs the loader library, its headers and CMake package: a consumer builds and refuses the seed file"
+# The example ROS node on the package, by the steps of docs/library.md as written (their
+# apt-get lines left out: .ci/run installs those packages), in a home of its own.
+steps=$(awk '/^\*\*On the Debian package\*\*/ { found = 1 }
+  found && /^```sh/ { inside = 1; next }
+  inside && /^```/ { exit }
+  inside { print }' docs/library.md)
+[ -n "$steps" ] || fail "docs/library.md has no steps for the Debian package"
+steps=$(grep -v '^sudo apt-get install' <<<"$steps")
+ros_home="$work/ros-home"
+mkdir -p "$ros_home"
+# The seed file: refused, the node exits 1 with the key-case finding.
+if (export HOME="$ros_home"; set +u; eval "$steps") >"$work/ros.log" 2>&1; then
+  cat "$work/ros.log"; fail "the example node on the package loaded the seed file as it is"
+fi
+grep -q 'ERROR.*environmentKnowledgeBaseInput.dat:34:1: error\[key-case\]' "$work/ros.log" ||
+  { tail -40 "$work/ros.log"; fail "the example node on the package did not refuse the seed file"; }
+/usr/bin/ekb fix --isolated "$ros_home/catkin_ws/src/ekb_ros_example/data/environmentKnowledgeBaseInput.dat" >/dev/null 2>&1
+(export HOME="$ros_home"; set +u; cd "$ros_home/catkin_ws" && source devel/setup.bash &&
+  rosrun ekb_ros_example tour_node) >"$work/ros.log" 2>&1 || { cat "$work/ros.log"; fail "rosrun of the fixed file"; }
+stops=$(sed -n 's/.*Stop [0-9]*: location \([0-9]*\),.*/\1/p' "$work/ros.log" | tr '\n' ' ')
+[ "$stops" = "1 4 3 2 5 " ] || { cat "$work/ros.log"; fail "the example node on the package logged the tour $stops"; }
+ok "docs/library.md's catkin steps on the package: rosrun refuses the seed file, and runs the fixed tour"
 echo "packages: $passed passed, 0 failed"
