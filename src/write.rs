@@ -168,6 +168,34 @@ pub fn lock_to_rewrite(path: &Path) -> Result<Option<RewriteLock>, WriteError> {
     }
 }
 
+/// Which file a path names (its device and inode, through symbolic links), so that a
+/// command given one file by two names does it once. `None` for standard input (`-`), a
+/// path that names nothing, or a platform without inodes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct FileId {
+    device: u64,
+    inode: u64,
+}
+
+impl FileId {
+    pub fn of(path: &Path) -> Option<FileId> {
+        if path == Path::new("-") {
+            return None;
+        }
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::MetadataExt;
+            let metadata = fs::metadata(path).ok()?;
+            Some(FileId {
+                device: metadata.dev(),
+                inode: metadata.ino(),
+            })
+        }
+        #[cfg(not(unix))]
+        None
+    }
+}
+
 /// What one try at the lock gave.
 enum Locked {
     Yes,
