@@ -515,12 +515,16 @@ fn ensure_replaceable(path: &Path, existing: &Metadata) -> Result<(), String> {
              make it writable first (`chmod u+w`) if it should change"
         ));
     }
-    // Opening for writing changes nothing (no truncation), but tells whether we may.
-    fs::OpenOptions::new()
-        .write(true)
-        .open(path)
-        .map(drop)
-        .map_err(|err| describe(&err))
+    // Opening for writing changes nothing (no truncation), but tells whether we may; without
+    // blocking, should a FIFO have been put there since it was looked at.
+    let mut options = fs::OpenOptions::new();
+    options.write(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.custom_flags(libc::O_NONBLOCK);
+    }
+    options.open(path).map(drop).map_err(|err| describe(&err))
 }
 
 /// What a file that is not a regular file is, for a message.

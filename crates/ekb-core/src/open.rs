@@ -52,16 +52,31 @@ pub fn read_regular(path: &Path) -> io::Result<Vec<u8>> {
 /// Opens `path` for reading if it is a regular file, with its metadata as opened (what a
 /// stamp of the file must describe).
 pub fn open_regular(path: &Path) -> Result<(File, Metadata), Refusal> {
-    let file = open_without_blocking(path).map_err(Refusal::Io)?;
+    let file = match open_without_blocking(path) {
+        Ok(file) => file,
+        // A socket cannot be opened at all (`ENXIO`): say what it is, not why it failed.
+        Err(error) => {
+            return Err(match std::fs::metadata(path) {
+                Ok(metadata) if !metadata.is_file() => refusal_of(&metadata),
+                _ => Refusal::Io(error),
+            })
+        }
+    };
     let metadata = file.metadata().map_err(Refusal::Io)?;
-    if metadata.is_dir() {
-        return Err(Refusal::Directory);
-    }
     if !metadata.is_file() {
-        return Err(Refusal::NotRegular);
+        return Err(refusal_of(&metadata));
     }
     // `O_NONBLOCK` is left set: it changes nothing for a regular file.
     Ok((file, metadata))
+}
+
+/// The refusal of what is not a regular file.
+fn refusal_of(metadata: &Metadata) -> Refusal {
+    if metadata.is_dir() {
+        Refusal::Directory
+    } else {
+        Refusal::NotRegular
+    }
 }
 
 #[cfg(unix)]
@@ -95,6 +110,14 @@ mod tests {
             .recv_timeout(std::time::Duration::from_secs(5))
             .expect("opening a FIFO must not wait for a writer");
         assert!(matches!(result, Err(Refusal::NotRegular)), "{result:?}");
+    }
+
+    #[test]
+    fn a_socket_is_not_a_regular_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let socket = dir.path().join("kb.dat");
+        let _listening = std::os::unix::net::UnixListener::bind(&socket).unwrap();
+        assert!(matches!(open_regular(&socket), Err(Refusal::NotRegular)));
     }
 
     #[test]
