@@ -272,7 +272,7 @@ impl Context {
     /// left partly written is first restored ([`crate::write::restore_if_interrupted`]).
     pub fn read(&self, path: &Path) -> Result<SourceFile, CommandError> {
         self.say_reading(path);
-        crate::write::restore_if_interrupted(path)?;
+        self.restore_if_interrupted(path)?;
         Ok(SourceFile::read(path)?)
     }
 
@@ -281,8 +281,15 @@ impl Context {
     /// [`Context::read`] does.
     pub fn read_to_report(&self, path: &Path) -> Result<SourceFile, CommandError> {
         self.say_reading(path);
-        crate::write::restore_if_interrupted(path)?;
+        self.restore_if_interrupted(path)?;
         Ok(SourceFile::read_even_wide(path)?)
+    }
+
+    fn restore_if_interrupted(&self, path: &Path) -> Result<(), CommandError> {
+        crate::write::restore_if_interrupted(path).map_err(|reason| {
+            let name = path.display().to_string();
+            CommandError::Failed(format!("cannot read {}: {reason}", escape(&name)))
+        })
     }
 
     fn say_reading(&self, path: &Path) {

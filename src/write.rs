@@ -190,15 +190,16 @@ pub fn lock_to_rewrite(path: &Path) -> Result<Option<RewriteLock>, WriteError> {
 
 /// Restores `path` if an ekb was stopped (killed, or the machine lost power) while it wrote
 /// the file in place, from the complete copy it left, taking the file's lock to do so;
-/// nothing if there is no such copy. Called before a knowledge base is read.
-pub fn restore_if_interrupted(path: &Path) -> Result<(), WriteError> {
+/// nothing if there is no such copy. Called before a knowledge base is read; the error is
+/// why it could not be restored.
+pub fn restore_if_interrupted(path: &Path) -> Result<(), String> {
     if path == Path::new("-") {
         return Ok(());
     }
     match resolve(path) {
         Ok(target) if fs::symlink_metadata(restore_copy(&target.path)).is_ok() => {
             // Restored under the lock (a writer at work holds it and removes its copy).
-            lock_to_rewrite(path).map(drop)
+            lock_to_rewrite(path).map(drop).map_err(|err| err.reason)
         }
         // Nothing to restore; a path that cannot be resolved is refused when read.
         _ => Ok(()),

@@ -655,3 +655,35 @@ fn a_killed_fmt_never_tears_a_group_writable_file_of_another_user() {
         "its owner kept"
     );
 }
+
+#[test]
+fn a_restore_copy_another_user_left_is_refused_not_copied_into_the_file() {
+    if !is_root() {
+        eprintln!("skipped: needs root to give a file to another user");
+        return;
+    }
+    let dir = folder_for_nobody();
+    let path = dir.path().join("kb.dat");
+    fs::write(&path, FIXED).unwrap();
+    let planted = dir.path().join(".kb.dat.ekb-restore");
+    fs::write(&planted, UNFIXED).unwrap();
+    std::os::unix::fs::chown(&planted, Some(NOBODY), Some(NOBODY)).unwrap();
+    let output = ekb().arg("check").arg(&path).output().unwrap();
+    assert_eq!(output.status.code(), Some(2), "{}", stderr(&output));
+    assert!(
+        stderr(&output).contains(".kb.dat.ekb-restore is there, as ekb names the copy it restores a file from, but it is not one ekb made"),
+        "{}",
+        stderr(&output)
+    );
+    assert_eq!(fs::read_to_string(&path).unwrap(), FIXED);
+    // Left by this user (the file's owner), the same copy is restored.
+    std::os::unix::fs::chown(&planted, Some(0), Some(0)).unwrap();
+    let output = ekb().arg("check").arg(&path).output().unwrap();
+    assert!(
+        stderr(&output).contains("restored it whole from"),
+        "{}",
+        stderr(&output)
+    );
+    assert_eq!(fs::read_to_string(&path).unwrap(), UNFIXED);
+    assert!(!planted.exists());
+}
