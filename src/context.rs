@@ -268,17 +268,28 @@ impl Context {
     }
 
     /// Reads a knowledge base (`-` is standard input), to rewrite it or show it as written:
-    /// a file in UTF-16 or UTF-32 is refused.
+    /// a file in UTF-16 or UTF-32 is refused. A file an ekb stopped while writing it in place
+    /// left partly written is first restored ([`crate::write::restore_if_interrupted`]).
     pub fn read(&self, path: &Path) -> Result<SourceFile, CommandError> {
         self.say_reading(path);
+        self.restore_if_interrupted(path)?;
         Ok(SourceFile::read(path)?)
     }
 
     /// Reads a knowledge base to report on it: a file in UTF-16 or UTF-32 is one the robot
-    /// loads nothing from, a finding ([`SourceFile::read_even_wide`]).
+    /// loads nothing from, a finding ([`SourceFile::read_even_wide`]). Restored first, as
+    /// [`Context::read`] does.
     pub fn read_to_report(&self, path: &Path) -> Result<SourceFile, CommandError> {
         self.say_reading(path);
+        self.restore_if_interrupted(path)?;
         Ok(SourceFile::read_even_wide(path)?)
+    }
+
+    fn restore_if_interrupted(&self, path: &Path) -> Result<(), CommandError> {
+        crate::write::restore_if_interrupted(path).map_err(|reason| {
+            let name = path.display().to_string();
+            CommandError::Failed(format!("cannot read {}: {reason}", escape(&name)))
+        })
     }
 
     fn say_reading(&self, path: &Path) {

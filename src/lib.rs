@@ -53,7 +53,7 @@ pub mod write;
 
 // The core's layers, at the paths they have always had here.
 pub use ekb_core::{
-    check, config, diagnostic, encoding, loader, map, mission, model, reader, robot, rules,
+    check, config, diagnostic, encoding, loader, map, mission, model, open, reader, robot, rules,
     settings, source, stderr_line, streams, syntax,
 };
 pub use ekb_core::{Checked, Diagnostic, KnowledgeBase, Severity, SourceFile};

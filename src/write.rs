@@ -15,6 +15,9 @@
 //! - [`lock_to_rewrite`]`(path)`: taken by a command before it reads a file it will write
 //!   back, and held until that file is replaced, so that two ekb rewriting one file take
 //!   turns: the second waits, then reads what the first wrote (no change is lost).
+//! - [`restore_if_interrupted`]`(path)`: before a knowledge base is read, restores it if an
+//!   ekb was stopped while writing it in place (below).
+//! - [`FileId`]: which file a path names, so that a file named twice is done once.
 //!
 //! # What is refused, the file left unchanged and the error saying why
 //! - a path that is not a regular file: a folder, a FIFO, a socket, a device (`-o
@@ -35,8 +38,23 @@
 //! then replace the original by a rename. A file with more than one hard link, or whose
 //! owner and group ekb cannot give to a new file (a user writing a group-writable file of
 //! another), is written in place instead, as editors do, so that it stays the same file to
-//! every link and keeps its owner: the temporary file is copied into it. If that copy
-//! fails half-way, the temporary file is kept and the error names it.
+//! every link and keeps its owner: the temporary file is copied into it.
+//!
+//! # Nothing lost when ekb is stopped
+//! A writer killed (or a machine losing power) before the rename leaves the file as it was;
+//! its temporary file, `.NAME.ekb-XXXXXX.tmp` beside the file, is locked (`flock`) while it
+//! is written, so the next writer of that file, holding the file's lock
+//! ([`lock_to_rewrite`]), removes those of that file that no live writer holds.
+//!
+//! A copy in place could be stopped half-way, leaving new bytes then old. So the temporary
+//! file, complete and flushed to disk, is first renamed to `.NAME.ekb-restore` (it exists
+//! only complete), then copied into the file, which is flushed, and the copy removed. If
+//! ekb is stopped in between, the next ekb that writes the file ([`lock_to_rewrite`]) or
+//! reads it ([`restore_if_interrupted`], through the commands' read of a knowledge base)
+//! copies `.NAME.ekb-restore` into the file, in place, removes it, and says so on standard
+//! error, naming both: the file then holds the new text whole. A copy not made by this
+//! user or the file's owner is refused, not restored. If the copy in place fails (a full
+//! disk), `.NAME.ekb-restore` is kept and the error names it.
 
 use std::fmt;
 use std::fs::{self, Metadata};
@@ -137,10 +155,11 @@ pub fn lock_to_rewrite(path: &Path) -> Result<Option<RewriteLock>, WriteError> {
             // Not there, or not a regular file: the write refuses it with the reason.
             return Ok(None);
         }
-        let file = match fs::File::open(&target.path) {
-            Ok(file) => file,
-            Err(err) if err.kind() == io::ErrorKind::NotFound => continue,
-            // Unreadable: reading it fails next, with the reason.
+        let file = match crate::open::open_regular(&target.path) {
+            Ok((file, _)) => file,
+            Err(crate::open::Refusal::Io(err)) if err.kind() == io::ErrorKind::NotFound => continue,
+            // Unreadable, or swapped for what is not a regular file: the read or the write
+            // refuses it next, with the reason.
             Err(_) => return Ok(None),
         };
         loop {
@@ -162,9 +181,149 @@ pub fn lock_to_rewrite(path: &Path) -> Result<Option<RewriteLock>, WriteError> {
             }
         }
         if still_names(&target.path, &file) {
+            finish_interrupted(&target.path).map_err(fail)?;
             return Ok(Some(RewriteLock { _file: file }));
         }
         // Replaced while we waited: lock the file that is there now, and read that.
+    }
+}
+
+/// Restores `path` if an ekb was stopped (killed, or the machine lost power) while it wrote
+/// the file in place, from the complete copy it left, taking the file's lock to do so;
+/// nothing if there is no such copy. Called before a knowledge base is read; the error is
+/// why it could not be restored.
+pub fn restore_if_interrupted(path: &Path) -> Result<(), String> {
+    if path == Path::new("-") {
+        return Ok(());
+    }
+    match resolve(path) {
+        Ok(target) if fs::symlink_metadata(restore_copy(&target.path)).is_ok() => {
+            // Restored under the lock (a writer at work holds it and removes its copy).
+            lock_to_rewrite(path).map(drop).map_err(|err| err.reason)
+        }
+        // Nothing to restore; a path that cannot be resolved is refused when read.
+        _ => Ok(()),
+    }
+}
+
+/// The complete new contents of a file being written in place, beside it: written and
+/// flushed, then renamed to this name, so that it exists only complete.
+fn restore_copy(target: &Path) -> PathBuf {
+    target.with_file_name(format!(".{}.ekb-restore", file_name(target)))
+}
+
+/// The name of the file `target`, as the names beside it are made from it.
+fn file_name(target: &Path) -> String {
+    let name = target.file_name().unwrap_or_default();
+    name.to_string_lossy().into_owned()
+}
+
+/// What the next writer of `target` does, holding its lock, for one that was stopped: it
+/// removes the temporary files that writer left (`.NAME.ekb-XXXXXX.tmp`, ekb's own names
+/// for that file, and only those no live writer holds locked), and it finishes a write in
+/// place that was interrupted, from the complete copy it left.
+fn finish_interrupted(target: &Path) -> Result<(), String> {
+    let folder = folder_of(target);
+    let prefix = temporary_prefix(target);
+    if let Ok(entries) = fs::read_dir(folder) {
+        for entry in entries.flatten() {
+            let name = entry.file_name();
+            let name = name.to_string_lossy();
+            let ours = name
+                .strip_prefix(&prefix)
+                .and_then(|rest| rest.strip_suffix(".tmp"));
+            if ours.is_some_and(|random| random.len() == TEMPORARY_RANDOM) {
+                remove_if_abandoned(&entry.path());
+            }
+        }
+    }
+    let copy = restore_copy(target);
+    let Ok(metadata) = fs::symlink_metadata(&copy) else {
+        return Ok(());
+    };
+    if !metadata.is_file() || !is_trusted(&metadata, target) {
+        return Err(format!(
+            "{} is there, as ekb names the copy it restores a file from, but it is not one \
+             ekb made (not a regular file, or another user's): remove it, then run ekb again",
+            copy.display()
+        ));
+    }
+    let (mut source, _) = crate::open::open_regular(&copy).map_err(|err| err.to_string())?;
+    if !matches!(try_lock(&source), Ok(Locked::Yes | Locked::Unsupported)) {
+        return Ok(()); // a writer without the file's lock (`-o`) is copying it now
+    }
+    copy_into(&mut source, target).map_err(|err| {
+        format!(
+            "{} while restoring it from {}, the complete copy an interrupted ekb left; the \
+             copy is kept",
+            describe(&err),
+            copy.display()
+        )
+    })?;
+    fs::remove_file(&copy).map_err(|err| describe(&err))?;
+    sync_folder(folder);
+    crate::stderr_line!(
+        "ekb: {} was being written in place by an ekb that was stopped: restored it whole \
+         from {}, the copy of the new contents it left",
+        crate::render::escape::escape(&target.display().to_string()),
+        crate::render::escape::escape(&copy.display().to_string())
+    );
+    Ok(())
+}
+
+/// A copy to restore from is trusted if this user or the file's owner made it: not a file
+/// another user left in a shared folder to have ekb copy it into the file.
+fn is_trusted(copy: &Metadata, target: &Path) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        // SAFETY: `geteuid` cannot fail and touches no memory.
+        let me = unsafe { libc::geteuid() };
+        let owner = fs::metadata(target).map(|m| m.uid()).ok();
+        copy.uid() == me || Some(copy.uid()) == owner
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = (copy, target);
+        true
+    }
+}
+
+/// Removes a temporary file of ekb's that no writer holds locked: its writer was stopped.
+fn remove_if_abandoned(path: &Path) {
+    let Ok((file, _)) = crate::open::open_regular(path) else {
+        return;
+    };
+    if matches!(try_lock(&file), Ok(Locked::Yes)) {
+        let _ = fs::remove_file(path);
+    }
+}
+
+/// Which file a path names (its device and inode, through symbolic links), so that a
+/// command given one file by two names does it once. `None` for standard input (`-`), a
+/// path that names nothing, or a platform without inodes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct FileId {
+    device: u64,
+    inode: u64,
+}
+
+impl FileId {
+    pub fn of(path: &Path) -> Option<FileId> {
+        if path == Path::new("-") {
+            return None;
+        }
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::MetadataExt;
+            let metadata = fs::metadata(path).ok()?;
+            Some(FileId {
+                device: metadata.dev(),
+                inode: metadata.ino(),
+            })
+        }
+        #[cfg(not(unix))]
+        None
     }
 }
 
@@ -246,11 +405,8 @@ fn write(
         .copied()
         .or_else(|| target.existing.as_ref().map(FileStamp::of));
     ensure_unchanged(&target.path, expected.as_ref()).map_err(fail)?;
-    let folder = match target.path.parent() {
-        Some(parent) if !parent.as_os_str().is_empty() => parent,
-        _ => Path::new("."),
-    };
-    let mut temp = temporary_file(folder, target.existing.is_none()).map_err(|err| {
+    let folder = folder_of(&target.path);
+    let mut temp = temporary_file(&target.path, target.existing.is_none()).map_err(|err| {
         fail(format!(
             "cannot create a file in folder {}: {}",
             folder.display(),
@@ -360,12 +516,16 @@ fn ensure_replaceable(path: &Path, existing: &Metadata) -> Result<(), String> {
              make it writable first (`chmod u+w`) if it should change"
         ));
     }
-    // Opening for writing changes nothing (no truncation), but tells whether we may.
-    fs::OpenOptions::new()
-        .write(true)
-        .open(path)
-        .map(drop)
-        .map_err(|err| describe(&err))
+    // Opening for writing changes nothing (no truncation), but tells whether we may; without
+    // blocking, should a FIFO have been put there since it was looked at.
+    let mut options = fs::OpenOptions::new();
+    options.write(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.custom_flags(libc::O_NONBLOCK);
+    }
+    options.open(path).map(drop).map_err(|err| describe(&err))
 }
 
 /// What a file that is not a regular file is, for a message.
@@ -448,40 +608,71 @@ fn take_identity(temp: &fs::File, original: &Metadata) -> Result<bool, String> {
 }
 
 /// Copies the temporary file into the original, which keeps its inode, links and owner.
-/// The error says whether the original is still as it was.
-fn copy_in_place(mut temp: NamedTempFile, original: &Path) -> Result<(), (String, bool)> {
-    let mut file = fs::OpenOptions::new()
-        .write(true)
-        .open(original)
-        .map_err(|err| (describe(&err), true))?;
-    let copied = temp
-        .as_file_mut()
-        .rewind()
-        .and_then(|()| io::copy(temp.as_file_mut(), &mut file))
-        .and_then(|len| file.set_len(len))
-        .and_then(|()| file.sync_all());
-    let Err(err) = copied else {
-        return Ok(());
-    };
-    let kept = match temp.keep() {
-        Ok((_, path)) => format!("they are kept in {}", path.display()),
-        Err(_) => "they could not be kept".to_string(),
-    };
-    Err((
-        format!(
-            "{} while writing it in place (it has other hard links, or an owner ekb cannot \
-             give to a new file), so it may be partly written; its new contents: {kept}",
-            describe(&err)
-        ),
-        false,
-    ))
+/// First the temporary file, complete and on disk, is renamed to the original's
+/// [`restore_copy`]: if ekb is stopped while copying, the next ekb to read or write the
+/// file finds it and restores the file whole ([`finish_interrupted`]). The error says
+/// whether the original is still as it was.
+fn copy_in_place(temp: NamedTempFile, original: &Path) -> Result<(), (String, bool)> {
+    let copy = restore_copy(original);
+    let mut source = temp
+        .persist(&copy)
+        .map_err(|err| (describe(&err.error), true))?;
+    let folder = folder_of(original);
+    sync_folder(folder);
+    if let Err(err) = copy_into(&mut source, original) {
+        return Err((
+            format!(
+                "{} while writing it in place (it has other hard links, or an owner ekb cannot \
+                 give to a new file), so it may be partly written; its new contents are kept \
+                 whole in {}, and the next ekb run on it restores it from there",
+                describe(&err),
+                copy.display()
+            ),
+            false,
+        ));
+    }
+    let _ = fs::remove_file(&copy);
+    sync_folder(folder);
+    Ok(())
 }
 
-/// A temporary file in `folder`; a brand-new file gets the usual permissions (0666 less the
-/// umask) rather than the temporary file's private 0600.
-fn temporary_file(folder: &Path, new: bool) -> io::Result<NamedTempFile> {
+/// Copies `source`, from its start, over the file at `target` (the same inode), and
+/// flushes it to disk.
+fn copy_into(source: &mut fs::File, target: &Path) -> io::Result<()> {
+    let mut file = fs::OpenOptions::new().write(true).open(target)?;
+    source.rewind()?;
+    let len = io::copy(source, &mut file)?;
+    file.set_len(len)?;
+    file.sync_all()
+}
+
+/// The folder of `target`, for the files ekb puts beside it.
+fn folder_of(target: &Path) -> &Path {
+    match target.parent() {
+        Some(parent) if !parent.as_os_str().is_empty() => parent,
+        _ => Path::new("."),
+    }
+}
+
+/// How the temporary files of `target` begin: `.NAME.ekb-`, then [`TEMPORARY_RANDOM`]
+/// random characters and `.tmp`.
+fn temporary_prefix(target: &Path) -> String {
+    format!(".{}.ekb-", file_name(target))
+}
+
+const TEMPORARY_RANDOM: usize = 6;
+
+/// A temporary file beside `target`, named after it ([`temporary_prefix`]) and locked while
+/// ekb writes it, so that the next writer of `target` knows it abandoned if its writer was
+/// stopped; a brand-new file gets the usual permissions (0666 less the umask) rather than
+/// the temporary file's private 0600.
+fn temporary_file(target: &Path, new: bool) -> io::Result<NamedTempFile> {
     let mut builder = tempfile::Builder::new();
-    builder.prefix(".ekb-").suffix(".tmp");
+    let prefix = temporary_prefix(target);
+    builder
+        .prefix(&prefix)
+        .suffix(".tmp")
+        .rand_bytes(TEMPORARY_RANDOM);
     #[cfg(unix)]
     if new {
         use std::os::unix::fs::PermissionsExt;
@@ -489,7 +680,9 @@ fn temporary_file(folder: &Path, new: bool) -> io::Result<NamedTempFile> {
     }
     #[cfg(not(unix))]
     let _ = new;
-    builder.tempfile_in(folder)
+    let temp = builder.tempfile_in(folder_of(target))?;
+    try_lock(temp.as_file())?;
+    Ok(temp)
 }
 
 /// Makes the rename itself durable. Best effort: not every system can sync a folder.

@@ -475,3 +475,215 @@ fn check_reports_the_utf8_files_beside_a_utf16_one() {
         "{stdout}"
     );
 }
+
+/// A large knowledge base that `fmt` changes from its first line (the column of the ids), so
+/// that a copy stopped part-way is neither the old text nor the new.
+fn large_unformatted() -> String {
+    (1..=30_000)
+        .map(|id| {
+            format!(
+                "robotLocationDescription  {id} Room {id}\nrobotLocationPose {id} 1.0 2.0  0.0\n"
+            )
+        })
+        .collect()
+}
+
+/// What one round of [`kill_mid_write`] saw once the writer was killed.
+#[derive(Debug, PartialEq)]
+enum AfterKill {
+    Old,
+    New,
+    /// Neither, and the next ekb said it restored the file.
+    Restored,
+}
+
+/// When a round kills the writer.
+#[derive(Clone, Copy)]
+enum KillWhen {
+    /// As soon as the file itself starts to change: in the middle of the copy in place.
+    FileChanges,
+    /// As soon as its temporary file is there: while it writes the new text.
+    TemporaryAppears,
+}
+
+/// The hidden files of `dir`: what ekb puts beside a file it writes.
+fn hidden_names(dir: &Path) -> Vec<String> {
+    fs::read_dir(dir)
+        .unwrap()
+        .map(|entry| entry.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|entry| entry.starts_with('.'))
+        .collect()
+}
+
+/// Starts `ekb fmt path` (as `nobody` if `as_nobody`), SIGKILLs it at `when`, then runs
+/// `ekb check` and `ekb fmt` on the file as the same user and says what it found.
+fn kill_mid_write(path: &Path, old: &str, new: &str, as_nobody: bool, when: KillWhen) -> AfterKill {
+    let dir = path.parent().unwrap();
+    let name = path.file_name().unwrap().to_str().unwrap();
+    let ekb_command = || {
+        let mut command = if as_nobody {
+            let mut command = Command::new("setpriv");
+            command
+                .arg(format!("--reuid={NOBODY}"))
+                .arg(format!("--regid={NOBODY}"))
+                .arg("--clear-groups")
+                .arg(env!("CARGO_BIN_EXE_ekb"));
+            command
+        } else {
+            Command::new(env!("CARGO_BIN_EXE_ekb"))
+        };
+        command.env_remove("EKB_CONFIG").env_remove("EKB_READER");
+        command
+    };
+    fs::write(path, old).unwrap();
+    let before = fs::metadata(path).unwrap().mtime_nsec();
+    let mut writer = ekb_command()
+        .arg("fmt")
+        .arg(path)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    loop {
+        let now = fs::metadata(path).unwrap();
+        let fired = match when {
+            KillWhen::FileChanges => now.mtime_nsec() != before || now.len() != old.len() as u64,
+            KillWhen::TemporaryAppears => hidden_names(dir)
+                .iter()
+                .any(|entry| entry.ends_with(".tmp")),
+        };
+        if fired || writer.try_wait().unwrap().is_some() {
+            break;
+        }
+    }
+    writer.kill().unwrap(); // SIGKILL
+    writer.wait().unwrap();
+    let text = fs::read_to_string(path).unwrap();
+    let next = ekb_command().arg("check").arg(path).output().unwrap();
+    let said = stderr(&next);
+    let after = match text {
+        _ if text == old && !said.contains("restored") => AfterKill::Old,
+        _ if text == new && !said.contains("restored") => AfterKill::New,
+        _ => {
+            assert!(
+                said.contains(&format!("ekb: {} was being written in place by an ekb that was stopped: restored it whole from {}", path.display(), dir.join(format!(".{name}.ekb-restore")).display())),
+                "the file is torn and the next ekb said nothing of it: {said}"
+            );
+            assert_eq!(fs::read_to_string(path).unwrap(), new, "restored whole");
+            AfterKill::Restored
+        }
+    };
+    // The next writer removes what the killed one left.
+    let fmt = ekb_command().arg("fmt").arg(path).output().unwrap();
+    assert_eq!(fmt.status.code(), Some(0), "{}", stderr(&fmt));
+    assert_eq!(
+        hidden_names(dir),
+        Vec::<String>::new(),
+        "left beside the file"
+    );
+    after
+}
+
+/// Rounds of each [`KillWhen`].
+const KILL_ROUNDS: usize = 3;
+
+/// Kills `ekb fmt` writing `path` in place, round after round; the file is always whole.
+fn killed_writers_leave_a_whole_file(path: &Path, as_nobody: bool) {
+    let old = large_unformatted();
+    let formatted = Command::new(env!("CARGO_BIN_EXE_ekb"))
+        .args(["fmt", "-"])
+        .write_stdin_and_wait(&old);
+    let mut restored = 0;
+    for when in [KillWhen::FileChanges, KillWhen::TemporaryAppears] {
+        for _ in 0..KILL_ROUNDS {
+            let after = kill_mid_write(path, &old, &formatted, as_nobody, when);
+            restored += usize::from(after == AfterKill::Restored);
+        }
+    }
+    // Killed in the middle of the copy, the file was restored at least once.
+    assert!(restored > 0, "no round stopped a copy in place");
+}
+
+trait WriteStdin {
+    fn write_stdin_and_wait(&mut self, input: &str) -> String;
+}
+
+impl WriteStdin for Command {
+    fn write_stdin_and_wait(&mut self, input: &str) -> String {
+        use std::io::Write;
+        let mut child = self
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let mut stdin = child.stdin.take().unwrap();
+        let input = input.to_owned();
+        let feeding = std::thread::spawn(move || stdin.write_all(input.as_bytes()).unwrap());
+        let output = child.wait_with_output().unwrap();
+        feeding.join().unwrap();
+        String::from_utf8(output.stdout).unwrap()
+    }
+}
+
+#[test]
+fn a_killed_fmt_never_tears_a_hard_linked_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("kb.dat");
+    fs::write(&path, "").unwrap();
+    fs::hard_link(&path, dir.path().join("other-name.dat")).unwrap();
+    killed_writers_leave_a_whole_file(&path, false);
+    let other = fs::read(dir.path().join("other-name.dat")).unwrap();
+    assert_eq!(other, fs::read(&path).unwrap(), "still one file");
+}
+
+#[test]
+fn a_killed_fmt_never_tears_a_group_writable_file_of_another_user() {
+    if !is_root() {
+        eprintln!("skipped: needs root to become another user");
+        return;
+    }
+    let dir = folder_for_nobody();
+    let path = dir.path().join("kb.dat");
+    fs::write(&path, "").unwrap();
+    std::os::unix::fs::chown(&path, Some(0), Some(NOBODY)).unwrap();
+    fs::set_permissions(&path, fs::Permissions::from_mode(0o664)).unwrap();
+    killed_writers_leave_a_whole_file(&path, true);
+    let metadata = fs::metadata(&path).unwrap();
+    assert_eq!(
+        (metadata.uid(), metadata.gid()),
+        (0, NOBODY),
+        "its owner kept"
+    );
+}
+
+#[test]
+fn a_restore_copy_another_user_left_is_refused_not_copied_into_the_file() {
+    if !is_root() {
+        eprintln!("skipped: needs root to give a file to another user");
+        return;
+    }
+    let dir = folder_for_nobody();
+    let path = dir.path().join("kb.dat");
+    fs::write(&path, FIXED).unwrap();
+    let planted = dir.path().join(".kb.dat.ekb-restore");
+    fs::write(&planted, UNFIXED).unwrap();
+    std::os::unix::fs::chown(&planted, Some(NOBODY), Some(NOBODY)).unwrap();
+    let output = ekb().arg("check").arg(&path).output().unwrap();
+    assert_eq!(output.status.code(), Some(2), "{}", stderr(&output));
+    assert!(
+        stderr(&output).contains(".kb.dat.ekb-restore is there, as ekb names the copy it restores a file from, but it is not one ekb made"),
+        "{}",
+        stderr(&output)
+    );
+    assert_eq!(fs::read_to_string(&path).unwrap(), FIXED);
+    // Left by this user (the file's owner), the same copy is restored.
+    std::os::unix::fs::chown(&planted, Some(0), Some(0)).unwrap();
+    let output = ekb().arg("check").arg(&path).output().unwrap();
+    assert!(
+        stderr(&output).contains("restored it whole from"),
+        "{}",
+        stderr(&output)
+    );
+    assert_eq!(fs::read_to_string(&path).unwrap(), UNFIXED);
+    assert!(!planted.exists());
+}

@@ -1,5 +1,6 @@
 //! `ekb check [FILE...]`: validate knowledge bases.
 
+use std::collections::HashSet;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
@@ -95,18 +96,16 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     // A bad configuration fails every file alike: once, here.
     context.config()?;
     let choice = args.rules.choice();
+    if args.add_ignore {
+        return Ok(add_ignores(&paths, &choice, &args.map, context));
+    }
     // A file that cannot be read is told at once and the others are checked all the same;
     // the exit is 2 then. If none can be read, there is no report.
     let mut unreadable = false;
     let mut read = Vec::with_capacity(paths.len());
-    // `--add-ignore` holds each file's lock from reading it to writing it back.
-    let mut locks = Vec::new();
     for path in &paths {
         let plan = context.read_options(path).and_then(|options| {
             let rules = context.rules_for(path, &choice)?;
-            if args.add_ignore {
-                locks.push(rewrite::lock(path, Mode::Write)?);
-            }
             Ok((path.clone(), options, rules, context.read_to_report(path)?))
         });
         match plan {
@@ -128,21 +127,16 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         .iter()
         .map(|(_, options, rules, source)| check_file(source, options, rules, map.as_ref()))
         .collect();
-    let exit = if args.add_ignore {
-        let paths: Vec<PathBuf> = read.iter().map(|(path, ..)| path.clone()).collect();
-        add_ignores(&paths, &checked, context)?
-    } else {
-        let shown = Shown {
-            format: args.format,
-            deny_warnings: args.deny_warnings,
-            exit_zero: args.exit_zero,
-            level: args.level,
-            statistics: args.statistics,
-            show_all: args.show_all,
-            output_file: args.output_file.as_deref(),
-        };
-        report(checked, &shown, context)?
+    let shown = Shown {
+        format: args.format,
+        deny_warnings: args.deny_warnings,
+        exit_zero: args.exit_zero,
+        level: args.level,
+        statistics: args.statistics,
+        show_all: args.show_all,
+        output_file: args.output_file.as_deref(),
     };
+    let exit = report(checked, &shown, context)?;
     Ok(if unreadable { Exit::Failure } else { exit })
 }
 
@@ -217,19 +211,41 @@ pub fn report(mut checked: Vec<Checked<'_>>, shown: &Shown, context: &Context) -
     }
 }
 
-/// `--add-ignore`: writes a suppression above each line with findings, file by file, and
-/// says how many on standard error.
-fn add_ignores(paths: &[PathBuf], checked: &[Checked<'_>], context: &Context) -> CommandResult {
+/// `--add-ignore`: writes a suppression above each line with findings, and says how many on
+/// standard error. One file at a time, from its lock to its write (so one lock and one open
+/// file at a time, and two ekb given the same files in another order never wait on each
+/// other); a file named twice (by any of its names) is done once.
+fn add_ignores(paths: &[PathBuf], choice: &Choice, map_args: &MapArgs, context: &Context) -> Exit {
     let style = DiffStyle {
         color: context.color_stdout(),
     };
-    let mut files = checked.iter();
-    Ok(rewrite::for_each_file(paths, |path| {
-        let checked = files.next().expect("one check per path");
-        let source = checked.source;
-        rewrite::ensure_rewritable(source)?;
+    let mut done = HashSet::new();
+    // One map for all the files, as for a report: that of the first file's `ekb.toml`.
+    let mut map = None;
+    rewrite::for_each_file(paths, |path| {
+        let id = crate::write::FileId::of(path);
+        if id.is_some_and(|id| done.contains(&id)) {
+            return Ok(Exit::Clean);
+        }
+        let _lock = rewrite::lock(path, Mode::Write)?;
+        let options = context.read_options(path)?;
+        let rules = context.rules_for(path, choice)?;
+        let source = context.read_to_report(path)?;
+        if map.is_none() {
+            let map_config = context.settings_for(path)?.map.config;
+            map = Some(map_args.load(map_config.map(|config| config.value))?);
+        }
+        let checked = check_file(
+            &source,
+            &options,
+            &rules,
+            map.as_ref().and_then(Option::as_ref),
+        );
+        rewrite::ensure_rewritable(&source)?;
         let (text, added) = suppression::add_ignores(source.text(), &checked.diagnostics);
-        rewrite::deliver(path, source, &text, Mode::Write, style)?;
+        rewrite::deliver(path, &source, &text, Mode::Write, style)?;
+        // Replaced by a rename, the file has a new inode: its other names now lead there.
+        done.extend(id.into_iter().chain(crate::write::FileId::of(path)));
         if !context.quiet {
             let s = if added == 1 { "" } else { "s" };
             stderr_line!(
@@ -238,5 +254,5 @@ fn add_ignores(paths: &[PathBuf], checked: &[Checked<'_>], context: &Context) ->
             );
         }
         Ok(Exit::Clean)
-    }))
+    })
 }

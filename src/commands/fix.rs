@@ -172,7 +172,7 @@ fn from_latin1(path: &Path, read: &SourceFile) -> Result<SourceFile, CommandErro
              Latin-1; give the file's path"
         )));
     }
-    let bytes = std::fs::read(path).map_err(|e| {
+    let bytes = crate::open::read_regular(path).map_err(|e| {
         CommandError::Failed(format!("cannot read {name} again to convert it: {e}"))
     })?;
     let text = fixing::from_latin1(&bytes).ok_or_else(|| {

@@ -37,6 +37,7 @@ pub mod loader;
 pub mod map;
 pub mod mission;
 pub mod model;
+pub mod open;
 pub mod present;
 pub mod reader;
 pub mod render;

@@ -367,24 +367,18 @@ enum Refusal {
 
 const NOT_REGULAR: &str = "it is not a regular file (a pipe, socket or device)";
 
-/// Opens a regular file of at most `limit` bytes, with its metadata as opened.
+/// Opens a regular file of at most `limit` bytes ([`crate::open::open_regular`]), with its
+/// metadata as opened.
 fn open_regular(path: &Path, limit: u64) -> Result<(File, Metadata), Refusal> {
-    // Looked at before opening: opening a FIFO blocks until a writer comes.
-    let metadata = std::fs::metadata(path).map_err(|e| Refusal::Other(describe_io_error(&e)))?;
-    if metadata.is_dir() {
-        return Err(Refusal::Directory);
-    }
-    if !metadata.is_file() {
-        return Err(Refusal::NotRegular);
-    }
+    use crate::open::Refusal as Opened;
+    let (file, metadata) = crate::open::open_regular(path).map_err(|refusal| match refusal {
+        Opened::Directory => Refusal::Directory,
+        Opened::NotRegular => Refusal::NotRegular,
+        Opened::Io(e) => Refusal::Other(describe_io_error(&e)),
+    })?;
     if metadata.len() > limit {
         return Err(Refusal::Other(too_large(limit)));
     }
-    let file = File::open(path).map_err(|e| Refusal::Other(describe_io_error(&e)))?;
-    // The metadata of the file opened, which is what the stamp must describe.
-    let metadata = file
-        .metadata()
-        .map_err(|e| Refusal::Other(describe_io_error(&e)))?;
     Ok((file, metadata))
 }
 

@@ -25,7 +25,7 @@ pub(super) struct Located<'a> {
 impl MapFile {
     /// Reads `path`; `named_by` says which file and line named it, for the error.
     pub fn read(path: &Path, named_by: Option<String>) -> Result<MapFile, MapError> {
-        let bytes = std::fs::read(path)
+        let bytes = crate::open::read_regular(path)
             .map_err(|error| MapError::cannot_read(path, &error, named_by.as_deref()))?;
         let text = String::from_utf8(bytes).map_err(|error| {
             let offset = error.utf8_error().valid_up_to();

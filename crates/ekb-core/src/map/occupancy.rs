@@ -48,7 +48,8 @@ pub struct Pixel {
 impl Occupancy {
     /// Reads and decodes the PNG at `path`; `named_by` says which file and line named it.
     pub fn read(path: &Path, named_by: Option<&str>) -> Result<Occupancy, MapError> {
-        let png = std::fs::read(path).map_err(|e| MapError::cannot_read(path, &e, named_by))?;
+        let png = crate::open::read_regular(path)
+            .map_err(|e| MapError::cannot_read(path, &e, named_by))?;
         let (width, height, grey) = decode(&png).map_err(|refusal| match refusal {
             Refusal::Unreadable(reason) => MapError(format!(
                 "{}: not a PNG image that ekb can read ({reason}); the map must be a PNG (white free, black occupied)",

@@ -133,9 +133,9 @@ fn read(path: &Path) -> Result<Option<String>, String> {
     if !path.is_file() {
         return Ok(None);
     }
-    std::fs::read_to_string(path)
-        .map(Some)
-        .map_err(|e| format!("cannot read {}: {e}", path.display()))
+    let fail = |e: &dyn std::fmt::Display| format!("cannot read {}: {e}", path.display());
+    let bytes = crate::open::read_regular(path).map_err(|e| fail(&e))?;
+    String::from_utf8(bytes).map(Some).map_err(|e| fail(&e))
 }
 
 /// How the robot reads one of its two configuration files: the first word of a line is
