@@ -5,6 +5,7 @@
 // Usage: ekb-loader-test EKB_EXECUTABLE FILE...
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "environmentKnowledgeBaseInterface.h"
@@ -126,11 +128,31 @@ void expectFindings(const std::string &where, const std::vector<ekb::Finding> &g
     std::vector<const ekb::Finding *> kept;
     for (const ekb::Finding &finding : got)
         if (finding.rule.rfind(ignoredPrefix, 0) != 0) kept.push_back(&finding);
-    EXPECT(kept.size() == want.array.size(), where + ".findings",
-           "count " + std::to_string(kept.size()) + ", ekb check has " + std::to_string(want.array.size()));
-    for (std::size_t i = 0; i < kept.size() && i < want.array.size(); ++i) {
+    // The library lists them as people read them, errors first (a consequence after its
+    // cause); ekb check's JSON in the file's order.
+    for (std::size_t i = 1; i < kept.size(); ++i)
+        EXPECT(ekb::severity_name(kept[i]->severity) != std::string("error") ||
+                   ekb::severity_name(kept[i - 1]->severity) == std::string("error"),
+               where + ".findings[" + std::to_string(i) + "]", "an error after a warning");
+    // Both by place, then rule (findings of two rules can share a place).
+    std::sort(kept.begin(), kept.end(), [](const ekb::Finding *a, const ekb::Finding *b) {
+        return std::tie(a->line, a->column, a->endLine, a->endColumn, a->rule) <
+               std::tie(b->line, b->column, b->endLine, b->endColumn, b->rule);
+    });
+    std::vector<const json::Value *> wanted;
+    for (const json::Value &d : want.array) wanted.push_back(&d);
+    std::sort(wanted.begin(), wanted.end(), [](const json::Value *a, const json::Value *b) {
+        auto key = [](const json::Value *d) {
+            return std::make_tuple((*d)["line"].number, (*d)["column"].number, (*d)["end_line"].number,
+                                   (*d)["end_column"].number, (*d)["rule"].string);
+        };
+        return key(a) < key(b);
+    });
+    EXPECT(kept.size() == wanted.size(), where + ".findings",
+           "count " + std::to_string(kept.size()) + ", ekb check has " + std::to_string(wanted.size()));
+    for (std::size_t i = 0; i < kept.size() && i < wanted.size(); ++i) {
         const ekb::Finding &f = *kept[i];
-        const json::Value &d = want.array[i];
+        const json::Value &d = *wanted[i];
         std::string at = where + ".findings[" + std::to_string(i) + "]";
         EXPECT(f.rule == d["rule"].string, at, "rule " + f.rule + ", ekb check has " + d["rule"].string);
         EXPECT(ekb::severity_name(f.severity) == d["severity"].string, at, "severity");
