@@ -14,16 +14,27 @@ use author_support::{fixture, temp_file};
 /// Rounds of two concurrent `ekb set`: without the lock, a few in a hundred lost a change.
 const ROUNDS: usize = 60;
 
-fn spawn_set(path: &Path, id: &str, text: &str) -> Child {
+/// `ekb ARGS`, its error output kept.
+fn spawn_ekb<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> Child {
     Command::new(env!("CARGO_BIN_EXE_ekb"))
-        .args(["set", id, "preGestureMessageEnglish", text])
-        .arg(path)
+        .args(args)
         .env_remove("EKB_CONFIG")
         .env_remove("EKB_READER")
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()
         .expect("ekb runs")
+}
+
+fn spawn_set(path: &Path, id: &str, text: &str) -> Child {
+    let path = path.as_os_str();
+    spawn_ekb(&[
+        "set".as_ref(),
+        id.as_ref(),
+        "preGestureMessageEnglish".as_ref(),
+        text.as_ref(),
+        path,
+    ])
 }
 
 /// Waits for `child`; `true` if it said it made its change.
@@ -91,15 +102,9 @@ fn finished(mut child: Child) -> Output {
 }
 
 fn spawn_add_ignore(files: &[PathBuf]) -> Child {
-    Command::new(env!("CARGO_BIN_EXE_ekb"))
-        .args(["check", "--add-ignore"])
-        .args(files)
-        .env_remove("EKB_CONFIG")
-        .env_remove("EKB_READER")
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("ekb runs")
+    let args = ["check", "--add-ignore"].iter().map(std::ffi::OsStr::new);
+    let args: Vec<&std::ffi::OsStr> = args.chain(files.iter().map(|f| f.as_os_str())).collect();
+    spawn_ekb(&args)
 }
 
 fn suppressions_in(path: &Path) -> usize {

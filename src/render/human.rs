@@ -676,14 +676,16 @@ mod tests {
         text
     }
 
+    /// Two locations of [`untranslated_location`] on a tour: four placeholders.
+    fn two_untranslated_locations() -> String {
+        let (first, second) = (untranslated_location(1), untranslated_location(2));
+        format!("{first}{second}tourSpecification 2 1 2\n")
+    }
+
     #[test]
     fn a_rules_many_warnings_are_one_paragraph_unless_all_are_asked_for() {
         // Two locations: four placeholders, grouped; one: two, each drawn.
-        let text = format!(
-            "{}{}tourSpecification 2 1 2\n",
-            untranslated_location(1),
-            untranslated_location(2)
-        );
+        let text = two_untranslated_locations();
         let grouped = human_with("kb.dat", &text, &RenderOptions::default());
         assert_eq!(
             grouped.matches("warning[untranslated-message]").count(),
@@ -721,11 +723,7 @@ mod tests {
 
     #[test]
     fn a_grouped_rule_names_a_file_the_shell_reads_as_one_word() {
-        let text = format!(
-            "{}{}tourSpecification 2 1 2\n",
-            untranslated_location(1),
-            untranslated_location(2)
-        );
+        let text = two_untranslated_locations();
         let out = human_with("lab 2/it's.dat", &text, &RenderOptions::default());
         assert!(
             out.contains("--select untranslated-message 'lab 2/it'\\''s.dat'\n"),
