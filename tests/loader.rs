@@ -307,3 +307,120 @@ fn the_drop_in_string_length_is_the_programs() {
         );
     }
 }
+
+/// A folder holding `ekb.toml` with `settings` and, in its folder `lab/`, a clean file and one
+/// whose tour stops at a location that does not exist: the folder, the clean and the bad.
+fn under_settings(settings: &str) -> (tempfile::TempDir, std::path::PathBuf, std::path::PathBuf) {
+    let root = tempfile::tempdir().unwrap();
+    std::fs::write(root.path().join("ekb.toml"), settings).unwrap();
+    let lab = root.path().join("lab");
+    std::fs::create_dir(&lab).unwrap();
+    let text = std::fs::read_to_string(fixture("check/clean-current.dat")).unwrap();
+    let clean = lab.join("clean.dat");
+    std::fs::write(&clean, &text).unwrap();
+    let bad = lab.join("bad-tour.dat");
+    std::fs::write(
+        &bad,
+        text.replace("tourSpecification 2 1 2", "tourSpecification 2 1 9"),
+    )
+    .unwrap();
+    (root, clean, bad)
+}
+
+const SILENCING: &str = "[check]\nignore = [\"tour\"]\n";
+
+#[test]
+fn an_ekb_toml_above_the_file_is_not_read_unless_named() {
+    let (root, _, bad) = under_settings(SILENCING);
+    // `ekb check` finds it, and silences the tour rules: the bad tour passes the check.
+    Command::cargo_bin("ekb")
+        .unwrap()
+        .args(["check", bad.to_str().unwrap()])
+        .assert()
+        .code(0);
+    // The loader reads no settings it was not asked for: refused for the stop at 9.
+    let error = loader::load_path(&bad, &Options::default()).unwrap_err();
+    let unknown = error
+        .findings()
+        .iter()
+        .find(|f| f.rule == "tour-unknown-location")
+        .unwrap_or_else(|| panic!("{error:?}"));
+    assert_eq!((unknown.severity, unknown.line), (Severity::Error, 21));
+    // Named by path, the same settings are obeyed.
+    let named = Options {
+        settings: Lookup::Explicit(root.path().join("ekb.toml")),
+        ..Options::default()
+    };
+    let kb = loader::load_path(&bad, &named).unwrap();
+    assert_eq!(kb.tour(), [1, 9]);
+}
+
+#[test]
+fn a_fifo_or_a_folder_where_ekb_toml_would_be_stops_no_load() {
+    let (root, clean, _) = under_settings("");
+    let settings = root.path().join("ekb.toml");
+    std::fs::remove_file(&settings).unwrap();
+    let made = std::process::Command::new("mkfifo")
+        .arg(&settings)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let kb = loader::load_path(&clean, &Options::default()).unwrap();
+    assert_eq!(kb.tour(), [1, 2]);
+    assert!(loader::check_path(&clean, &Options::default()).is_ok());
+    std::fs::remove_file(&settings).unwrap();
+    std::fs::create_dir(&settings).unwrap();
+    assert!(loader::load_path(&clean, &Options::default()).is_ok());
+    // Asked for by path, settings that cannot be read make the file unreadable.
+    let named = Options {
+        settings: Lookup::Explicit(settings),
+        ..Options::default()
+    };
+    let error = loader::load_path(&clean, &named).unwrap_err();
+    assert!(matches!(error, LoadError::Unreadable { .. }), "{error:?}");
+}
+
+#[test]
+fn an_unreadable_file_is_named_escaped_and_short() {
+    let hostile = format!("/nonexistent/\u{1b}]0;pwned\u{7}{}", "a".repeat(900 * 1024));
+    let error = loader::load_path(Path::new(&hostile), &Options::default()).unwrap_err();
+    let LoadError::Unreadable { file, reason } = &error else {
+        panic!("{error:?}");
+    };
+    let message = error.to_string();
+    for text in [file, reason, &message] {
+        assert!(!text.chars().any(|c| c.is_control()), "{text:.200}");
+        assert!(text.len() < 2_000, "{} bytes", text.len());
+    }
+    assert!(
+        file.starts_with("/nonexistent/\\u{001B}]0;pwned\\u{0007}aaa"),
+        "{file:.100}"
+    );
+    let more = hostile.chars().count() - 300;
+    assert!(
+        file.ends_with(&format!("… ({more} more characters)")),
+        "{file}"
+    );
+}
+
+#[test]
+fn a_configurations_value_is_escaped_and_short() {
+    let folder = tempfile::tempdir().unwrap();
+    let config = folder
+        .path()
+        .join("environmentKnowledgeBaseConfiguration.ini");
+    let value = format!("\u{1b}]0;pwned\u{7}{}", "b".repeat(900 * 1024));
+    std::fs::write(&config, format!("knowledgeBase {value}\n")).unwrap();
+    let error = loader::load_configured(Some(&config), &Options::default()).unwrap_err();
+    let message = error.to_string();
+    assert!(!message.chars().any(|c| c.is_control()), "{message:.300}");
+    assert!(
+        message.len() < 2_000,
+        "{} bytes: {message:.300}",
+        message.len()
+    );
+    assert!(
+        message.contains("\\u{001B}]0;pwned\\u{0007}"),
+        "{message:.300}"
+    );
+}

@@ -23,8 +23,8 @@ typedef enum ekb_status {
   EKB_STALE_HANDLE = 4,
   // No location has this id.
   EKB_UNKNOWN_ID = 5,
-  // A null pointer where a value is needed, an index out of range, a name that is not
-  // UTF-8, an unknown reader.
+  // A null pointer where a value is needed, an index out of range, a buffer's name that
+  // is not UTF-8, an unknown reader.
   EKB_BAD_ARGUMENT = 6,
   // The handle holds a refused or unreadable file: it has no locations or tour.
   EKB_NOT_LOADED = 7,
@@ -51,7 +51,9 @@ typedef struct ekb_str {
   size_t len;
 } ekb_str;
 
-// How a file is checked before it is loaded. A null `ekb_options*` is all defaults.
+// How a file is checked before it is loaded. A null `ekb_options*` is all defaults; zero
+// the struct (`ekb_options options = {0};`) before setting fields, so that a field added
+// at its end in a later version is its default.
 typedef struct ekb_options {
   // The robot's reader to check against (`d5.4.2`, `2025-06`, `2026-02`, `2026-03`,
   // `2026-04`); absent (`{NULL, 0}`): as `ekb check` chooses.
@@ -60,12 +62,18 @@ typedef struct ekb_options {
   // `string_length` bytes or more, a tour of more than 20 stops, more than 2 culture
   // words): what the drop-in class `Environment::EnvironmentKnowledgeBase` needs.
   bool fixed_size_limits;
-  // Ignore the project settings (`ekb.toml`), as `ekb --isolated`.
+  // Read no project settings, not even `settings_path`'s. The loader reads none it is not
+  // asked for (an `ekb.toml` above the file changes nothing): this is for programs written
+  // when it did.
   bool isolated;
   // The `STRING_LENGTH` of those types, its NUL included, as the program was compiled
   // with it (600 for the `2026-04` header); 0: the document's 200. Outside 2 ..= 1048576:
   // [`EKB_BAD_ARGUMENT`].
   size_t string_length;
+  // The project settings (`ekb.toml`) to check with, by path (bytes, as the system takes
+  // a file name); absent (`{NULL, 0}`): none. Settings that cannot be read make the file
+  // [`EKB_UNREADABLE`].
+  struct ekb_str settings_path;
 } ekb_options;
 
 // An open knowledge base (or a refused one, with its findings); 0 is no handle.
@@ -127,8 +135,9 @@ typedef struct ekb_location {
 extern "C" {
 #endif // __cplusplus
 
-// Opens the knowledge base at `path` (`path_len` bytes of UTF-8), checked as `ekb check`
-// checks it. `options` may be null.
+// Opens the knowledge base at `path` (`path_len` bytes, as the system takes a file name),
+// checked as `ekb check --isolated` checks it (or with `options.settings_path`).
+// `options` may be null.
 //
 // # Safety
 // `path` is valid for `path_len` bytes, `options` null or valid, `out` valid for a write.
@@ -138,7 +147,7 @@ enum ekb_status ekb_open_path(const char *path,
                               ekb_handle *out);
 
 // Opens the `data_len` bytes at `data` as the content of a file called `name` (the name
-// the findings give; the project settings are looked up from it). `options` may be null.
+// the findings give, UTF-8). `options` may be null.
 //
 // # Safety
 // `name` is valid for `name_len` bytes, `data` for `data_len`, `options` null or valid,
@@ -151,7 +160,7 @@ enum ekb_status ekb_open_buffer(const char *name,
                                 ekb_handle *out);
 
 // Opens the knowledge base that a configuration names, as the robot's class does: the
-// configuration at `config` (`config_len` bytes), or with `config` null, `EKB_CONFIG`,
+// configuration at `config` (`config_len` bytes, a file name), or with `config` null, `EKB_CONFIG`,
 // else `config/environmentKnowledgeBaseConfiguration.ini` under the current folder.
 //
 // # Safety
@@ -228,6 +237,17 @@ enum ekb_status ekb_reader(ekb_handle handle, struct ekb_str *out);
 // The name of a status, e.g. `EKB_STALE_HANDLE`, for messages; `EKB_UNKNOWN_STATUS` for a
 // number that is none.
 struct ekb_str ekb_status_name(int32_t status);
+
+// `text` (`len` bytes; an invalid UTF-8 byte is shown as U+FFFD) as every message of ekb
+// shows a value: control and invisible characters escaped (`\u{001B}`), cut after 300
+// characters with a note of how many more there are. Writes it to `out` if it fits in
+// `capacity` bytes, and its length to `needed` (call with `capacity` 0 to learn it); for a
+// program's own messages about paths or values it did not write.
+//
+// # Safety
+// `text` is null or valid for `len` bytes, `out` null or valid for `capacity` bytes,
+// `needed` valid for a write.
+enum ekb_status ekb_shown(const char *text, size_t len, char *out, size_t capacity, size_t *needed);
 
 // The version of ekb, e.g. `0.1.0`.
 struct ekb_str ekb_version(void);

@@ -125,11 +125,15 @@ struct Options {
     std::string reader;
     // Refuse values the document's fixed-size types cannot hold (the drop-in class).
     bool fixedSizeLimits = false;
-    // Ignore the project settings (ekb.toml), as `ekb --isolated`.
+    // Read no project settings, not even settingsPath's (for programs written when an
+    // ekb.toml above the file was read).
     bool isolated = false;
     // With fixedSizeLimits: the STRING_LENGTH of those types, its NUL included (the
     // program's: 600 for the 2026-04 header); 0: the document's 200. Else 2 to 1048576.
     std::size_t stringLength = 0;
+    // The project settings (ekb.toml) to check with, by path; empty: none. The loader reads
+    // no settings it is not asked for: an ekb.toml above the file changes nothing.
+    std::string settingsPath;
 };
 
 namespace detail {
@@ -147,6 +151,20 @@ inline void expect(ekb_status status, const char *call) {
 
 inline ekb_str str(std::string_view text) { return ekb_str{text.data(), text.size()}; }
 
+}  // namespace detail
+
+// `text` as every message of ekb shows a value: control and invisible characters escaped,
+// cut after 300 characters; for a program's own messages about paths it did not write.
+inline std::string shown(std::string_view text) {
+    std::size_t needed = 0;
+    detail::expect(ekb_shown(text.data(), text.size(), nullptr, 0, &needed), "ekb_shown");
+    std::string out(needed, '\0');
+    detail::expect(ekb_shown(text.data(), text.size(), out.data(), out.size(), &needed), "ekb_shown");
+    return out;
+}
+
+namespace detail {
+
 inline ekb_options options(const Options &options) {
     if (options.stringLength == 1 || options.stringLength > (std::size_t(1) << 20))
         throw std::invalid_argument("ekb::Options::stringLength is " + std::to_string(options.stringLength) +
@@ -155,6 +173,7 @@ inline ekb_options options(const Options &options) {
     out.reader = options.reader.empty() ? ekb_str{nullptr, 0} : str(options.reader);
     out.fixed_size_limits = options.fixedSizeLimits;
     out.isolated = options.isolated;
+    out.settings_path = options.settingsPath.empty() ? ekb_str{nullptr, 0} : str(options.settingsPath);
     out.string_length = options.stringLength;
     return out;
 }

@@ -309,7 +309,8 @@ private:
             std::error_code ignored;
             if (std::filesystem::exists(candidate, ignored)) return candidate;
             std::filesystem::path shown = std::filesystem::absolute(candidate, ignored);
-            tried += (tried.empty() ? "" : ", ") + (shown.empty() ? candidate : shown.string());
+            // The package's folder or the current one may have any name: shown as ekb shows one.
+            tried += (tried.empty() ? "" : ", ") + ekb::shown(shown.empty() ? candidate : shown.string());
         }
         throw ekb::LoadError("no environmentKnowledgeBaseConfiguration.ini " + where + "; tried " + tried +
                                  " (EKB_CONFIG, not set, may name one)",

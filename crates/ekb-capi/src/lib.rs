@@ -50,8 +50,8 @@ pub enum ekb_status {
     EKB_STALE_HANDLE = 4,
     /// No location has this id.
     EKB_UNKNOWN_ID = 5,
-    /// A null pointer where a value is needed, an index out of range, a name that is not
-    /// UTF-8, an unknown reader.
+    /// A null pointer where a value is needed, an index out of range, a buffer's name that
+    /// is not UTF-8, an unknown reader.
     EKB_BAD_ARGUMENT = 6,
     /// The handle holds a refused or unreadable file: it has no locations or tour.
     EKB_NOT_LOADED = 7,
@@ -90,7 +90,9 @@ impl ekb_str {
     }
 }
 
-/// How a file is checked before it is loaded. A null `ekb_options*` is all defaults.
+/// How a file is checked before it is loaded. A null `ekb_options*` is all defaults; zero
+/// the struct (`ekb_options options = {0};`) before setting fields, so that a field added
+/// at its end in a later version is its default.
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct ekb_options {
@@ -101,12 +103,18 @@ pub struct ekb_options {
     /// `string_length` bytes or more, a tour of more than 20 stops, more than 2 culture
     /// words): what the drop-in class `Environment::EnvironmentKnowledgeBase` needs.
     pub fixed_size_limits: bool,
-    /// Ignore the project settings (`ekb.toml`), as `ekb --isolated`.
+    /// Read no project settings, not even `settings_path`'s. The loader reads none it is not
+    /// asked for (an `ekb.toml` above the file changes nothing): this is for programs written
+    /// when it did.
     pub isolated: bool,
     /// The `STRING_LENGTH` of those types, its NUL included, as the program was compiled
     /// with it (600 for the `2026-04` header); 0: the document's 200. Outside 2 ..= 1048576:
     /// [`EKB_BAD_ARGUMENT`].
     pub string_length: usize,
+    /// The project settings (`ekb.toml`) to check with, by path (bytes, as the system takes
+    /// a file name); absent (`{NULL, 0}`): none. Settings that cannot be read make the file
+    /// [`EKB_UNREADABLE`].
+    pub settings_path: ekb_str,
 }
 
 /// Where the robot stands: metres, metres, degrees.
@@ -282,6 +290,31 @@ unsafe fn text<'a>(ptr: *const c_char, len: usize) -> Result<Option<&'a str>, ek
         .map_err(|_| EKB_BAD_ARGUMENT)
 }
 
+/// The path of `len` bytes at `ptr`, as the system takes a file name (any bytes but NUL on
+/// Unix; UTF-8 elsewhere); `None` for a null pointer.
+///
+/// # Safety
+/// `ptr` is null or valid for `len` bytes.
+unsafe fn path<'a>(ptr: *const c_char, len: usize) -> Result<Option<&'a Path>, ekb_status> {
+    if ptr.is_null() {
+        return if len == 0 {
+            Ok(None)
+        } else {
+            Err(EKB_BAD_ARGUMENT)
+        };
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::ffi::OsStrExt;
+        let bytes = bytes(ptr.cast(), len)?;
+        Ok(Some(Path::new(std::ffi::OsStr::from_bytes(bytes))))
+    }
+    #[cfg(not(unix))]
+    {
+        Ok(text(ptr, len)?.map(Path::new))
+    }
+}
+
 /// The loader's options from `options` (null: the defaults).
 ///
 /// # Safety
@@ -303,10 +336,9 @@ unsafe fn options(options: *const ekb_options) -> Result<Options, ekb_status> {
         reader,
         fixed_size_limits: options.fixed_size_limits,
         string_length,
-        settings: if options.isolated {
-            Lookup::Isolated
-        } else {
-            Lookup::Discover
+        settings: match path(options.settings_path.ptr, options.settings_path.len)? {
+            Some(settings) if !options.isolated => Lookup::Explicit(settings.to_path_buf()),
+            _ => Lookup::Isolated,
         },
         ..Options::default()
     })
@@ -352,8 +384,9 @@ unsafe fn open(
     }
 }
 
-/// Opens the knowledge base at `path` (`path_len` bytes of UTF-8), checked as `ekb check`
-/// checks it. `options` may be null.
+/// Opens the knowledge base at `path` (`path_len` bytes, as the system takes a file name),
+/// checked as `ekb check --isolated` checks it (or with `options.settings_path`).
+/// `options` may be null.
 ///
 /// # Safety
 /// `path` is valid for `path_len` bytes, `options` null or valid, `out` valid for a write.
@@ -365,13 +398,13 @@ pub unsafe extern "C" fn ekb_open_path(
     out: *mut ekb_handle,
 ) -> ekb_status {
     open(out, || {
-        let path = text(path, path_len)?.ok_or(EKB_BAD_ARGUMENT)?;
-        Ok(loader::load_path(Path::new(path), &self::options(options)?))
+        let path = self::path(path, path_len)?.ok_or(EKB_BAD_ARGUMENT)?;
+        Ok(loader::load_path(path, &self::options(options)?))
     })
 }
 
 /// Opens the `data_len` bytes at `data` as the content of a file called `name` (the name
-/// the findings give; the project settings are looked up from it). `options` may be null.
+/// the findings give, UTF-8). `options` may be null.
 ///
 /// # Safety
 /// `name` is valid for `name_len` bytes, `data` for `data_len`, `options` null or valid,
@@ -393,7 +426,7 @@ pub unsafe extern "C" fn ekb_open_buffer(
 }
 
 /// Opens the knowledge base that a configuration names, as the robot's class does: the
-/// configuration at `config` (`config_len` bytes), or with `config` null, `EKB_CONFIG`,
+/// configuration at `config` (`config_len` bytes, a file name), or with `config` null, `EKB_CONFIG`,
 /// else `config/environmentKnowledgeBaseConfiguration.ini` under the current folder.
 ///
 /// # Safety
@@ -407,7 +440,7 @@ pub unsafe extern "C" fn ekb_open_configured(
     out: *mut ekb_handle,
 ) -> ekb_status {
     open(out, || {
-        let config = text(config, config_len)?.map(Path::new);
+        let config = path(config, config_len)?;
         Ok(loader::load_configured(config, &self::options(options)?))
     })
 }
@@ -656,6 +689,34 @@ pub extern "C" fn ekb_status_name(status: i32) -> ekb_str {
         .find(|(known, _)| *known as i32 == status)
         .map_or("EKB_UNKNOWN_STATUS", |(_, name)| name);
     ekb_str::of(name)
+}
+
+/// `text` (`len` bytes; an invalid UTF-8 byte is shown as U+FFFD) as every message of ekb
+/// shows a value: control and invisible characters escaped (`\u{001B}`), cut after 300
+/// characters with a note of how many more there are. Writes it to `out` if it fits in
+/// `capacity` bytes, and its length to `needed` (call with `capacity` 0 to learn it); for a
+/// program's own messages about paths or values it did not write.
+///
+/// # Safety
+/// `text` is null or valid for `len` bytes, `out` null or valid for `capacity` bytes,
+/// `needed` valid for a write.
+#[no_mangle]
+pub unsafe extern "C" fn ekb_shown(
+    text: *const c_char,
+    len: usize,
+    out: *mut c_char,
+    capacity: usize,
+    needed: *mut usize,
+) -> ekb_status {
+    guarded(|| {
+        let text = String::from_utf8_lossy(bytes(text.cast(), len)?);
+        let shown = ekb_core::render::clip::shown(&text);
+        put(needed, shown.len())?;
+        if shown.len() <= capacity && !out.is_null() {
+            std::ptr::copy_nonoverlapping(shown.as_ptr(), out.cast(), shown.len());
+        }
+        Ok(())
+    })
 }
 
 /// The version of ekb, e.g. `0.1.0`.

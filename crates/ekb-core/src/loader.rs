@@ -25,6 +25,7 @@ use crate::diagnostic::Severity;
 use crate::model::build;
 use crate::model::export::{ExportedKnowledgeBase, ExportedLocation, ExportedMessages};
 use crate::model::Dialect;
+use crate::render::clip::shown;
 use crate::render::escape::escape;
 use crate::render::FileReport;
 use crate::robot::Reader;
@@ -106,13 +107,16 @@ impl Location<'_> {
 /// How to check a file before loading it.
 #[derive(Debug, Clone)]
 pub struct Options {
-    /// The version of the robot's reader to check against; `None`: the one `ekb.toml`
-    /// names, else the configuration's, else the one of the file's dialect.
+    /// The version of the robot's reader to check against; `None`: the one the settings
+    /// name, else the configuration's, else the one of the file's dialect.
     pub reader: Option<Reader>,
     /// The dialect to read the file in; `None`: detected from the file.
     pub dialect: Option<Dialect>,
-    /// Where the project settings (`ekb.toml`) come from: the file's folder and its parents
-    /// (the default, as `ekb check` does), one named file, or none.
+    /// Which project settings (`ekb.toml`) apply: none (the default), or the one file the
+    /// program names. A program on the robot reads no settings it did not ask for: an
+    /// `ekb.toml` in a folder above the file (the system's temporary folder, which anyone
+    /// may write) never changes or stops a load. `Lookup::Discover` finds one from the
+    /// file's folder up, as `ekb check` does.
     pub settings: Lookup,
     /// Refuse a value that the document's fixed-size types cannot hold (a text of
     /// `STRING_LENGTH` bytes or more, more than 20 tour stops, more than 2 culture words),
@@ -130,7 +134,7 @@ impl Default for Options {
         Options {
             reader: None,
             dialect: None,
-            settings: Lookup::Discover,
+            settings: Lookup::Isolated,
             fixed_size_limits: false,
             string_length: fixed_size::STRING_LENGTH,
         }
@@ -139,8 +143,8 @@ impl Default for Options {
 
 /// One finding of `ekb check`: 1-based lines and columns (columns in Unicode scalar
 /// values), the end exclusive. Its texts are for people, in logs and exceptions: what they
-/// quote of the file is escaped as `ekb check` shows it (a control character as
-/// `\u{0000}`), so that no byte of the file reaches a terminal raw.
+/// quote of the file, and the file's name, are escaped as `ekb check` shows them (a control
+/// character as `\u{0000}`), so that no byte of the file reaches a terminal raw.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Finding {
     pub file: String,
@@ -175,7 +179,9 @@ impl fmt::Display for Finding {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum LoadError {
     /// The file, or the configuration that names it, could not be read: no finding about
-    /// the file's content can be made (`ekb` exits 2 for this).
+    /// the file's content can be made (`ekb` exits 2 for this). Both texts are escaped and
+    /// cut after 300 characters, as `ekb check` shows a value: a path or a configuration's
+    /// value may hold control characters, or be megabytes long.
     Unreadable { file: String, reason: String },
     /// The file has an error: the robot would load something other than it says. Every
     /// finding of the check is here, errors first, a consequence after its cause.
@@ -358,10 +364,7 @@ pub fn check_bytes(name: &str, bytes: &[u8], options: &Options) -> Result<Vec<Fi
 pub fn load_path(path: &Path, options: &Options) -> Result<KnowledgeBase, LoadError> {
     // Read into memory, not mapped: the knowledge base keeps the text, and a file truncated
     // on disk while mapped would take it away.
-    let source = SourceFile::read_into_memory(path).map_err(|error| LoadError::Unreadable {
-        file: path.display().to_string(),
-        reason: error.to_string(),
-    })?;
+    let source = SourceFile::read_into_memory(path).map_err(|error| unreadable(path, error))?;
     load_source(source, path, options)
 }
 
@@ -397,10 +400,6 @@ pub fn load_configured(
     config: Option<&Path>,
     options: &Options,
 ) -> Result<KnowledgeBase, LoadError> {
-    let unreadable = |file: &Path, reason: String| LoadError::Unreadable {
-        file: file.display().to_string(),
-        reason,
-    };
     let named = config.unwrap_or(Path::new(crate::config::DEFAULT_PATH));
     let config = Config::discover(config).map_err(|error| unreadable(named, error.0))?;
     if config.path.is_none() {
@@ -428,10 +427,15 @@ pub fn load_configured(
 }
 
 fn read(path: &Path) -> Result<SourceFile, LoadError> {
-    SourceFile::read(path).map_err(|error| LoadError::Unreadable {
-        file: path.display().to_string(),
-        reason: error.to_string(),
-    })
+    SourceFile::read(path).map_err(|error| unreadable(path, error))
+}
+
+/// Why `file` could not be read, both shown as `ekb check` shows a value of a file.
+fn unreadable(file: &Path, reason: impl fmt::Display) -> LoadError {
+    LoadError::Unreadable {
+        file: shown(&file.display().to_string()).into_owned(),
+        reason: shown(&reason.to_string()).into_owned(),
+    }
 }
 
 /// Checks `source` with the settings for `path` and the reader they choose, and gives the
@@ -445,23 +449,20 @@ fn with_checked<T>(
     if options.fixed_size_limits
         && !fixed_size::STRING_LENGTH_RANGE.contains(&options.string_length)
     {
-        return Err(LoadError::Unreadable {
-            file: path.display().to_string(),
-            reason: format!(
+        return Err(unreadable(
+            path,
+            format!(
                 "STRING_LENGTH {} is not a size for a text field: it is {} to {} bytes",
                 options.string_length,
                 fixed_size::STRING_LENGTH_RANGE.start(),
                 fixed_size::STRING_LENGTH_RANGE.end()
             ),
-        });
+        ));
     }
     let settings = options
         .settings
         .settings_for(path)
-        .map_err(|reason| LoadError::Unreadable {
-            file: path.display().to_string(),
-            reason,
-        })?;
+        .map_err(|reason| unreadable(path, reason))?;
     let build_options = build::Options {
         dialect: options.dialect,
         reader: options
@@ -490,7 +491,7 @@ fn findings(checked: &Checked<'_>) -> Vec<Finding> {
         .in_reading_order()
         .into_iter()
         .map(|located| Finding {
-            file: escape(located.file).into_owned(),
+            file: shown(located.file).into_owned(),
             rule: located.rule,
             severity: located.severity,
             message: escape(located.message).into_owned(),

@@ -18,6 +18,8 @@
 
 use std::path::PathBuf;
 
+use ekb_core::settings::Lookup;
+
 use ekb_core::loader::{self, Language, Options, Phase};
 use ekb_core::model::export::ExportedLocation;
 use ekb_core::present::language;
@@ -25,6 +27,7 @@ use ekb_core::robot::Reader;
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyKeyError, PyValueError};
 use pyo3::prelude::*;
+use pyo3::types::PyTuple;
 
 create_exception!(
     ekb,
@@ -42,7 +45,7 @@ create_exception!(
     ekb,
     UnreadableError,
     LoadError,
-    "The file, or the project settings that apply to it, could not be read."
+    "The file, or the project settings named by `settings`, could not be read."
 );
 
 /// One finding of `ekb check`: 1-based lines and columns (columns count characters), the
@@ -51,9 +54,9 @@ create_exception!(
 #[derive(Clone, PartialEq)]
 struct Finding {
     file: String,
-    rule: &'static str,
+    rule: String,
     /// `"error"`, `"warning"` or `"info"`.
-    severity: &'static str,
+    severity: String,
     message: String,
     line: u32,
     column: u32,
@@ -67,8 +70,8 @@ impl From<&loader::Finding> for Finding {
     fn from(finding: &loader::Finding) -> Finding {
         Finding {
             file: finding.file.clone(),
-            rule: finding.rule,
-            severity: finding.severity.name(),
+            rule: finding.rule.to_string(),
+            severity: finding.severity.name().to_string(),
             message: finding.message.clone(),
             line: finding.line,
             column: finding.column,
@@ -82,6 +85,57 @@ impl From<&loader::Finding> for Finding {
 
 #[pymethods]
 impl Finding {
+    /// Every field, in the order of the class: what `pickle` rebuilds a finding from.
+    #[new]
+    #[pyo3(signature = (file, rule, severity, message, line, column, end_line, end_column, location_id, help))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        file: String,
+        rule: String,
+        severity: String,
+        message: String,
+        line: u32,
+        column: u32,
+        end_line: u32,
+        end_column: u32,
+        location_id: Option<u32>,
+        help: Option<String>,
+    ) -> Finding {
+        Finding {
+            file,
+            rule,
+            severity,
+            message,
+            line,
+            column,
+            end_line,
+            end_column,
+            location_id,
+            help,
+        }
+    }
+
+    /// Pickles as its fields (a finding crosses to another process with its exception).
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let this = slf.get();
+        let fields = (
+            this.file.clone(),
+            this.rule.clone(),
+            this.severity.clone(),
+            this.message.clone(),
+            this.line,
+            this.column,
+            this.end_line,
+            this.end_column,
+            this.location_id,
+            this.help.clone(),
+        )
+            .into_pyobject(slf.py())?;
+        Ok((slf.get_type().into_any(), fields))
+    }
+
     /// `file:line:column: severity[rule] message`, as `ekb check --format concise`.
     fn __str__(&self) -> String {
         format!(
@@ -265,12 +319,12 @@ impl KnowledgeBase {
         self.0.findings().iter().map(Finding::from).collect()
     }
 
-    /// The location with this id; `KeyError` if there is none.
-    fn location(&self, id: u32) -> PyResult<Location> {
-        self.0
-            .location(id)
+    /// The location with this id; `KeyError` for anything that is not the id of one (as a
+    /// `dict` keyed by id: `-1`, `2**40` and `"x"` too).
+    fn location(&self, id: &Bound<'_, PyAny>) -> PyResult<Location> {
+        self.find(id)
             .map(|location| Location(location.to_export()))
-            .ok_or_else(|| PyKeyError::new_err(id))
+            .ok_or_else(|| PyKeyError::new_err((id.clone().unbind(),)))
     }
 
     /// The whole knowledge base as a `dict` in the shape of `ekb export` (SPEC §5).
@@ -280,12 +334,13 @@ impl KnowledgeBase {
         py.import("json")?.call_method1("loads", (json,))
     }
 
-    fn __getitem__(&self, id: u32) -> PyResult<Location> {
+    fn __getitem__(&self, id: &Bound<'_, PyAny>) -> PyResult<Location> {
         self.location(id)
     }
 
-    fn __contains__(&self, id: u32) -> bool {
-        self.0.location(id).is_some()
+    /// Whether `id` is the id of a location: `False` for anything else.
+    fn __contains__(&self, id: &Bound<'_, PyAny>) -> bool {
+        self.find(id).is_some()
     }
 
     fn __len__(&self) -> usize {
@@ -302,9 +357,17 @@ impl KnowledgeBase {
     }
 }
 
-/// The options of `ekb check --reader`; the project settings (`ekb.toml`) are found from
-/// the file's folder up, as `ekb check` finds them.
-fn options(reader: Option<&str>) -> PyResult<Options> {
+impl KnowledgeBase {
+    /// The location whose id `id` is: none for an int out of the ids' range or a non-int.
+    fn find(&self, id: &Bound<'_, PyAny>) -> Option<loader::Location<'_>> {
+        let id: u32 = id.extract().ok()?;
+        self.0.location(id)
+    }
+}
+
+/// The options of `ekb check --reader` and `--settings`: the project settings (`ekb.toml`)
+/// at `settings`, if given; none otherwise (an `ekb.toml` above the file is not read).
+fn options(reader: Option<&str>, settings: Option<PathBuf>) -> PyResult<Options> {
     let reader = match reader {
         None => None,
         Some(name) => Some(Reader::from_name(name).ok_or_else(|| {
@@ -317,6 +380,7 @@ fn options(reader: Option<&str>) -> PyResult<Options> {
     };
     Ok(Options {
         reader,
+        settings: settings.map_or(Lookup::Isolated, Lookup::Explicit),
         ..Options::default()
     })
 }
@@ -345,20 +409,31 @@ fn raised(py: Python<'_>, error: loader::LoadError) -> PyErr {
 /// Loads the knowledge base at `path`, as the robot should: refused with a
 /// `RefusedError` carrying every finding if `ekb check` finds an error in it.
 #[pyfunction]
-#[pyo3(signature = (path, *, reader = None))]
-fn load(py: Python<'_>, path: PathBuf, reader: Option<&str>) -> PyResult<KnowledgeBase> {
-    let options = options(reader)?;
+#[pyo3(signature = (path, *, reader = None, settings = None))]
+fn load(
+    py: Python<'_>,
+    path: PathBuf,
+    reader: Option<&str>,
+    settings: Option<PathBuf>,
+) -> PyResult<KnowledgeBase> {
+    let options = options(reader, settings)?;
     py.detach(|| loader::load_path(&path, &options))
         .map(KnowledgeBase)
         .map_err(|error| raised(py, error))
 }
 
-/// Checks the knowledge base at `path` as `ekb check` does: its findings, in the order
-/// of the file (an empty list for a clean file). `UnreadableError` if it cannot be read.
+/// Checks the knowledge base at `path` as `ekb check --isolated` does (or with
+/// `settings`, as `--settings`): its findings, in the order of the file (an empty list
+/// for a clean file). `UnreadableError` if it cannot be read.
 #[pyfunction]
-#[pyo3(signature = (path, *, reader = None))]
-fn check(py: Python<'_>, path: PathBuf, reader: Option<&str>) -> PyResult<Vec<Finding>> {
-    let options = options(reader)?;
+#[pyo3(signature = (path, *, reader = None, settings = None))]
+fn check(
+    py: Python<'_>,
+    path: PathBuf,
+    reader: Option<&str>,
+    settings: Option<PathBuf>,
+) -> PyResult<Vec<Finding>> {
+    let options = options(reader, settings)?;
     let findings = py
         .detach(|| loader::check_path(&path, &options))
         .map_err(|error| raised(py, error))?;

@@ -4,6 +4,9 @@ Run in a virtual environment where the wheel is installed (scripts/test-packages
 """
 
 import json
+import multiprocessing
+import os
+import pickle
 import shutil
 import subprocess
 from pathlib import Path
@@ -144,3 +147,87 @@ def test_the_language_server_answers_over_standard_io():
     assert initialized["id"] == 1
     assert initialized["result"]["serverInfo"]["name"] == "ekb"
     assert "textDocumentSync" in initialized["result"]["capabilities"]
+
+
+def test_anything_that_is_not_an_id_is_a_key_error_and_not_in():
+    kb = ekb.load(CLEAN)
+    for key in (-1, 0, 3, 2**32 + 1, 2**40, "x", "1", None, 1.0):
+        with pytest.raises(KeyError) as raised:
+            kb[key]
+        assert raised.value.args == (key,)
+        with pytest.raises(KeyError):
+            kb.location(key)
+        assert key not in kb
+    assert 1 in kb and kb[1].id == 1
+
+
+def _refusal_in_a_child(path):
+    try:
+        ekb.load(path)
+    except ekb.RefusedError as error:
+        return error
+
+
+def test_a_load_error_pickles_with_its_findings():
+    with pytest.raises(ekb.RefusedError) as raised:
+        ekb.load(REFUSED)
+    error = raised.value
+    back = pickle.loads(pickle.dumps(error))
+    assert type(back) is ekb.RefusedError
+    assert (str(back), back.file, back.findings) == (str(error), error.file, error.findings)
+    assert back.findings[0].rule == error.findings[0].rule
+    with pytest.raises(ekb.UnreadableError) as unreadable:
+        ekb.load(FIXTURES / "missing.dat")
+    again = pickle.loads(pickle.dumps(unreadable.value))
+    assert type(again) is ekb.UnreadableError and again.file == unreadable.value.file
+    # Through multiprocessing, as a pool hands a worker's result back.
+    with multiprocessing.get_context("spawn").Pool(1) as pool:
+        child = pool.apply(_refusal_in_a_child, (str(REFUSED),))
+    assert type(child) is ekb.RefusedError and child.findings == error.findings
+
+
+def _under_settings(tmp_path, settings):
+    """An ekb.toml with `settings` in tmp_path, and in lab/ a clean file and one whose
+    tour stops at a location that does not exist."""
+    (tmp_path / "ekb.toml").write_text(settings)
+    lab = tmp_path / "lab"
+    lab.mkdir()
+    text = CLEAN.read_text()
+    (lab / "clean.dat").write_text(text)
+    (lab / "bad-tour.dat").write_text(text.replace("tourSpecification 2 2 1", "tourSpecification 2 2 9"))
+    return lab / "clean.dat", lab / "bad-tour.dat"
+
+
+def test_an_ekb_toml_above_the_file_is_not_read_unless_named(tmp_path):
+    _, bad = _under_settings(tmp_path, '[check]\nignore = ["tour"]\n')
+    with pytest.raises(ekb.RefusedError) as raised:
+        ekb.load(bad)
+    assert ("tour-unknown-location", "error", 19) in [
+        (f.rule, f.severity, f.line) for f in raised.value.findings
+    ]
+    assert "tour-unknown-location" in [f.rule for f in ekb.check(bad)]
+    assert ekb.load(bad, settings=tmp_path / "ekb.toml").tour == [2, 9]
+    assert ekb.check(bad, settings=str(tmp_path / "ekb.toml")) == []
+
+
+def test_a_fifo_or_a_folder_where_ekb_toml_would_be_stops_no_load(tmp_path):
+    clean, _ = _under_settings(tmp_path, "")
+    settings = tmp_path / "ekb.toml"
+    settings.unlink()
+    os.mkfifo(settings)
+    assert ekb.load(clean).tour == [2, 1]
+    settings.unlink()
+    settings.mkdir()
+    assert ekb.load(clean).tour == [2, 1]
+    with pytest.raises(ekb.UnreadableError):
+        ekb.load(clean, settings=settings)
+
+
+def test_a_hostile_file_name_is_escaped_and_short():
+    name = "/nonexistent/\x1b]0;pwned\x07" + "a" * (900 * 1024)
+    with pytest.raises(ekb.UnreadableError) as raised:
+        ekb.load(name)
+    for text in (str(raised.value), raised.value.file):
+        assert not any(ord(c) < 0x20 or ord(c) == 0x7F for c in text), text[:200]
+        assert len(text) < 2000
+    assert "\\u{001B}]0;pwned\\u{0007}" in raised.value.file

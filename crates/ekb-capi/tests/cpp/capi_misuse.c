@@ -56,7 +56,9 @@ int main(int argc, char **argv) {
     expect(ekb_error_message(kb, NULL), EKB_BAD_ARGUMENT, "null message");
     expect(ekb_open_path(clean, strlen(clean), NULL, NULL), EKB_BAD_ARGUMENT, "null handle output");
     expect(ekb_open_path(NULL, 5, NULL, &missing), EKB_BAD_ARGUMENT, "null path with a length");
-    expect(ekb_open_path("\xff\xfe", 2, NULL, &missing), EKB_BAD_ARGUMENT, "a path that is not UTF-8");
+    /* A path is a file name, in bytes: one that is not UTF-8 is looked for (and missing here). */
+    expect(ekb_open_path("/nonexistent/\xff\xfe", 15, NULL, &missing), EKB_UNREADABLE, "a path that is not UTF-8");
+    expect(ekb_free(missing), EKB_OK, "free the non-UTF-8 path's handle");
     expect(ekb_open_buffer("kb.dat", 6, NULL, 10, NULL, &missing), EKB_BAD_ARGUMENT, "null data with a length");
     {
         ekb_options options;

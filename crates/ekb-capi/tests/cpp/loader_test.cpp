@@ -3,7 +3,9 @@
 // with `ekb export`; a file with an error is refused with the findings `ekb check` reports.
 //
 // Usage: ekb-loader-test EKB_EXECUTABLE FILE...
+#include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -318,14 +320,14 @@ int main(int argc, char **argv) {
     for (int i = 2; i < argc; ++i) {
         std::string file = argv[i];
         int checkStatus = 0, exportStatus = 0;
-        json::Value checked = json::parse(run(quote(ekb) + " check --format json " + quote(file), checkStatus));
+        json::Value checked = json::parse(run(quote(ekb) + " --isolated check --format json " + quote(file), checkStatus));
         bool hasError = false;
         for (const json::Value &d : checked["diagnostics"].array) hasError = hasError || d["severity"].string == "error";
         json::Value exported;
         std::string where = file + " (C++)";
         {
             std::string errors = configDir + "/export.err";
-            std::string text = run(quote(ekb) + " export " + quote(file), exportStatus, errors.c_str());
+            std::string text = run(quote(ekb) + " --isolated export " + quote(file), exportStatus, errors.c_str());
             std::string refusal((std::istreambuf_iterator<char>(std::ifstream(errors).rdbuf())), {});
             // `ekb check` checks the culture knowledge base (...) as what it is; `ekb export`
             // and the loader refuse it as no environment knowledge base.
@@ -377,6 +379,45 @@ int main(int argc, char **argv) {
         }
         if (!hasError) throughTheCAbi(file, exported);
         throughTheDropIn(file, configDir, exported, checked, hasError);
+    }
+    // Paths the drop-in builds itself (the current folder's, here named with ESC ] 0 ; BEL)
+    // and 900 KB of a file name come back escaped and short.
+    {
+        std::string hostile = configDir + "/\x1b]0;pwned\x07";
+        std::string shown = ekb::shown(hostile + std::string(900 * 1024, 'a'));
+        EXPECT(shown.find('\x1b') == std::string::npos && shown.find('\x07') == std::string::npos &&
+                   shown.size() < 2000,
+               "ekb::shown", shown.substr(0, 200));
+        char before[4096];
+        if (mkdir(hostile.c_str(), 0700) == 0 && getcwd(before, sizeof before) && chdir(hostile.c_str()) == 0) {
+            const char *config = getenv("EKB_CONFIG");
+            std::string kept = config ? config : "";
+            unsetenv("EKB_CONFIG");
+            try {
+                Environment::EnvironmentKnowledgeBase kb;
+                fail("the drop-in with no configuration", "loaded");
+            } catch (const ekb::LoadError &error) {
+                std::string what = error.what();
+                EXPECT(what.find("tried ") != std::string::npos && what.find('\x1b') == std::string::npos &&
+                           what.find('\x07') == std::string::npos,
+                       "the drop-in's paths tried", what);
+            }
+            if (config) setenv("EKB_CONFIG", kept.c_str(), 1);
+            if (chdir(before) != 0) fail("chdir back", before);
+        } else {
+            fail("a folder named with ESC and BEL", hostile);
+        }
+        rmdir(hostile.c_str());
+    }
+    // A path is a file name in bytes: one that is not UTF-8 is looked for, and a missing one
+    // is a LoadError (unreadable), as any missing file, never an ekb::Error.
+    try {
+        ekb::KnowledgeBase::open("/nonexistent/\xff\xfe.dat");
+        fail("a non-UTF-8 path", "loaded");
+    } catch (const ekb::LoadError &error) {
+        EXPECT(error.unreadable(), "a non-UTF-8 path", error.what());
+    } catch (const std::exception &error) {
+        fail("a non-UTF-8 path", std::string("not an ekb::LoadError: ") + error.what());
     }
     std::remove((configDir + "/environmentKnowledgeBaseConfiguration.ini").c_str());
     std::remove((configDir + "/export.err").c_str());

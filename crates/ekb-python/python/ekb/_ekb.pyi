@@ -11,7 +11,8 @@ _Reader = Literal["d5.4.2", "2025-06", "2026-02", "2026-03", "2026-04"]
 class Finding:
     """One finding of ``ekb check``: 1-based lines and columns (columns count
     characters), the end exclusive. ``str(finding)`` is its line in
-    ``ekb check --format concise``: ``file:line:column: severity[rule] message``."""
+    ``ekb check --format concise``: ``file:line:column: severity[rule] message``.
+    It pickles."""
 
     @property
     def file(self) -> str: ...
@@ -77,7 +78,9 @@ class Location:
 
 class KnowledgeBase:
     """A knowledge base that ``ekb check`` finds no error in, as the robot loads it.
-    ``kb[id]``, ``id in kb`` and ``len(kb)`` work on location ids."""
+    ``kb[id]``, ``id in kb`` and ``len(kb)`` work on location ids, as a ``dict`` keyed
+    by id: ``kb[key]`` is ``KeyError`` and ``key in kb`` is False for any key that is not
+    the id of a location (``-1``, ``2**40``, ``"x"``)."""
 
     @property
     def file(self) -> str: ...
@@ -95,17 +98,19 @@ class KnowledgeBase:
     @property
     def findings(self) -> list[Finding]:
         """The warnings and notes of the check (a loaded file has no error)."""
-    def location(self, id: int) -> Location:
-        """The location with this id; ``KeyError`` if there is none."""
+    def location(self, id: object) -> Location:
+        """The location with this id; ``KeyError`` for any key that is not the id of one."""
     def export(self) -> dict[str, Any]:
         """The whole knowledge base as a dict in the shape of ``ekb export``."""
-    def __getitem__(self, id: int) -> Location: ...
+    def __getitem__(self, id: object) -> Location: ...
     def __contains__(self, id: object) -> bool: ...
     def __len__(self) -> int: ...
 
 class LoadError(Exception):
     """A knowledge base was not loaded. ``findings`` tells why (empty when the file
-    could not be read)."""
+    could not be read). Its texts (``str(error)``, ``file``, the findings') quote file
+    names and values escaped and cut as ``ekb check`` shows them. It pickles with its
+    findings (``multiprocessing`` hands it from one process to another)."""
 
     findings: list[Finding]
     file: Optional[str]
@@ -115,15 +120,21 @@ class RefusedError(LoadError):
     ``findings`` has every finding of the check, errors and warnings."""
 
 class UnreadableError(LoadError):
-    """The file, or the project settings that apply to it, could not be read."""
+    """The file, or the project settings named by ``settings``, could not be read."""
 
-def load(path: _Path, *, reader: Optional[_Reader] = None) -> KnowledgeBase:
+def load(
+    path: _Path, *, reader: Optional[_Reader] = None, settings: Optional[_Path] = None
+) -> KnowledgeBase:
     """Load the knowledge base at ``path`` as the robot should: ``RefusedError`` with
     every finding if ``ekb check`` finds an error in it, ``UnreadableError`` if it
     cannot be read. ``reader``: the robot's reader to check against (default: the one
-    ``ekb.toml`` names, else the one of the file's dialect)."""
+    ``settings`` names, else the one of the file's dialect). ``settings``: the project
+    settings (``ekb.toml``) to check with, as ``ekb check --settings``; none by default
+    (as ``ekb check --isolated``): an ``ekb.toml`` above the file is not read."""
 
-def check(path: _Path, *, reader: Optional[_Reader] = None) -> list[Finding]:
-    """Check the knowledge base at ``path`` as ``ekb check`` does: its findings, errors
-    first, a consequence after its cause (empty for a clean file). ``UnreadableError`` if it cannot be
-    read."""
+def check(
+    path: _Path, *, reader: Optional[_Reader] = None, settings: Optional[_Path] = None
+) -> list[Finding]:
+    """Check the knowledge base at ``path`` as ``ekb check --isolated`` does (or with
+    ``settings``, as ``ekb check --settings``): its findings, errors first, a consequence
+    after its cause (empty for a clean file). ``UnreadableError`` if it cannot be read."""
