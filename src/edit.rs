@@ -134,10 +134,27 @@ pub fn apply(text: &str, edits: &[ValueEdit]) -> Result<Edited, EditError> {
 /// The edit of the text that gives `edit.key` of location `edit.id` its new value.
 fn change(text: &str, map: &LineMap, edit: &ValueEdit) -> Result<Edit, EditError> {
     if let Some(line) = map.read.get(&(edit.id, edit.key)) {
-        let Body::Entry { args, .. } = line.body else {
+        let Body::Entry { key, args } = line.body else {
             unreachable!("the map holds entries only")
         };
         let (id, value) = syntax::first_token(text, args);
+        let gap = Span::new(key.end as usize, args.start as usize);
+        if is_padding(gap.text(text))
+            && crate::canonical::padding(key.text(text), id.text(text), &edit.value) == 1
+        {
+            // The padding would make the robot cut the new line: one space, as `ekb fmt` writes.
+            let end = if value.is_empty() { id.end } else { value.end };
+            let kept = match value.is_empty() {
+                true => format!("{} ", id.text(text)),
+                false => Span::new(args.start as usize, value.start as usize)
+                    .text(text)
+                    .to_string(),
+            };
+            return Ok(Edit::replace(
+                Span::new(gap.start as usize, end as usize),
+                format!(" {kept}{}", edit.value),
+            ));
+        }
         return Ok(match value.is_empty() {
             true => Edit::insert(id.end, format!(" {}", edit.value)),
             false => Edit::replace(value, edit.value.clone()),
@@ -168,7 +185,8 @@ fn change(text: &str, map: &LineMap, edit: &ValueEdit) -> Result<Edit, EditError
 }
 
 /// `key id value`, with the id in the column of `neighbour`'s id when its key is padded up
-/// to it (as `ekb fmt` writes), else after one space; the blanks between id and value as in
+/// to it (as `ekb fmt` writes) and the padding would not make the robot cut the line, else
+/// after one space; the blanks between id and value as in
 /// `neighbour`.
 fn aligned(text: &str, neighbour: &Line, edit: &ValueEdit) -> String {
     let key = edit.key.name();
@@ -181,18 +199,24 @@ fn aligned(text: &str, neighbour: &Line, edit: &ValueEdit) -> String {
         unreachable!("the map holds entries only")
     };
     let gap = Span::new(neighbour_key.end as usize, args.start as usize).text(text);
-    let padded = gap.len() >= 2 && gap.bytes().all(|b| b == b' ');
+    let padded = is_padding(gap);
     let id_column = neighbour_key.text(text).chars().count() + gap.chars().count();
-    let spaces = match padded {
+    let (neighbour_id, value) = syntax::first_token(text, args);
+    // Padded as `ekb fmt` pads: not where the padding would make the robot cut the line.
+    let spaces = match padded && crate::canonical::padding(key, &id, &edit.value) > 1 {
         true => id_column.saturating_sub(key.chars().count()).max(1),
         false => 1,
     };
-    let (neighbour_id, value) = syntax::first_token(text, args);
     let separator = match value.is_empty() {
         true => " ",
         false => Span::new(neighbour_id.end as usize, value.start as usize).text(text),
     };
     format!("{key}{}{id}{separator}{}", " ".repeat(spaces), edit.value)
+}
+
+/// Whether the blanks between a key and its id are the spaces that align the ids.
+fn is_padding(gap: &str) -> bool {
+    gap.len() >= 2 && gap.bytes().all(|b| b == b' ')
 }
 
 /// An edit made and checked: the new text, and for each edit its line in the new text and
@@ -201,6 +225,8 @@ fn aligned(text: &str, neighbour: &Line, edit: &ValueEdit) -> String {
 pub struct Checked {
     pub text: String,
     pub edits: Vec<CheckedEdit>,
+    /// The errors in the whole new text, old ones included.
+    pub errors: usize,
 }
 
 /// One edit of [`Checked`].
@@ -240,10 +266,12 @@ pub fn apply_checked(
                 .collect(),
         })
         .collect();
+    let errors = after.summary().errors;
     drop(after);
     Ok(Checked {
         text: after_source.text().to_string(),
         edits,
+        errors,
     })
 }
 

@@ -7,6 +7,7 @@ use author_support::{
     assert_read_only_file_left_intact, culture_knowledge_base, ekb, fixture, read_fixture, seed,
     temp_file,
 };
+use predicates::prelude::PredicateBooleanExt;
 use predicates::str::contains;
 
 const LINE_34_FIXED: &str =
@@ -366,7 +367,17 @@ fn unsafe_fixes_wait_for_the_flag_and_the_safe_ones_do_not() {
             ("invalid-number", "unsafe")
         ]
     );
-    ekb().arg("fix").arg(&path).assert().code(1);
+    // The three guesses are not "by hand": the flag that makes them is named.
+    ekb()
+        .arg("fix")
+        .arg(&path)
+        .assert()
+        .code(1)
+        .stderr(contains(
+            "kb.dat: 3 errors left that `ekb fix --unsafe-fixes` fixes by a guess \
+             (`ekb fix --unsafe-fixes --diff` shows it first)\n",
+        ))
+        .stderr(contains("by hand").not());
     let safe = std::fs::read_to_string(&path).unwrap();
     assert!(
         safe.contains("robotLocationDescription      1"),

@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command as Process;
 
 use author_support::{ekb, seed, temp_file};
+use predicates::prelude::PredicateBooleanExt;
 use predicates::str::contains;
 
 fn translations_fixture(name: &str) -> PathBuf {
@@ -257,7 +258,8 @@ fn the_seeds_po_file_passes_msgfmt_and_polib() {
     assert!(first.source().ends_with("kb.dat:4"), "{}", first.source());
     assert_eq!(
         first.extracted_comments(),
-        "said first at Pepper's starting location, where the robot does not point (location 1, stop 1 of the tour)"
+        "said first at Pepper's starting location, where the robot does not point (location 1, stop 1 of the tour)\n\
+         at most 171 bytes: the robot's reader cuts a longer message (a letter with an accent takes 2)"
     );
     // The English line whose key is in the wrong case is still the text to translate.
     let roomba = messages[3];
@@ -335,9 +337,15 @@ fn importing_three_translations_changes_exactly_those_three_lines() {
             (0, "3 translated messages, 7 untranslated messages.\n")
         );
     }
-    import_po(&[], &po, &path).code(0).stderr(contains(
-        "imported 3 isiZulu messages (lines 8, 32, 44); 7 untranslated (empty msgstr)",
-    ));
+    // The seed's key-case error is still there: exit 1, as `ekb fix` with errors left.
+    import_po(&[], &po, &path)
+        .code(1)
+        .stderr(contains(
+            "imported 3 isiZulu messages (lines 8, 32, 44); 7 untranslated (empty msgstr)",
+        ))
+        .stderr(contains(
+            "kb.dat: written with 2 errors to correct (`ekb check` lists them)",
+        ));
     let after = std::fs::read_to_string(&path).unwrap();
     let before = seed();
     assert_eq!(changed_lines(&before, &after), [8, 32, 44]);
@@ -365,7 +373,7 @@ fn importing_three_translations_changes_exactly_those_three_lines() {
         assert_eq!(stderr, "3 translated messages, 7 untranslated messages.\n");
     }
     import_po(&[], &po, &path)
-        .code(0)
+        .code(1)
         .stderr(contains("3 already in the file"));
     assert_eq!(std::fs::read_to_string(&path).unwrap(), after);
 }
@@ -392,11 +400,68 @@ fn a_stale_entry_is_named_not_imported_and_exits_1() {
         changed_lines(&changed, &std::fs::read_to_string(&path).unwrap()),
         [8, 32]
     );
-    import_po(&["--accept-stale"], &po, &path).code(0);
+    import_po(&["--accept-stale"], &po, &path).code(1);
     assert_eq!(
         std::fs::read_to_string(&path).unwrap().lines().nth(43),
         Some("postGestureMessageIsiZulu     5 Sizobonana futhi maduze")
     );
+}
+
+/// The seed with its key-case error corrected: a file with no error.
+fn seed_without_errors() -> String {
+    seed().replace("postGestureMessageenglish ", "postGestureMessageEnglish ")
+}
+
+#[test]
+fn import_exits_0_into_a_file_left_without_errors_and_its_diff_1_when_it_would_change() {
+    let (_dir, path, po) = exported(&seed_without_errors(), "zu");
+    translate(&po, &THREE);
+    import_po(&["--diff"], &po, &path)
+        .code(1)
+        .stdout(contains(
+            "+postGestureMessageIsiZulu     1 Ngithemba uzokujabulela ukuvakasha",
+        ))
+        .stderr(contains("would import 3 isiZulu messages"));
+    assert_eq!(
+        std::fs::read_to_string(&path).unwrap(),
+        seed_without_errors()
+    );
+    import_po(&[], &po, &path)
+        .code(0)
+        .stderr(contains("imported 3 isiZulu messages"))
+        .stderr(contains("written with").not());
+    import_po(&["--diff"], &po, &path).code(0).stdout("");
+}
+
+#[test]
+fn each_entry_says_the_bytes_the_reader_reads_and_that_many_import_cleanly() {
+    let (_dir, path, po) = exported(&seed_without_errors(), "zu");
+    let text = std::fs::read_to_string(&po).unwrap();
+    // `postGestureMessageIsiZulu 5 ` and a newline, in the 199 bytes the reader's fgets reads.
+    let limit = 199 - "postGestureMessageIsiZulu 5 \n".len();
+    assert_eq!(limit, 170);
+    assert!(
+        text.contains("#. at most 170 bytes: the robot's reader cuts a longer message (a letter with an accent takes 2)\n#: "),
+        "{text}"
+    );
+    // At the limit, with two-byte letters, it imports; one byte more is refused.
+    let fits = format!("a{}{}", "\u{e9}".repeat(80), "a".repeat(limit - 161));
+    assert_eq!(fits.len(), limit);
+    translate(&po, &[("See you again soon", &fits)]);
+    import_po(&[], &po, &path).code(0);
+    assert!(std::fs::read_to_string(&path)
+        .unwrap()
+        .contains(&format!("\npostGestureMessageIsiZulu 5 {fits}\n")));
+    let (_dir, path, po) = exported(&seed_without_errors(), "zu");
+    translate(&po, &[("See you again soon", &format!("{fits}a"))]);
+    import_po(&[], &po, &path)
+        .code(1)
+        .stderr(contains("not imported: error[compat-line-too-long]"));
+    // A template says the limit in each language.
+    let (_, stdout, _) = run(&["export", "--format", "pot", path.to_str().unwrap()]);
+    assert!(stdout.contains(
+        "#. at most 170 bytes in isiZulu, 166 in Kinyarwanda: the robot's reader cuts a longer message"
+    ), "{stdout}");
 }
 
 #[test]
@@ -415,7 +480,7 @@ fn fuzzy_and_empty_entries_are_not_imported() {
     );
     std::fs::write(&po, text).unwrap();
     import_po(&[], &po, &path)
-        .code(0)
+        .code(1)
         .stderr(contains("imported 1 Kinyarwanda message (line 45); 8 untranslated (empty msgstr); 1 fuzzy, not imported"));
     assert_eq!(
         changed_lines(&seed(), &std::fs::read_to_string(&path).unwrap()),
@@ -449,7 +514,7 @@ fn an_unknown_msgctxt_names_its_line_and_nothing_is_imported() {
 fn a_missing_message_gets_a_line_aligned_in_its_location() {
     let (_dir, path, po) = exported(&partly(), "zu");
     translate(&po, &[("See you again soon", "Sizobonana futhi maduze")]);
-    import_po(&["-q"], &po, &path).code(0);
+    import_po(&["-q"], &po, &path).code(1);
     let after = std::fs::read_to_string(&path).unwrap();
     let lines: Vec<&str> = after.lines().collect();
     assert_eq!(
@@ -468,7 +533,7 @@ fn a_crlf_file_keeps_its_line_endings() {
     let crlf = seed().replace('\n', "\r\n");
     let (_dir, path, po) = exported(&crlf, "zu");
     translate(&po, &THREE);
-    import_po(&["-q"], &po, &path).code(0);
+    import_po(&["-q"], &po, &path).code(1);
     let after = std::fs::read_to_string(&path).unwrap();
     assert!(
         after.contains("postGestureMessageIsiZulu     1 Ngithemba uzokujabulela ukuvakasha\r\n")
@@ -490,7 +555,7 @@ fn a_translation_the_reader_would_misread_is_refused_unless_forced() {
         .code(1)
         .stderr(contains("not imported: error[compat-leading-symbol]"))
         .stderr(contains("imported 1 isiZulu message (line 32)"));
-    import_po(&["-q", "--force"], &po, &path).code(0);
+    import_po(&["-q", "--force"], &po, &path).code(1);
     assert!(std::fs::read_to_string(&path)
         .unwrap()
         .contains("5 \"Sizobonana\" futhi maduze\n"));

@@ -220,6 +220,11 @@ fn the_drop_in_limits_refuse_what_the_documents_types_cannot_hold() {
         text.message
     );
     assert_eq!(text.location_id, Some(1));
+    // The class it names is written as C++ writes it, not escaped.
+    assert_eq!(
+        text.help.as_deref(),
+        Some("shorten the text, or load the file with ekb::KnowledgeBase, which has no such limit")
+    );
 
     // A file within the limits loads the same with them.
     let clean = fixture("check/clean-current.dat");

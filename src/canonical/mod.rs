@@ -576,7 +576,7 @@ fn push_entry(out: &mut String, key: &str, id: Option<&str>, value: &str) {
 }
 
 /// How many spaces the layout writes between `key` and `id` (before `value`).
-fn padding(key: &str, id: &str, value: &str) -> usize {
+pub(crate) fn padding(key: &str, id: &str, value: &str) -> usize {
     let key_width = match key.is_ascii() {
         true => key.len(),
         false => key.chars().count(),

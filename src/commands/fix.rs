@@ -147,6 +147,12 @@ fn fix_file(
     })
 }
 
+/// Whether `ekb fix --unsafe-fixes` fixes `finding`: its fix guesses what was meant, or the
+/// file is read as Latin-1.
+fn fixed_by_guessing(finding: &crate::Diagnostic) -> bool {
+    finding.fix.as_ref().is_some_and(|fix| !fix.is_safe()) || finding.rule.name == INVALID_UTF8.name
+}
+
 /// Prints the diff of `read` and its blocks put in a balanced order (`document`, laid out
 /// from `read`'s text or from the text the fixes made of it). Returns whether they differ.
 fn print_balanced(
@@ -233,6 +239,11 @@ fn report(
         check_with(after, &options, rules)
     });
     let summary = checked.summary();
+    let guessable = checked
+        .diagnostics
+        .iter()
+        .filter(|d| d.severity() == crate::Severity::Error && fixed_by_guessing(d))
+        .count();
     if !context.quiet && !counts.is_empty() {
         let fixed: Vec<String> = counts
             .iter()
@@ -247,13 +258,19 @@ fn report(
     }
     errors_to_stderr(&mut checked);
     if !context.quiet {
-        if summary.errors > 0 {
-            let s = if summary.errors == 1 { "" } else { "s" };
+        let by_hand = summary.errors - guessable;
+        if guessable > 0 {
+            let s = if guessable == 1 { "" } else { "s" };
             stderr_line!(
-                "{name}: {} error{s} left to correct by hand",
-                summary.errors
+                "{name}: {guessable} error{s} left that `ekb fix --unsafe-fixes` fixes by a guess \
+                 (`ekb fix --unsafe-fixes --diff` shows it first)"
             );
-        } else if counts.is_empty() {
+        }
+        if by_hand > 0 {
+            let s = if by_hand == 1 { "" } else { "s" };
+            let more = if guessable > 0 { " more" } else { "" };
+            stderr_line!("{name}: {by_hand}{more} error{s} left to correct by hand");
+        } else if summary.errors == 0 && counts.is_empty() {
             stderr_line!("{name}: nothing to fix");
         }
         if summary.warnings > 0 {

@@ -122,8 +122,9 @@ impl TranslatorsFile {
     }
 }
 
-/// `ekb import --po`: exit 1 when an entry was not imported (stale, refused), 2 when the PO
-/// file cannot be read or belongs to another knowledge base (nothing is written then).
+/// `ekb import --po`: exit 1 when an entry was not imported (stale, refused), when the file
+/// written still has errors, or with `--diff` when something would change (as `ekb fix`); 2
+/// when the PO file cannot be read or belongs to another knowledge base (nothing is written).
 fn import_po(args: &Args, po_path: &Path, context: &Context) -> CommandResult {
     let TranslatorsFile {
         name: po_name,
@@ -166,7 +167,7 @@ fn import_po(args: &Args, po_path: &Path, context: &Context) -> CommandResult {
     let style = DiffStyle {
         color: context.color_stdout(),
     };
-    rewrite::deliver(&path, &source, &edited.text, mode, style)?;
+    let changed = rewrite::deliver(&path, &source, &edited.text, mode, style)?;
     let mut stderr = std::io::stderr().lock();
     for (entry, english) in &plan.stale {
         let now = match english {
@@ -231,12 +232,24 @@ fn import_po(args: &Args, po_path: &Path, context: &Context) -> CommandResult {
         }
         writeln!(stderr, "{name}: {}", parts.join("; "))?;
     }
+    drop(stderr);
     let left_out = plan.stale.len() + plan.refused.len() + misread.len();
-    Ok(if left_out > 0 {
-        Exit::Findings
-    } else {
-        Exit::Clean
-    })
+    // As `ekb fix`: a diff that shows a change, or a written file that still has errors, is 1.
+    let errors_left = mode == Mode::Write && edited.errors > 0;
+    if errors_left && !context.quiet {
+        let s = if edited.errors == 1 { "" } else { "s" };
+        stderr_line!(
+            "{name}: written with {} error{s} to correct (`ekb check` lists them)",
+            edited.errors
+        );
+    }
+    Ok(
+        if left_out > 0 || errors_left || (mode == Mode::Diff && changed) {
+            Exit::Findings
+        } else {
+            Exit::Clean
+        },
+    )
 }
 
 /// Tells, on standard error, the errors of the knowledge base written: exit 1 if it has any.

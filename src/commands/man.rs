@@ -103,7 +103,7 @@ const EXIT_STATUS: &str = r#".SH "EXIT STATUS"
 Clean: no errors (warnings are allowed unless \fB\-\-deny\-warnings\fR is given), no difference, nothing to change.
 .TP
 .B 1
-Errors found, differences found, or something would change (\fBfmt \-\-check\fR, \fBfix \-\-diff\fR); also \fBimport\fR and \fBfix\fR when the file they write still has errors.
+Errors found, differences found, or something would change (\fBfmt \-\-check\fR, \fBfix \-\-diff\fR, \fBimport \-\-po \-\-diff\fR); also \fBimport\fR and \fBfix\fR when the file they write still has errors.
 .TP
 .B 2
 \fBekb\fR could not do its job: a usage error, an unreadable file, a bad configuration, a file it refuses to rewrite. One line on standard error says why.

@@ -26,6 +26,9 @@ use crate::syntax::{self, Body, Span};
 #[derive(Debug)]
 pub struct Catalog<'a> {
     pub units: Vec<Unit<'a>>,
+    /// The line buffer of the reader the file was checked against: a message's line must be
+    /// shorter, its key, id and newline included.
+    pub line_buffer: usize,
 }
 
 /// One message a location needs (before or after its gesture), in every language.
@@ -180,7 +183,10 @@ impl<'a> Catalog<'a> {
         // In the tour's order, then the locations it does not visit (already by id); a
         // location's message before its gesture first.
         units.sort_by_key(|unit| unit.stops.first().copied().unwrap_or(usize::MAX));
-        Catalog { units }
+        Catalog {
+            units,
+            line_buffer: checked.reader.line_buffer(),
+        }
     }
 
     /// How far each language is, over every message of the catalogue.

@@ -12,8 +12,10 @@ use std::fmt::Write as _;
 use std::time::SystemTime;
 
 use super::{Catalog, State, Unit};
-use crate::model::{Language, Phase};
+use crate::canonical::VALUE_COLUMN;
+use crate::model::{Key, Language, Phase};
 use crate::present::language::iso_code;
+use crate::robot::Reader;
 
 /// `location 3 preGestureMessage`: which message of the knowledge base an entry is.
 pub fn context(location: u32, phase: Phase) -> String {
@@ -78,6 +80,11 @@ pub fn write(
         for line in said(unit).lines() {
             let _ = writeln!(out, "#. {}", one_line(line));
         }
+        let _ = writeln!(
+            out,
+            "#. {}",
+            byte_limits(unit, language, catalog.line_buffer)
+        );
         let _ = writeln!(out, "#: {}:{}", reference(file), source.line);
         if fuzzy {
             out.push_str("#, fuzzy\n");
@@ -166,6 +173,38 @@ fn civil_date(days: i64) -> (i64, u32, u32) {
 /// The last part of a path.
 fn file_name(file: &str) -> &str {
     file.rsplit(['/', '\\']).next().unwrap_or(file)
+}
+
+/// The most bytes the robot's reader reads of the translation (in `language`, or in each
+/// language of a template), its line laid out as `ekb fmt` and `ekb import --po` write it:
+/// the line, its key, id and newline included, is shorter than `line_buffer`.
+fn byte_limits(unit: &Unit<'_>, language: Option<Language>, line_buffer: usize) -> String {
+    let limit = |language: Language| {
+        let key = Key::ALL
+            .into_iter()
+            .find(|key| key.message() == Some((unit.phase, language)))
+            .expect("a message key for each phase and language");
+        // A line the smallest buffer cuts anyway is padded (`crate::canonical::padding`).
+        let key_and_blanks = match line_buffer > Reader::SMALLEST_LINE_BUFFER {
+            true => (key.name().len() + 1).max(VALUE_COLUMN - 1),
+            false => key.name().len() + 1,
+        };
+        let prefix = key_and_blanks + unit.location.to_string().len() + 1;
+        line_buffer.saturating_sub(prefix + "\n".len() + 1)
+    };
+    let accents = "a letter with an accent takes 2";
+    match language {
+        Some(language) => format!(
+            "at most {} bytes: the robot's reader cuts a longer message ({accents})",
+            limit(language)
+        ),
+        None => format!(
+            "at most {} bytes in isiZulu, {} in Kinyarwanda: the robot's reader cuts a longer \
+             message ({accents})",
+            limit(Language::IsiZulu),
+            limit(Language::Kinyarwanda)
+        ),
+    }
 }
 
 /// What the robot is doing when it says the message: `said before pointing at the Roomba

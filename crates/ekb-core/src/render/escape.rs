@@ -133,6 +133,9 @@ fn escape_line(line: &str, out: &mut String) {
     let bytes = line.as_bytes();
     let mut at_start = true;
     let mut previous = None;
+    // The character before `previous`: a `::` that starts a word is one wrapping could move
+    // to a line's start.
+    let mut before_previous = None;
     // Whether the word being escaped holds an ASCII letter or digit, once a lookalike in it
     // asked: each word is read at most twice more, however many lookalikes it has.
     let mut latin_word = None;
@@ -151,6 +154,10 @@ fn escape_line(line: &str, out: &mut String) {
             if !piece.iter().all(u8::is_ascii_alphanumeric) {
                 latin_word = None;
             }
+            before_previous = match run {
+                1 => previous,
+                _ => Some(piece[run - 2] as char),
+            };
             previous = Some(piece[run - 1] as char);
             index += run;
             continue;
@@ -164,8 +171,14 @@ fn escape_line(line: &str, out: &mut String) {
         }
         let escaped = match ch {
             _ if is_hidden(ch) => true,
-            // A line beginning with `::`, or a `::` that wrapping could put at a line's start.
-            ':' => at_start || previous == Some(':'),
+            // A line beginning with `::`, or a `::` that wrapping could put at a line's start
+            // and that a CI runner would obey (`ekb::KnowledgeBase` is left as it is).
+            ':' => {
+                at_start
+                    || (previous == Some(':')
+                        && (before_previous.is_none_or(char::is_whitespace)
+                            || names_workflow_command(&line[index + 1..])))
+            }
             '[' => ends_with_ci_marker(&line[..index]),
             _ if is_compatibility_form(ch) => true,
             _ if is_lookalike(ch) => *latin_word.get_or_insert_with(|| in_latin_word(line, index)),
@@ -177,9 +190,39 @@ fn escape_line(line: &str, out: &mut String) {
             _ => out.push(ch),
         }
         at_start &= ch == ' ';
+        before_previous = previous;
         previous = Some(ch);
         index += ch.len_utf8();
     }
+}
+
+/// The commands of GitHub's runner (`::error file=…::…`), which it matches in any case.
+const WORKFLOW_COMMANDS: [&str; 15] = [
+    "add-mask",
+    "add-matcher",
+    "add-path",
+    "debug",
+    "echo",
+    "endgroup",
+    "error",
+    "group",
+    "notice",
+    "remove-matcher",
+    "save-state",
+    "set-env",
+    "set-output",
+    "stop-commands",
+    "warning",
+];
+
+/// Whether `rest`, what follows a `::`, begins with the name of a workflow command.
+fn names_workflow_command(rest: &str) -> bool {
+    let end = rest
+        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
+        .unwrap_or(rest.len());
+    WORKFLOW_COMMANDS
+        .iter()
+        .any(|command| rest[..end].eq_ignore_ascii_case(command))
 }
 
 /// Whether `byte` is printable ASCII that [`escape_line`] never escapes, wherever it is
@@ -593,8 +636,11 @@ mod tests {
     fn ci_commands_are_broken_up() {
         assert_eq!(
             escape("::error file=a::x"),
-            "\\u{003A}\\u{003A}error file=a:\\u{003A}x"
+            "\\u{003A}\\u{003A}error file=a::x"
         );
+        assert_eq!(escape("see ::error x"), "see :\\u{003A}error x");
+        assert_eq!(escape("word::Warning x"), "word:\\u{003A}Warning x");
+        assert_eq!(escape("ekb::KnowledgeBase"), "ekb::KnowledgeBase");
         assert_eq!(escape("  ::warning"), "  \\u{003A}\\u{003A}warning");
         assert_eq!(escape(":"), "\\u{003A}");
         assert_eq!(escape("see ##[warning]x"), "see ##\\u{005B}warning]x");
