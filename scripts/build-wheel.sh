@@ -25,10 +25,19 @@ fi
 # below, which then reuses the compiled library instead of compiling it again; with the same
 # packages as scripts/build-deb.sh, which then builds nothing again.
 cargo build --quiet --locked --release -p ekb -p ekb-python -p ekb-capi --bin ekb --lib
-# What maturin lays in the wheel's .data/scripts (pyproject.toml: `data`).
+# What maturin lays in the wheel's .data (pyproject.toml: `data`): the executable in scripts/,
+# and in data/ (the environment's own root once installed) the man page and the
+# documentation, laid out as the Debian package lays them (share/doc/ekb).
 rm -rf target/wheel-data
-mkdir -p target/wheel-data/scripts
+mkdir -p target/wheel-data/scripts target/wheel-data/data/share/man/man1
 strip -o target/wheel-data/scripts/ekb target/release/ekb
+target/release/ekb man >target/wheel-data/data/share/man/man1/ekb.1
+doc=target/wheel-data/data/share/doc/ekb
+mkdir -p "$doc/docs" "$doc/editors/vscode"
+cp README.md CHANGELOG.md ARCHITECTURE.md BENCHMARKS.md "$doc/"
+cp docs/*.md "$doc/docs/"
+cp editors/README.md "$doc/editors/"
+cp editors/vscode/README.md "$doc/editors/vscode/"
 "$maturin" build --quiet --locked --release --strip -m crates/ekb-python/Cargo.toml \
   --out target/wheels >&2
 version=$(target/release/ekb --version | awk '{ print $2 }')

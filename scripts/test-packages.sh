@@ -22,6 +22,17 @@ passed=0
 ok() { echo "ok: $*"; passed=$((passed + 1)); }
 
 . scripts/version.sh
+
+# Fails unless every relative link of the Markdown files under $1 names a file there.
+links_to_docs() {
+  local file link target
+  while IFS= read -r file; do
+    while IFS= read -r link; do
+      target="$(dirname "$file")/${link%%#*}"
+      [ -e "$target" ] || fail "${file#"$1"/} links to $link, which is not installed"
+    done < <(grep -oE '\]\([^)#:]+(#[^)]*)?\)' "$file" | sed -E 's/^\]\(//; s/\)$//')
+  done < <(find "$1" -name '*.md')
+}
 seed=data/environmentKnowledgeBaseInput.dat
 
 wheel=$(bash scripts/build-wheel.sh)
@@ -58,6 +69,11 @@ ok "the wheel's ekb and import ekb are version $version"
 stripped "$work/venv/bin/ekb" "the wheel's ekb"
 stripped "$(ls "$work"/venv/lib/python*/site-packages/ekb/_ekb*.so)" "the wheel's module"
 ok "the wheel's executable and module are stripped"
+[ -s "$work/venv/share/man/man1/ekb.1" ] || fail "the wheel installs no share/man/man1/ekb.1"
+grep -q '^\.SH EXAMPLES' "$work/venv/share/man/man1/ekb.1" || fail "the wheel's man page has no EXAMPLES"
+links_to_docs "$work/venv/share/doc/ekb"
+[ -s "$work/venv/share/doc/ekb/docs/editors.md" ] || fail "the wheel installs no docs/editors.md"
+ok "the wheel installs the man page and the documentation (share/doc/ekb), its links resolving"
 report "$work/venv/bin/ekb" >"$work/wheel.report"
 diff -u "$work/cargo.report" "$work/wheel.report" ||
   fail "the wheel's ekb check of the seed file differs from the cargo build's"
@@ -94,8 +110,18 @@ DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --reinstall "$deb" >/dev/n
 stripped /usr/bin/ekb "the package's ekb"
 ok "the package installs /usr/bin/ekb, version $version, stripped"
 [ "$(man -w ekb)" = /usr/share/man/man1/ekb.1.gz ] || fail "man -w ekb: $(man -w ekb 2>&1)"
-zcat /usr/share/man/man1/ekb.1.gz | grep -q '^\.SH "\?EXIT STATUS' || fail "the man page has no EXIT STATUS"
-ok "the package installs the man page"
+for section in 'EXIT STATUS' EXAMPLES; do
+  zcat /usr/share/man/man1/ekb.1.gz | grep -q "^\.SH \"\?$section" || fail "the man page has no $section"
+done
+ok "the package installs the man page, with its EXAMPLES and EXIT STATUS"
+# The documentation, every link between its files resolving where it is installed.
+docs_dir=/usr/share/doc/ekb
+for file in README.md docs/library.md docs/editors.md docs/pre-commit.md docs/translators.md \
+  editors/README.md; do
+  [ -s "$docs_dir/$file" ] || fail "the package has no $docs_dir/$file"
+done
+links_to_docs "$docs_dir"
+ok "the package installs the documentation in $docs_dir, its links resolving"
 for completion in /usr/share/bash-completion/completions/ekb \
   /usr/share/zsh/vendor-completions/_ekb /usr/share/fish/vendor_completions.d/ekb.fish; do
   [ -s "$completion" ] || fail "the package has no $completion"
@@ -105,7 +131,7 @@ bash -c 'source /usr/share/bash-completion/completions/ekb && complete -p ekb' >
 ok "the package installs the bash, zsh and fish completions"
 for file in /usr/include/ekb.h /usr/include/ekb.hpp /usr/include/environmentKnowledgeBaseInterface.h \
   /usr/include/utilities/environmentKnowledgeBaseInterface.h \
-  /usr/include/behaviorController/environmentKnowledgeBaseInterface.h /usr/share/doc/ekb/library.md \
+  /usr/include/behaviorController/environmentKnowledgeBaseInterface.h \
   /usr/lib/libekb_capi.a /usr/lib/cmake/ekb/ekbConfig.cmake /usr/lib/cmake/ekb/ekbConfigVersion.cmake; do
   [ -s "$file" ] || fail "the package has no $file"
 done

@@ -84,3 +84,85 @@ fn man_page_documents_every_command_and_names_no_other_page() {
         assert!(page.contains(section), "{section}");
     }
 }
+
+/// The commands of the man page's EXAMPLES: each `.B ekb …` line and each `\fBekb …\fR` in
+/// the text below it, as a shell would split them.
+fn examples(page: &str) -> Vec<Vec<String>> {
+    let section = page
+        .split(".SH EXAMPLES\n")
+        .nth(1)
+        .and_then(|rest| rest.split("\n.SH ").next())
+        .expect("an EXAMPLES section");
+    let unroff = |text: &str| text.replace("\\-", "-").replace("\\(dq", "\"");
+    let mut commands = Vec::new();
+    for line in section.lines() {
+        if let Some(command) = line.strip_prefix(".B ") {
+            commands.push(unroff(command));
+        }
+        for piece in line.split("\\fB").skip(1) {
+            let command = piece.split("\\fR").next().unwrap();
+            if command.contains(' ') {
+                commands.push(unroff(command));
+            }
+        }
+    }
+    commands
+        .iter()
+        .map(|command| {
+            // Words, with a double-quoted one kept whole.
+            let mut words = Vec::new();
+            for (index, part) in command.split('"').enumerate() {
+                match index % 2 {
+                    1 => words.push(part.to_string()),
+                    _ => words.extend(part.split_whitespace().map(str::to_string)),
+                }
+            }
+            words
+        })
+        .collect()
+}
+
+#[test]
+fn every_example_of_the_man_page_runs() {
+    let page = ekb::commands::man::page(ekb::cli::Cli::command()).unwrap();
+    let examples = examples(&page);
+    assert!(examples.len() >= 10, "{examples:?}");
+    // The robot's folders: config/ naming the files in data/.
+    let dir = tempfile::tempdir().unwrap();
+    let corpus = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/mission/corpus");
+    for folder in ["config", "data"] {
+        std::fs::create_dir(dir.path().join(folder)).unwrap();
+        for entry in std::fs::read_dir(corpus.join(folder)).unwrap() {
+            let entry = entry.unwrap();
+            std::fs::copy(
+                entry.path(),
+                dir.path().join(folder).join(entry.file_name()),
+            )
+            .unwrap();
+        }
+    }
+    for words in examples {
+        assert_eq!(words[0], "ekb", "{words:?}");
+        let args: Vec<&str> = words[1..]
+            .iter()
+            .map(|word| match word.as_str() {
+                "FILE" => "data/environmentKnowledgeBaseInput.dat",
+                word => word,
+            })
+            .collect();
+        let output = assert_cmd::Command::cargo_bin("ekb")
+            .unwrap()
+            .current_dir(dir.path())
+            .env_remove("EKB_CONFIG")
+            .args(&args)
+            .output()
+            .unwrap();
+        // 1 is a finding (or a diff): the example did its job.
+        assert!(
+            matches!(output.status.code(), Some(0 | 1)),
+            "ekb {}: {}",
+            args.join(" "),
+            String::from_utf8_lossy(&output.stderr)
+        );
+    }
+}

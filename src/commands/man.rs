@@ -33,6 +33,7 @@ pub fn page(cli: clap::Command) -> io::Result<String> {
     for command in cli.get_subcommands() {
         page += &command_section(command)?;
     }
+    page += EXAMPLES;
     page += EXIT_STATUS;
     page += &environment();
     page += &files();
@@ -96,6 +97,38 @@ fn without_headings(section: &str) -> String {
         .map(|line| format!("{line}\n"))
         .collect()
 }
+
+/// The first hour's commands, in the order a content editor, a translator and a robot
+/// engineer meet them (each is run by a test).
+const EXAMPLES: &str = r#".SH EXAMPLES
+.TP
+.B ekb check data/environmentKnowledgeBaseInput.dat
+What the robot would load, and what is wrong: errors first, each after what causes it.
+.TP
+.B ekb check \-\-show\-all \-\-select untranslated\-message FILE
+Every finding of one rule, where the report groups many of them into one paragraph.
+.TP
+.B ekb fix \-\-diff FILE
+What \fBekb fix\fR would change, without writing; \fBekb fix FILE\fR then fixes it in place.
+.TP
+.B ekb explain key\-case
+One rule: what it does, why it matters, an example.
+.TP
+.B ekb tour \-\-lang rw FILE
+The tour as the robot says it, in Kinyarwanda.
+.TP
+.B ekb export \-\-format po \-\-lang zu \-o zu.po FILE
+A PO file for translators; \fBekb import \-\-po zu.po FILE\fR brings their isiZulu back, changing only those lines.
+.TP
+.B ekb set 4 preGestureMessageIsiZulu \(dqLe yiRoomba\(dq FILE
+One value, changed in place.
+.TP
+.B ekb map \-o tour.png FILE
+The tour drawn on the lab map; \fBekb report \-o report.html FILE\fR puts the map, the messages and the findings on one page.
+.TP
+.B ekb mission check \-\-config\-dir config
+The behaviour tree and both knowledge bases, as the robot's configuration folder names them.
+"#;
 
 const EXIT_STATUS: &str = r#".SH "EXIT STATUS"
 .TP
