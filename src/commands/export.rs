@@ -6,11 +6,12 @@ use std::path::{Path, PathBuf};
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::export::{ExportView, ExportedKnowledgeBase};
-use crate::model::Language;
+use crate::model::{Dialect, Key, Language};
 use crate::reader::{self, export::LoadedExport};
 use crate::render::safe_json as json;
 use crate::render::{self, escape::escape, Format, RenderOptions};
 use crate::streams;
+use crate::syntax::Body;
 use crate::translations::{po, Catalog};
 use crate::write;
 use crate::write::write_atomically;
@@ -88,6 +89,16 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         return report_to_stderr(checked.errors_only(), &why, context);
     }
     write_output(args.output.as_deref(), &ExportView::new(&checked.kb))?;
+    if !context.quiet {
+        if let Some(what) = left_out(checked.source.text()) {
+            crate::stderr_line!(
+                "ekb: warning: {}: {what} not in the JSON, which holds what the robot loads: \
+                 `ekb import` of it writes none of them (docs/fixing-and-formatting.md says \
+                 what the round trip keeps)",
+                escape(source.name())
+            );
+        }
+    }
     if checked.has_errors() {
         // What the robot would not load is not in the export, and `import` of it would not
         // write it back (a line whose key is in the wrong case, say): it is said, by line.
@@ -198,6 +209,47 @@ fn plural(count: usize, word: &str) -> String {
     } else {
         format!("{count} {word}s")
     }
+}
+
+/// What of `text` the export has no place for, in words (`None`: nothing): its comments
+/// (suppressions named: without them, `ekb check` of the imported file finds what they
+/// silenced) and the lines of keys the robot does not read. A dialect's declaration is not
+/// one: the JSON says the dialect.
+fn left_out(text: &str) -> Option<String> {
+    let (mut comments, mut suppressions, mut unread) = (0, 0, 0);
+    for line in crate::syntax::lines(text) {
+        match line.body {
+            Body::Comment(comment) => {
+                let comment = comment.text(text);
+                if Dialect::declared_in(comment).is_some() {
+                    continue;
+                }
+                comments += 1;
+                let directive = comment[1..].trim_start().strip_prefix("ekb:");
+                if directive.is_some_and(|rest| rest.trim_start().starts_with("ignore")) {
+                    suppressions += 1;
+                }
+            }
+            Body::Entry { key, .. } if Key::from_name(key.text(text)).is_none() => unread += 1,
+            _ => {}
+        }
+    }
+    let mut parts = Vec::new();
+    if comments > 0 {
+        let mut part = plural(comments, "comment line");
+        if suppressions > 0 {
+            part += &format!(" ({suppressions} `# ekb: ignore`)");
+        }
+        parts.push(part);
+    }
+    if unread > 0 {
+        parts.push(format!(
+            "{} of a key the robot does not read",
+            plural(unread, "line")
+        ));
+    }
+    let verb = if comments + unread == 1 { "is" } else { "are" };
+    (!parts.is_empty()).then(|| format!("{} {verb}", parts.join(" and ")))
 }
 
 /// Writes JSON to `output` (through [`crate::write`]) or standard output.

@@ -16,7 +16,7 @@ use crate::render::safe_json::MadeAsWritten;
 pub struct ExportedKnowledgeBase {
     /// `seed` or `current`; null when the file has no dialect-specific key.
     pub dialect: Option<Dialect>,
-    /// In ascending id order.
+    /// In the order of the file (ascending ids, for a file written in that order).
     pub locations: Vec<ExportedLocation>,
     /// Location ids in the order visited; null when the file has no tour.
     pub tour: Option<Vec<u32>>,
@@ -53,7 +53,12 @@ impl From<&KnowledgeBase<'_>> for ExportedKnowledgeBase {
     fn from(kb: &KnowledgeBase<'_>) -> ExportedKnowledgeBase {
         ExportedKnowledgeBase {
             dialect: kb.dialect,
-            locations: kb.locations().iter().map(ExportedLocation::from).collect(),
+            locations: kb
+                .locations()
+                .in_file_order()
+                .into_iter()
+                .map(ExportedLocation::from)
+                .collect(),
             tour: kb
                 .tour
                 .as_ref()
@@ -112,7 +117,7 @@ impl<'k, 'a> ExportView<'k, 'a> {
 }
 
 fn locations_view<'a, S: Serializer>(locations: &Locations<'a>, out: S) -> Result<S::Ok, S::Error> {
-    let locations: Vec<&Location<'a>> = locations.iter().collect();
+    let locations = locations.in_file_order();
     MadeAsWritten::new(&locations, |location: &&Location<'a>| {
         LocationView::new(location)
     })

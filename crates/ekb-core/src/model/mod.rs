@@ -393,6 +393,17 @@ impl<'a> Locations<'a> {
         self.0.len()
     }
 
+    /// The locations in the order of the file: each where its first line is. (`ekb import`
+    /// writes them back in this order: a file's order is what keeps the robot's tree of ids
+    /// shallow, and sorted ids would make it a list.)
+    pub fn in_file_order(&self) -> Vec<&Location<'a>> {
+        let mut locations: Vec<&Location<'a>> = self.0.iter().collect();
+        if !locations.is_sorted_by_key(|location| location.first_line.start) {
+            locations.sort_by_key(|location| location.first_line.start);
+        }
+        locations
+    }
+
     pub fn is_empty(&self) -> bool {
         self.0.is_empty()
     }
