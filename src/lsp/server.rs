@@ -14,7 +14,7 @@
 use std::collections::VecDeque;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-use crossbeam_channel::{Receiver, Sender};
+use crossbeam_channel::Receiver;
 use lsp_server::{ErrorCode, Message, Notification, Request, RequestId, Response, ResponseError};
 use lsp_types::notification::{self as notify, Notification as _};
 use lsp_types::request::{self as ask, Request as _};
@@ -30,7 +30,7 @@ use serde_json::Value;
 use super::documents::{Document, Documents};
 use super::handlers::{self, code_actions, Answer, Snapshot};
 use super::position::Encoding;
-use super::transport::{Incoming, Outgoing};
+use super::transport::{Held, Incoming, Outbox};
 use super::workspace::{self, Workspace};
 use crate::context::Context;
 
@@ -44,7 +44,7 @@ pub enum Ending {
 }
 
 /// Serves one client until it says `exit` or goes away.
-pub fn serve(incoming: &Receiver<Incoming>, outgoing: &Sender<Outgoing>, cli: &Context) -> Ending {
+pub fn serve(incoming: &Receiver<Incoming>, outgoing: &Outbox, cli: &Context) -> Ending {
     let Some(mut server) = initialize(incoming, outgoing, cli) else {
         return Ending::Abrupt;
     };
@@ -52,11 +52,7 @@ pub fn serve(incoming: &Receiver<Incoming>, outgoing: &Sender<Outgoing>, cli: &C
 }
 
 /// Waits for `initialize` and answers it; `None` if the client leaves first.
-fn initialize(
-    incoming: &Receiver<Incoming>,
-    outgoing: &Sender<Outgoing>,
-    cli: &Context,
-) -> Option<Server> {
+fn initialize(incoming: &Receiver<Incoming>, outgoing: &Outbox, cli: &Context) -> Option<Server> {
     let send = |message: Message| {
         let _ = outgoing.send(message.into());
     };
@@ -66,11 +62,11 @@ fn initialize(
                 let _ = outgoing.send(answer);
                 continue;
             }
-            Incoming::Message(Message::Request(request)) => request,
-            Incoming::Message(Message::Notification(n)) if n.method == notify::Exit::METHOD => {
+            Incoming::Message(Message::Request(request), _) => request,
+            Incoming::Message(Message::Notification(n), _) if n.method == notify::Exit::METHOD => {
                 return None
             }
-            Incoming::Message(_) => continue,
+            Incoming::Message(..) => continue,
         };
         if request.method != ask::Initialize::METHOD {
             send(error(
@@ -101,7 +97,7 @@ fn initialize(
 }
 
 struct Server {
-    outgoing: Sender<Outgoing>,
+    outgoing: Outbox,
     encoding: Encoding,
     documents: Documents,
     workspace: Workspace,
@@ -114,11 +110,7 @@ struct Server {
 }
 
 impl Server {
-    fn new(
-        params: &InitializeParams,
-        outgoing: Sender<Outgoing>,
-        cli: &Context,
-    ) -> (Server, Vec<String>) {
+    fn new(params: &InitializeParams, outgoing: Outbox, cli: &Context) -> (Server, Vec<String>) {
         let capabilities = &params.capabilities;
         let offered = capabilities
             .general
@@ -183,7 +175,8 @@ impl Server {
     }
 
     fn run(&mut self, incoming: &Receiver<Incoming>) -> Ending {
-        let mut queue: VecDeque<Message> = VecDeque::new();
+        // Each message holds its bytes of the reader's budget until it is handled.
+        let mut queue: VecDeque<(Message, Held)> = VecDeque::new();
         loop {
             if queue.is_empty() {
                 self.publish(Checks::Make);
@@ -196,7 +189,7 @@ impl Server {
                 self.enqueue(next, &mut queue);
             }
             match queue.pop_front() {
-                Some(Message::Request(request)) => {
+                Some((Message::Request(request), _held)) => {
                     let id = request.id.clone();
                     let response = catch_unwind(AssertUnwindSafe(|| self.answer(request)))
                         .unwrap_or_else(|_| {
@@ -208,11 +201,11 @@ impl Server {
                         });
                     self.send(response);
                 }
-                Some(Message::Notification(n)) if n.method == notify::Exit::METHOD => {
+                Some((Message::Notification(n), _)) if n.method == notify::Exit::METHOD => {
                     return self.ending()
                 }
-                Some(Message::Notification(notification)) => self.notified(notification),
-                Some(Message::Response(_)) | None => {}
+                Some((Message::Notification(notification), _held)) => self.notified(notification),
+                Some((Message::Response(_), _)) | None => {}
             }
             // A request that needed a check made it: its diagnostics go now, not after the
             // requests still waiting.
@@ -229,13 +222,13 @@ impl Server {
 
     /// Queues what arrived, answering at once what cannot be read and the requests that are
     /// cancelled while they wait.
-    fn enqueue(&self, next: Incoming, queue: &mut VecDeque<Message>) {
-        let message = match next {
+    fn enqueue(&self, next: Incoming, queue: &mut VecDeque<(Message, Held)>) {
+        let (message, held) = match next {
             Incoming::Unreadable(answer) => {
                 let _ = self.outgoing.send(answer);
                 return;
             }
-            Incoming::Message(message) => message,
+            Incoming::Message(message, held) => (message, held),
         };
         if let Message::Notification(n) = &message {
             if n.method == notify::Cancel::METHOD {
@@ -244,15 +237,17 @@ impl Server {
                     .get("id")
                     .and_then(|id| serde_json::from_value(id.clone()).ok());
                 let waiting = queue.iter().position(
-                    |m| matches!(m, Message::Request(r) if Some(&r.id) == cancelled.as_ref()),
+                    |(m, _)| matches!(m, Message::Request(r) if Some(&r.id) == cancelled.as_ref()),
                 );
-                if let Some(Message::Request(request)) = waiting.and_then(|at| queue.remove(at)) {
+                if let Some((Message::Request(request), _)) =
+                    waiting.and_then(|at| queue.remove(at))
+                {
                     self.send(error(request.id, ErrorCode::RequestCanceled, "cancelled"));
                 }
                 return;
             }
         }
-        queue.push_back(message);
+        queue.push_back((message, held));
     }
 
     fn answer(&mut self, request: Request) -> Message {

@@ -8,10 +8,14 @@
 //!
 //! Both queues are bounded: a client that sends requests and never reads the answers
 //! fills the outgoing queue, the server then waits to send, stops taking requests, the
-//! incoming queue fills and the reader stops reading, so the client's own writes wait.
-//! The server's memory stays what the queues hold, however long the client stalls.
+//! incoming messages fill their budget and the reader stops reading, so the client's own
+//! writes wait. The server's memory stays what the queues hold, however long the client
+//! stalls. What was read is bounded in bytes, not only in messages: each message read holds
+//! its size of [`INCOMING_BUDGET`] until the server has handled it (a [`Held`]), so 8 MB
+//! edits a stalled client keeps sending cost at most the budget, not 256 of them.
 
 use std::io::{self, BufRead, Read, Write};
+use std::sync::{Arc, Condvar, Mutex};
 use std::thread;
 
 use crossbeam_channel::{Receiver, Sender};
@@ -28,13 +32,22 @@ const MAX_CONTENT_LENGTH: usize = 1 << 30;
 /// file of 3,000 locations), so few.
 const OUTGOING_CAPACITY: usize = 16;
 
+/// How many bytes of framed messages wait to be written at most (one larger message waits
+/// alone): the diagnostics of a large document are megabytes.
+const OUTGOING_BUDGET: usize = 64 << 20;
+
 /// How many messages read wait for the server at most.
 const INCOMING_CAPACITY: usize = 256;
+
+/// How many bytes of messages read but not yet handled the server holds at most (one
+/// larger message is read alone).
+const INCOMING_BUDGET: usize = 64 << 20;
 
 /// What the reader passes on.
 #[derive(Debug)]
 pub enum Incoming {
-    Message(Message),
+    /// A message, holding its bytes of the budget until dropped.
+    Message(Message, Held),
     /// A message that could not be read, and the error that answers it.
     Unreadable(Outgoing),
 }
@@ -60,8 +73,29 @@ impl From<Message> for Outgoing {
 #[derive(Debug)]
 pub struct Transport {
     pub incoming: Receiver<Incoming>,
-    pub outgoing: Sender<Outgoing>,
+    pub outgoing: Outbox,
     writer: thread::JoinHandle<io::Result<()>>,
+}
+
+/// The server's end of the outgoing queue: each message is framed as it is sent, and the
+/// frame holds its bytes of the outgoing budget until it is written.
+#[derive(Debug, Clone)]
+pub struct Outbox {
+    frames: Sender<(Vec<u8>, Held)>,
+    budget: Budget,
+}
+
+/// The writer has stopped: the client is gone.
+#[derive(Debug)]
+pub struct Disconnected;
+
+impl Outbox {
+    /// Waits for room in the queue and in its budget, then queues `message`.
+    pub fn send(&self, message: Outgoing) -> Result<(), Disconnected> {
+        let frame = framed(message);
+        let held = self.budget.hold(frame.len());
+        self.frames.send((frame, held)).map_err(|_| Disconnected)
+    }
 }
 
 impl Transport {
@@ -72,7 +106,11 @@ impl Transport {
         output: impl Write + Send + 'static,
     ) -> Transport {
         let (incoming_sender, incoming) = crossbeam_channel::bounded(INCOMING_CAPACITY);
-        let (outgoing, outgoing_receiver) = crossbeam_channel::bounded(OUTGOING_CAPACITY);
+        let (frames, outgoing_receiver) = crossbeam_channel::bounded(OUTGOING_CAPACITY);
+        let outgoing = Outbox {
+            frames,
+            budget: Budget::new(OUTGOING_BUDGET),
+        };
         thread::Builder::new()
             .name("ekb-lsp-reader".into())
             .spawn(move || read_messages(input, &incoming_sender))
@@ -105,41 +143,116 @@ impl Transport {
     }
 }
 
+/// Bytes of the messages read that the server has not handled yet, shared by the reader
+/// (which waits for room) and the server (whose [`Held`]s give it back).
+#[derive(Debug, Clone)]
+struct Budget {
+    state: Arc<(Mutex<usize>, Condvar)>,
+    capacity: usize,
+}
+
+impl Budget {
+    fn new(capacity: usize) -> Budget {
+        Budget {
+            state: Arc::new((Mutex::new(0), Condvar::new())),
+            capacity,
+        }
+    }
+
+    /// Waits until `bytes` more fit (or nothing is held: a message larger than the whole
+    /// budget is read alone), and holds them.
+    fn hold(&self, bytes: usize) -> Held {
+        let (used, room) = &*self.state;
+        let mut used = used.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+        while *used > 0 && *used + bytes > self.capacity {
+            used = room
+                .wait(used)
+                .unwrap_or_else(|poisoned| poisoned.into_inner());
+        }
+        *used += bytes;
+        Held {
+            budget: self.clone(),
+            bytes,
+        }
+    }
+
+    #[cfg(test)]
+    fn used(&self) -> usize {
+        *self.state.0.lock().unwrap()
+    }
+}
+
+/// Bytes of the budget a message read holds; given back when it is dropped.
+#[derive(Debug)]
+pub struct Held {
+    budget: Budget,
+    bytes: usize,
+}
+
+impl Drop for Held {
+    fn drop(&mut self) {
+        let (used, room) = &*self.budget.state;
+        let mut used = used.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+        *used -= self.bytes;
+        room.notify_all();
+    }
+}
+
 fn read_messages(mut input: impl BufRead, incoming: &Sender<Incoming>) {
+    read_within(&mut input, incoming, &Budget::new(INCOMING_BUDGET));
+}
+
+fn read_within(mut input: impl BufRead, incoming: &Sender<Incoming>, budget: &Budget) {
     loop {
         let next = match read_frame(&mut input) {
             Ok(Frame::End) | Err(_) => return,
-            Ok(Frame::Body(body)) => decode(&body),
+            Ok(Frame::Body(body)) => {
+                // The body and what it decodes to (its strings, as long): held until handled.
+                let held = budget.hold(2 * body.len());
+                match decode(&body) {
+                    Ok(message) => Incoming::Message(message, held),
+                    Err(answer) => Incoming::Unreadable(answer),
+                }
+            }
             Ok(Frame::Malformed(reason)) => Incoming::Unreadable(Outgoing::ErrorWithoutId {
                 code: ErrorCode::ParseError,
                 message: reason,
             }),
         };
         let is_exit =
-            matches!(&next, Incoming::Message(Message::Notification(n)) if n.method == "exit");
+            matches!(&next, Incoming::Message(Message::Notification(n), _) if n.method == "exit");
         if incoming.send(next).is_err() || is_exit {
             return;
         }
     }
 }
 
-fn write_messages(outgoing: &Receiver<Outgoing>, mut output: impl Write) -> io::Result<()> {
-    for message in outgoing {
-        match message {
-            Outgoing::Message(message) => message.write(&mut output)?,
-            Outgoing::ErrorWithoutId { code, message } => {
-                let error = serde_json::json!({
-                    "jsonrpc": "2.0",
-                    "id": null,
-                    "error": { "code": code as i32, "message": message },
-                });
-                let text = error.to_string();
-                write!(output, "Content-Length: {}\r\n\r\n{text}", text.len())?;
-                output.flush()?;
-            }
-        }
+fn write_messages(frames: &Receiver<(Vec<u8>, Held)>, mut output: impl Write) -> io::Result<()> {
+    for (frame, _held) in frames {
+        output.write_all(&frame)?;
+        output.flush()?;
     }
     Ok(())
+}
+
+/// `message` as the client reads it: its header, a blank line, its JSON.
+fn framed(message: Outgoing) -> Vec<u8> {
+    let mut frame = Vec::new();
+    match message {
+        Outgoing::Message(message) => message
+            .write(&mut frame)
+            .expect("writing to memory does not fail"),
+        Outgoing::ErrorWithoutId { code, message } => {
+            let error = serde_json::json!({
+                "jsonrpc": "2.0",
+                "id": null,
+                "error": { "code": code as i32, "message": message },
+            });
+            let text = error.to_string();
+            frame = format!("Content-Length: {}\r\n\r\n{text}", text.len()).into_bytes();
+        }
+    }
+    frame
 }
 
 /// One frame of the input.
@@ -234,14 +347,14 @@ fn read_frame(input: &mut impl BufRead) -> io::Result<Frame> {
 }
 
 /// A message, or the error that answers a body that is not one.
-fn decode(body: &[u8]) -> Incoming {
+fn decode(body: &[u8]) -> Result<Message, Outgoing> {
     if let Ok(message) = serde_json::from_slice::<Message>(body) {
-        return Incoming::Message(message);
+        return Ok(message);
     }
     let value = match serde_json::from_slice::<Value>(body) {
         Ok(value) => value,
         Err(error) => {
-            return Incoming::Unreadable(Outgoing::ErrorWithoutId {
+            return Err(Outgoing::ErrorWithoutId {
                 code: ErrorCode::ParseError,
                 message: format!("the message is not JSON: {error}"),
             })
@@ -253,7 +366,7 @@ fn decode(body: &[u8]) -> Incoming {
     let id = value
         .get("id")
         .and_then(|id| serde_json::from_value::<RequestId>(id.clone()).ok());
-    Incoming::Unreadable(match id {
+    Err(match id {
         Some(id) => Outgoing::Message(Message::Response(Response::new_err(
             id,
             ErrorCode::InvalidRequest as i32,
@@ -300,23 +413,73 @@ mod tests {
         }
     }
 
-    #[test]
-    fn answers_to_a_client_that_never_reads_wait_in_a_bounded_queue() {
+    /// Sends `answers` answers of `bytes` bytes each to a client that never reads, on a
+    /// thread of their own: how many were queued after a while.
+    fn queued_for_a_stalled_client(answers: usize, bytes: usize) -> usize {
         let (release, stalled) = crossbeam_channel::bounded(0);
         let transport = Transport::new(io::empty(), Stalled(stalled));
-        let answer = || {
-            Outgoing::Message(Message::Response(Response::new_ok(
-                RequestId::from(1),
-                "x".repeat(1000),
-            )))
-        };
-        // The writer holds one answer, blocked; the queue holds the rest, then is full.
-        let queued = (0..10_000)
-            .position(|_| transport.outgoing.try_send(answer()).is_err())
-            .expect("the queue fills");
-        assert!(queued <= OUTGOING_CAPACITY + 1, "{queued} answers queued");
+        let sent = Arc::new(std::sync::atomic::AtomicUsize::new(0));
+        let outbox = transport.outgoing.clone();
+        let counter = sent.clone();
+        let sender = thread::spawn(move || {
+            for _ in 0..answers {
+                let answer = Response::new_ok(RequestId::from(1), "x".repeat(bytes));
+                if outbox
+                    .send(Outgoing::Message(Message::Response(answer)))
+                    .is_err()
+                {
+                    return;
+                }
+                counter.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+            }
+        });
+        std::thread::sleep(std::time::Duration::from_millis(300));
+        let queued = sent.load(std::sync::atomic::Ordering::SeqCst);
         drop(release);
         let _ = transport.finish();
+        let _ = sender.join();
+        queued
+    }
+
+    #[test]
+    fn answers_to_a_client_that_never_reads_wait_in_a_bounded_queue() {
+        // The writer holds one answer, blocked; the queue holds the rest, then is full.
+        let queued = queued_for_a_stalled_client(10_000, 1000);
+        assert!(queued <= OUTGOING_CAPACITY + 1, "{queued} answers queued");
+        // Large answers fill the budget in bytes first.
+        let queued = queued_for_a_stalled_client(100, 20 << 20);
+        assert!(
+            queued <= OUTGOING_BUDGET / (20 << 20) + 1,
+            "{queued} answers queued"
+        );
+    }
+
+    #[test]
+    fn messages_read_wait_for_the_server_within_a_budget_of_bytes() {
+        // Ten 1 MB notifications, a budget of 3 MB: the reader stops after the third (each
+        // holds twice its body) until the server drops what it has handled.
+        let body = format!(
+            r#"{{"jsonrpc":"2.0","method":"x","params":"{}"}}"#,
+            "a".repeat(1 << 20)
+        );
+        let frame = format!("Content-Length: {}\r\n\r\n{body}", body.len());
+        let input = io::Cursor::new(frame.repeat(10).into_bytes());
+        let budget = Budget::new(3 * 2 * body.len());
+        let (sender, receiver) = crossbeam_channel::bounded(INCOMING_CAPACITY);
+        let reader_budget = budget.clone();
+        let reader = thread::spawn(move || read_within(input, &sender, &reader_budget));
+        let mut handled = Vec::new();
+        while handled.len() < 3 {
+            handled.push(receiver.recv().unwrap());
+        }
+        std::thread::sleep(std::time::Duration::from_millis(100));
+        assert!(receiver.try_recv().is_err(), "a fourth message was read");
+        assert_eq!(budget.used(), 3 * 2 * body.len());
+        drop(handled);
+        let rest = receiver.iter().take(7).count();
+        assert_eq!(rest, 7);
+        reader.join().unwrap();
+        assert_eq!(budget.used(), 0);
     }
 
     #[test]
@@ -338,8 +501,8 @@ mod tests {
     #[test]
     fn bodies_that_are_no_message_get_the_error_they_deserve() {
         let answer = |body: &str| match decode(body.as_bytes()) {
-            Incoming::Unreadable(answer) => answer,
-            Incoming::Message(message) => panic!("read {message:?}"),
+            Err(answer) => answer,
+            Ok(message) => panic!("read {message:?}"),
         };
         assert!(matches!(
             answer("{not json"),
