@@ -59,6 +59,10 @@ pub fn may_be_one(comment: &str) -> bool {
 pub fn find(text: &str) -> (Vec<Suppression>, Vec<Malformed>) {
     let (mut found, mut malformed) = (Vec::new(), Vec::new());
     let mut last_line_start = None;
+    // What the last suppression of a line covers (once one was found): no entry lies
+    // between that suppression and its line, so a suppression before that line covers it
+    // too (100,000 suppressions in a row are read once, not each to the end of the run).
+    let mut last_target: Option<Option<Span>> = None;
     for at in memchr::memmem::find_iter(text.as_bytes(), MARK) {
         let line_start = text[..at].rfind('\n').map_or(0, |newline| newline + 1);
         if last_line_start == Some(line_start) {
@@ -74,7 +78,16 @@ pub fn find(text: &str) -> (Vec<Suppression>, Vec<Malformed>) {
             Parsed::Suppression(scope, list, names) => {
                 let scope = match scope {
                     ParsedScope::File => Scope::File,
-                    ParsedScope::Line => Scope::Line(target(lines)),
+                    ParsedScope::Line => {
+                        let covered = match last_target {
+                            Some(Some(target)) if line.span.start < target.start => Some(target),
+                            // No entry after the last one: none after this one either.
+                            Some(None) => None,
+                            _ => target(lines),
+                        };
+                        last_target = Some(covered);
+                        Scope::Line(covered)
+                    }
                 };
                 found.push(Suppression {
                     line: line.span,
@@ -189,5 +202,28 @@ mod tests {
         assert_eq!(found[0].list.text(text), " key-case ,repeated-word");
         assert_eq!(found[1].scope, Scope::File);
         assert_eq!(malformed.len(), 1, "`# ekb: ignore` names no rule");
+    }
+
+    #[test]
+    fn suppressions_in_a_row_cover_the_line_after_them_all() {
+        let text = "# ekb: ignore[a]\n# ekb: ignore[b]\n\n# ekb: ignore[c]\nkey 1 x\n\
+                    # ekb: ignore[d]\nkey 2 y\n# ekb: ignore[e]\n# ekb: ignore[f]\n";
+        let (found, _) = find(text);
+        let line = |start: &str| {
+            let at = text.find(start).unwrap();
+            Some(Span::new(at, at + 8))
+        };
+        let scopes: Vec<Scope> = found.iter().map(|s| s.scope).collect();
+        assert_eq!(
+            scopes,
+            [
+                Scope::Line(line("key 1")),
+                Scope::Line(line("key 1")),
+                Scope::Line(line("key 1")),
+                Scope::Line(line("key 2")),
+                Scope::Line(None),
+                Scope::Line(None),
+            ]
+        );
     }
 }

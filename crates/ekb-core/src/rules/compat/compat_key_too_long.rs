@@ -42,6 +42,8 @@ pub fn check(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagn
     lines.sort_unstable_by_key(|span| span.start);
     for span in lines {
         let line = &text.as_bytes()[span.range()];
+        // Found once a line (reading the line is as long as the line), not at each piece.
+        let mut location = None;
         for (offset, piece) in chunks(line, reader.line_buffer()) {
             let Some(word) = key_buffer::first_word(piece).filter(|w| w.len() >= buffer) else {
                 continue;
@@ -55,7 +57,7 @@ pub fn check(kb: &KnowledgeBase<'_>, text: &str, reader: Reader, out: &mut Diagn
                 "the first word of the rest of this line, which the reader reads as a line of its own,"
             };
             let bytes = word.len();
-            let location = location_of(span, text);
+            let location = *location.get_or_insert_with(|| location_of(span, text));
             report(word_span, bytes, buffer, text, what, location, out);
         }
     }
