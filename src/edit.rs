@@ -5,7 +5,7 @@
 //! Then [`new_errors`] tells what the chosen reader would make of the edited lines, so that a
 //! value it would misread (a leading quote, a line longer than its buffer) is refused.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use crate::check::{check, Checked as CheckedFile};
 use crate::diagnostic::{Diagnostic, Edit};
@@ -63,7 +63,9 @@ struct LineMap {
 }
 
 impl LineMap {
-    fn new(text: &str) -> LineMap {
+    /// The lines of the locations `ids` (the others are not kept: `ekb set` of one value in
+    /// a 100 MB file maps one location's lines).
+    fn new(text: &str, ids: &HashSet<u32>) -> LineMap {
         let mut map = LineMap {
             read: HashMap::new(),
             by_id: HashMap::new(),
@@ -77,7 +79,7 @@ impl LineMap {
                 continue;
             };
             let (id, _) = syntax::first_token(text, args);
-            let Some(id) = parse_id(id.text(text)) else {
+            let Some(id) = parse_id(id.text(text)).filter(|id| ids.contains(id)) else {
                 continue;
             };
             if Key::from_name(key_text).is_some() {
@@ -91,7 +93,8 @@ impl LineMap {
 
 /// Makes `edits` in `text`. Two edits of one key of one location: the later wins.
 pub fn apply(text: &str, edits: &[ValueEdit]) -> Result<Edited, EditError> {
-    let map = LineMap::new(text);
+    let ids: HashSet<u32> = edits.iter().map(|edit| edit.id).collect();
+    let map = LineMap::new(text, &ids);
     let mut changes: Vec<(Edit, usize)> = Vec::new();
     for edit in edits {
         changes.push((change(text, &map, edit)?, edit.key.order()));
@@ -109,15 +112,22 @@ pub fn apply(text: &str, edits: &[ValueEdit]) -> Result<Edited, EditError> {
         }
     }
     let new_text = crate::fixing::splice(text, &merged);
-    let new_map = LineMap::new(&new_text);
-    let (old_index, new_index) = (LineIndex::new(text), LineIndex::new(&new_text));
-    let lines = edits
+    let old_index = LineIndex::new(text);
+    let old_lines: Vec<Option<u32>> = edits
         .iter()
         .map(|edit| {
-            let old = map
-                .read
+            map.read
                 .get(&(edit.id, edit.key))
-                .map(|line| old_index.line(line.span.start));
+                .map(|line| old_index.line(line.span.start))
+        })
+        .collect();
+    drop(map);
+    let new_map = LineMap::new(&new_text, &ids);
+    let new_index = LineIndex::new(&new_text);
+    let lines = edits
+        .iter()
+        .zip(old_lines)
+        .map(|(edit, old)| {
             let new = new_map
                 .read
                 .get(&(edit.id, edit.key))
@@ -239,7 +249,8 @@ pub struct CheckedEdit {
 }
 
 /// Makes `edits` in `source` (see [`apply`]) and checks the result as `options` say, against
-/// the same reader as the file before.
+/// the same reader as the file before. One check is held at a time: of the check before,
+/// only the errors of the edited lines are kept.
 pub fn apply_checked(
     source: &SourceFile,
     options: &Options,
@@ -247,57 +258,58 @@ pub fn apply_checked(
 ) -> Result<Checked, EditError> {
     let edited = apply(source.text(), edits)?;
     let before = check(source, options);
+    let had = errors_on(&before, edited.lines.iter().map(|&(old, _)| old));
     // The reader the file was checked against, even if the edit changes the dialect.
     let options = Options {
         reader: Some(before.reader),
         verbose: false,
         ..*options
     };
+    drop(before);
     let after_source = SourceFile::from_bytes(source.name(), edited.text.into_bytes());
     let after = check(&after_source, &options);
+    let now = errors_on(&after, edited.lines.iter().map(|&(_, new)| Some(new)));
     let edits = edited
         .lines
         .iter()
-        .map(|&lines| CheckedEdit {
-            line: lines.1,
-            errors: new_errors(&before, &after, lines)
+        .zip(had.into_iter().zip(now))
+        .map(|(&(_, line), (had, now))| CheckedEdit {
+            line,
+            // What the edit would make the robot's reader misread or miss: the errors new
+            // to the line (a line added had none).
+            errors: now
                 .into_iter()
-                .cloned()
+                .filter(|error| !had.iter().any(|old| old.rule.name == error.rule.name))
                 .collect(),
         })
         .collect();
     let errors = after.summary().errors;
     drop(after);
     Ok(Checked {
-        text: after_source.text().to_string(),
+        text: after_source.into_text(),
         edits,
         errors,
     })
 }
 
-/// The errors `after` finds on line `new_line` that `before` did not find on `old_line` (a
-/// line added had none): what the edit would make the robot's reader misread or miss.
-fn new_errors<'c>(
-    before: &CheckedFile<'_>,
-    after: &'c CheckedFile<'_>,
-    (old_line, new_line): (Option<u32>, u32),
-) -> Vec<&'c Diagnostic> {
-    let index_before = LineIndex::new(before.source.text());
-    let index_after = LineIndex::new(after.source.text());
-    let had: Vec<&'static str> = old_line.map_or_else(Vec::new, |line| {
-        before
-            .diagnostics
-            .iter()
-            .filter(|d| d.severity() == Severity::Error)
-            .filter(|d| index_before.line(d.span.start) == line)
-            .map(|d| d.rule.name)
-            .collect()
-    });
-    after
+/// The errors `checked` finds on each of `lines` (1-based; `None`: no line, no error), in
+/// one pass over its text and findings however many lines are asked for.
+fn errors_on(
+    checked: &CheckedFile<'_>,
+    lines: impl Iterator<Item = Option<u32>>,
+) -> Vec<Vec<Diagnostic>> {
+    let lines: Vec<Option<u32>> = lines.collect();
+    let mut found = vec![Vec::new(); lines.len()];
+    let index = LineIndex::new(checked.source.text());
+    for error in checked
         .diagnostics
         .iter()
         .filter(|d| d.severity() == Severity::Error)
-        .filter(|d| index_after.line(d.span.start) == new_line)
-        .filter(|d| !had.contains(&d.rule.name))
-        .collect()
+    {
+        let line = Some(index.line(error.span.start));
+        for (at, _) in lines.iter().enumerate().filter(|(_, &l)| l == line) {
+            found[at].push(error.clone());
+        }
+    }
+    found
 }

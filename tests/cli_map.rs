@@ -893,3 +893,41 @@ fn settings_choose_and_grade_the_map_rules_in_every_output() {
     assert_eq!(map_and_unused(&kb, &[]), []);
     assert_eq!(drawn_and_reported(&kb, &[], "pose-in-obstacle"), (0, 0));
 }
+
+/// `count` locations with a pose each, and a tour of `stops` stops over the first five.
+fn many_locations(count: u32, stops: usize) -> String {
+    let mut text: String = (1..=count)
+        .map(|id| format!("robotLocationPose {id} {}.0 {}.0 0\n", id % 10, id % 7))
+        .collect();
+    let tour: Vec<String> = (0..stops).map(|i| (i % 5 + 1).to_string()).collect();
+    text += &format!("tourSpecification {stops} {}\n", tour.join(" "));
+    text
+}
+
+#[test]
+fn a_drawing_has_at_most_2000_locations_and_1000_stops_and_says_what_it_leaves_out() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("many.dat");
+    std::fs::write(&file, many_locations(2_100, 1_200)).unwrap();
+    let svg = svg_of(file.to_str().unwrap(), &[]);
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let tour = doc
+        .descendants()
+        .find(|node| node.attribute("id") == Some("tour"))
+        .unwrap();
+    assert_eq!(
+        tour.attribute("data-locations").unwrap().split(' ').count(),
+        1_000
+    );
+    assert!(
+        svg.contains("100 more locations not drawn (at most 2000)"),
+        "{svg}"
+    );
+    assert!(svg.contains("200 more stops not drawn (at most 1000)"));
+    // The description still counts them all.
+    assert!(svg.contains("2100 locations; the tour visits"));
+    // Within the limits, nothing is said.
+    std::fs::write(&file, many_locations(2_000, 1_000)).unwrap();
+    let svg = svg_of(file.to_str().unwrap(), &[]);
+    assert!(!svg.contains("not drawn ("), "{svg}");
+}

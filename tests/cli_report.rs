@@ -491,3 +491,19 @@ fn the_report_renders_in_chromium_without_console_errors() {
         .count();
     assert!(blue > 50, "no arrow in the screenshot ({blue} blue pixels)");
 }
+
+#[test]
+fn the_page_shows_at_most_500_stops_and_500_unvisited_locations() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("many.dat");
+    let mut text: String = (1..=1_200)
+        .map(|id| format!("robotLocationDescription {id} Place {id}\n"))
+        .collect();
+    let tour: Vec<String> = (0..700).map(|i| (i % 5 + 1).to_string()).collect();
+    text += &format!("tourSpecification 700 {}\n", tour.join(" "));
+    std::fs::write(&file, text).unwrap();
+    let (_, page) = report(dir.path(), file.to_str().unwrap(), &[]);
+    assert_eq!(page.matches("<article class=\"stop\"").count(), 1_000);
+    assert!(page.contains("200 more stops are not shown: a page shows at most 500"));
+    assert!(page.contains("695 more locations no stop visits are not shown"));
+}

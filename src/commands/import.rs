@@ -143,27 +143,34 @@ fn import_po(args: &Args, po_path: &Path, context: &Context) -> CommandResult {
     let name = escape(source.name()).into_owned();
     let checked = check(&source, &options);
     let catalog = Catalog::new(&checked);
-    let plan = import::plan(&po, &catalog, language, args.accept_stale)
+    let mut plan = import::plan(&po, &catalog, language, args.accept_stale)
         .map_err(|e| fail_at(e.line, &format!("{} (nothing was imported)", e.message)))?;
-    let mut changes = plan.changes.clone();
+    // The edits check the file again: one check held at a time.
+    drop(catalog);
+    drop(checked);
+    let (mut entries, mut edits): (Vec<_>, Vec<ValueEdit>) =
+        std::mem::take(&mut plan.changes).into_iter().unzip();
     let mut misread = Vec::new();
     let edited = loop {
-        let edits: Vec<ValueEdit> = changes.iter().map(|(_, edit)| edit.clone()).collect();
         let edited = edit::apply_checked(&source, &options, &edits)
             .map_err(|error| CommandError::Failed(format!("{name}: {error}")))?;
         if args.force || edited.edits.iter().all(|e| e.errors.is_empty()) {
             break edited;
         }
         // Leave out what the reader would misread, and make the rest again.
-        let mut kept = Vec::new();
-        for (change, done) in changes.into_iter().zip(edited.edits) {
+        let (mut kept_entries, mut kept_edits) = (Vec::new(), Vec::new());
+        for ((entry, edit), done) in entries.into_iter().zip(edits).zip(edited.edits) {
             match done.errors.is_empty() {
-                true => kept.push(change),
-                false => misread.push((change.0, done.errors)),
+                true => {
+                    kept_entries.push(entry);
+                    kept_edits.push(edit);
+                }
+                false => misread.push((entry, done.errors)),
             }
         }
-        changes = kept;
+        (entries, edits) = (kept_entries, kept_edits);
     };
+    drop(edits);
     let style = DiffStyle {
         color: context.color_stdout(),
     };

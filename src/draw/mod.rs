@@ -19,6 +19,13 @@ use crate::reader::{view, Loaded};
 use crate::robot::Reader;
 use crate::rules::Rule;
 
+/// The most locations a drawing shows: the tour's first, then the others by id. A map of
+/// more is ink, not a picture, and its cost grows with every mark.
+pub const MAX_DRAWN_LOCATIONS: usize = 2_000;
+
+/// The most stops of the tour drawn (a robot's tour has 20; the drop-in holds no more).
+pub const MAX_DRAWN_STOPS: usize = 1_000;
+
 /// What a drawing shows: each location where the robot stands, the tour, the findings.
 #[derive(Debug)]
 pub struct Scene<'a> {
@@ -28,8 +35,13 @@ pub struct Scene<'a> {
     pub map: Option<&'a LabMap>,
     /// In ascending id order.
     pub spots: Vec<Spot<'a>>,
-    /// The tour: indexes into `spots`, in visit order (stops at unknown locations left out).
+    /// The tour: indexes into `spots`, in visit order (stops at unknown locations left
+    /// out), its first [`MAX_DRAWN_STOPS`] stops.
     pub tour: Vec<usize>,
+    /// The locations of the file not in `spots` ([`MAX_DRAWN_LOCATIONS`]).
+    pub undrawn_locations: usize,
+    /// The stops of the tour after its first [`MAX_DRAWN_STOPS`].
+    pub undrawn_stops: usize,
     /// Findings that are not about one location (the tour's, the file's), by rule.
     pub elsewhere: Vec<RuleCount>,
     pub summary: Summary,
@@ -108,22 +120,51 @@ impl<'a> Scene<'a> {
                         z: target[2],
                     }),
                     arm: location.gesture_arm.map(|arm| arm.value),
-                    stops: positions.of(location.id).to_vec(),
+                    stops: positions
+                        .of(location.id)
+                        .iter()
+                        .copied()
+                        .take_while(|&stop| stop <= MAX_DRAWN_STOPS)
+                        .collect(),
                     findings: Vec::new(),
                 }
             })
             .collect();
         spots.sort_by_key(|spot| spot.id);
+        let all_locations = spots.len();
+        if all_locations > MAX_DRAWN_LOCATIONS {
+            // The tour's locations first, then the others by id.
+            let mut kept = vec![false; all_locations];
+            let visited = spots
+                .iter()
+                .enumerate()
+                .filter(|(_, s)| !s.stops.is_empty());
+            let others = spots.iter().enumerate().filter(|(_, s)| s.stops.is_empty());
+            for (index, _) in visited.chain(others).take(MAX_DRAWN_LOCATIONS) {
+                kept[index] = true;
+            }
+            let mut index = 0;
+            spots.retain(|_| {
+                index += 1;
+                kept[index - 1]
+            });
+        }
+        let stops = checked.kb.tour_stops().count();
         let tour = checked
             .kb
             .tour_stops()
+            .take(MAX_DRAWN_STOPS)
             .filter_map(|id| index_of(&spots, id))
             .collect();
         let mut elsewhere = Vec::new();
         for diagnostic in &checked.diagnostics {
-            let index = diagnostic.location_id.and_then(|id| index_of(&spots, id));
-            let counts = match index {
-                Some(index) => &mut spots[index].findings,
+            let counts = match diagnostic.location_id {
+                Some(id) => match index_of(&spots, id) {
+                    Some(index) => &mut spots[index].findings,
+                    // Told of at a location not drawn: nowhere on the drawing.
+                    None if checked.kb.location(id).is_some() => continue,
+                    None => &mut elsewhere,
+                },
                 None => &mut elsewhere,
             };
             count(counts, diagnostic.rule, diagnostic.severity());
@@ -132,6 +173,8 @@ impl<'a> Scene<'a> {
             file: checked.source.name(),
             reader: checked.reader,
             map,
+            undrawn_locations: all_locations - spots.len(),
+            undrawn_stops: stops.saturating_sub(MAX_DRAWN_STOPS),
             spots,
             tour,
             elsewhere,

@@ -12,7 +12,7 @@ use base64::Engine;
 
 use super::frame::Frame;
 use super::layout::{Placer, Rect};
-use super::{Scene, Spot};
+use super::{Scene, Spot, MAX_DRAWN_LOCATIONS, MAX_DRAWN_STOPS};
 use crate::present::Gesture;
 use crate::render::markup::markup;
 use crate::rules::excerpt;
@@ -166,7 +166,7 @@ fn title(scene: &Scene<'_>) -> String {
 fn description(scene: &Scene<'_>) -> String {
     format!(
         "{} locations; the tour visits {}; as the {} reader loads the file. {}.",
-        scene.spots.len(),
+        scene.spots.len() + scene.undrawn_locations,
         tour_ids(scene),
         scene.reader.name(),
         scene.summary.sentence()
@@ -185,7 +185,10 @@ fn tour_ids(scene: &Scene<'_>) -> String {
         .map(|&index| scene.spots[index].id.to_string())
         .collect();
     if scene.tour.len() > 20 {
-        ids.push(format!("… ({} stops)", scene.tour.len()));
+        ids.push(format!(
+            "… ({} stops)",
+            scene.tour.len() + scene.undrawn_stops
+        ));
     }
     ids.join(" → ")
 }
@@ -765,6 +768,24 @@ fn legend_lines(scene: &Scene<'_>) -> Vec<LabelLine> {
     if undrawn > 0 {
         lines.push(LabelLine::plain(
             format!("{undrawn} locations not drawn: a pose is not a finite number"),
+            FINDING_COLOUR,
+        ));
+    }
+    if scene.undrawn_locations > 0 {
+        lines.push(LabelLine::plain(
+            format!(
+                "{} more locations not drawn (at most {MAX_DRAWN_LOCATIONS})",
+                scene.undrawn_locations
+            ),
+            FINDING_COLOUR,
+        ));
+    }
+    if scene.undrawn_stops > 0 {
+        lines.push(LabelLine::plain(
+            format!(
+                "{} more stops not drawn (at most {MAX_DRAWN_STOPS})",
+                scene.undrawn_stops
+            ),
             FINDING_COLOUR,
         ));
     }

@@ -7,7 +7,7 @@
 //! well on paper (print styles) and to a screen reader (headings, table headers, the
 //! map's title and description).
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::fmt::Write;
 
 use crate::check::Checked;
@@ -142,6 +142,10 @@ struct Views<'v> {
     stale: Option<&'v [StaleTranslation]>,
 }
 
+/// The most stops, and the most locations no stop visits, the page shows: a robot's tour
+/// has 20 stops, and a page of thousands is read by no one (and grows without end).
+pub const MAX_SHOWN: usize = 500;
+
 fn tour_section(html: &mut String, checked: &Checked<'_>, views: &Views<'_>) {
     html.push_str("<section id=\"tour\" aria-labelledby=\"tour-heading\">\n<h2 id=\"tour-heading\">The tour, stop by stop</h2>\n");
     let stale = match views.stale {
@@ -157,7 +161,7 @@ fn tour_section(html: &mut String, checked: &Checked<'_>, views: &Views<'_>) {
     if stops.is_empty() {
         html.push_str("<p class=\"problem\">The file has no tour: add a <code>tourSpecification</code> line.</p>\n");
     }
-    for (index, &id) in stops.iter().enumerate() {
+    for (index, &id) in stops.iter().enumerate().take(MAX_SHOWN) {
         let heading = format!("Stop {} · location {id}", index + 1);
         match checked.kb.location(id) {
             Some(location) => location_block(html, &heading, index == 0, location, views),
@@ -169,17 +173,32 @@ fn tour_section(html: &mut String, checked: &Checked<'_>, views: &Views<'_>) {
             }
         }
     }
+    if stops.len() > MAX_SHOWN {
+        let _ = writeln!(
+            html,
+            "<p class=\"problem\">{} more stops are not shown: a page shows at most {MAX_SHOWN} (<code>ekb tour</code> lists every stop).</p>",
+            stops.len() - MAX_SHOWN
+        );
+    }
+    let visited: HashSet<u32> = stops.iter().copied().collect();
     let unvisited: Vec<&Location<'_>> = checked
         .kb
         .locations()
         .iter()
-        .filter(|location| !stops.contains(&location.id))
+        .filter(|location| !visited.contains(&location.id))
         .collect();
     if !unvisited.is_empty() {
         html.push_str("<h3 class=\"part\">Locations no stop visits</h3>\n");
-        for location in unvisited {
+        for location in unvisited.iter().take(MAX_SHOWN) {
             let heading = format!("Location {} (not on the tour)", location.id);
             location_block(html, &heading, false, location, views);
+        }
+        if unvisited.len() > MAX_SHOWN {
+            let _ = writeln!(
+                html,
+                "<p class=\"problem\">{} more locations no stop visits are not shown: a page shows at most {MAX_SHOWN} (<code>ekb locations</code> lists them all).</p>",
+                unvisited.len() - MAX_SHOWN
+            );
         }
     }
     html.push_str("</section>\n");

@@ -6,9 +6,10 @@
 //! it is not fuzzy, and its `msgstr` is not empty (an empty one leaves the placeholder).
 
 use super::po::{parse_context, Entry, PoFile};
-use super::Catalog;
+use super::{Catalog, Unit};
 use crate::edit::ValueEdit;
 use crate::model::{Key, Language, Phase};
+use std::collections::HashMap;
 
 /// What a PO file brings to a knowledge base.
 #[derive(Debug, Default)]
@@ -75,15 +76,16 @@ pub fn plan<'p>(
     accept_stale: bool,
 ) -> Result<Plan<'p>, Mismatch> {
     let mut plan = Plan::default();
-    let mut seen: Vec<((u32, Phase), u32)> = Vec::new();
+    // Looked up by message, not searched: a PO file of every message of a large file.
+    let units: HashMap<(u32, Phase), &Unit<'_>> = catalog
+        .units
+        .iter()
+        .map(|unit| ((unit.location, unit.phase), unit))
+        .collect();
+    let mut seen: HashMap<(u32, Phase), u32> = HashMap::new();
     for entry in &po.entries {
         let context = entry.msgctxt.as_deref().unwrap_or("");
-        let unit = parse_context(context).and_then(|(id, phase)| {
-            catalog
-                .units
-                .iter()
-                .find(|unit| unit.location == id && unit.phase == phase)
-        });
+        let unit = parse_context(context).and_then(|key| units.get(&key).copied());
         let Some(unit) = unit else {
             let message = match entry.msgctxt {
                 None => "an entry without a `msgctxt`: ekb's entries name their message, as `msgctxt \"location 3 preGestureMessage\"`".to_string(),
@@ -102,7 +104,7 @@ pub fn plan<'p>(
             });
         };
         let key = (unit.location, unit.phase);
-        if let Some((_, first)) = seen.iter().find(|(k, _)| *k == key) {
+        if let Some(&first) = seen.get(&key) {
             return Err(Mismatch {
                 line: entry.line,
                 message: format!(
@@ -110,7 +112,7 @@ pub fn plan<'p>(
                 ),
             });
         }
-        seen.push((key, entry.line));
+        seen.insert(key, entry.line);
         let translation = entry.msgstr.trim_matches([' ', '\t']);
         if entry.fuzzy {
             plan.fuzzy += 1;

@@ -55,7 +55,7 @@ pub fn load(mission: &Mission, file: Option<&Path>) -> Included {
     let folder = folder_of(file);
     let mut included = Included::default();
     let this: Vec<PathBuf> = file.map(canonical).into_iter().collect();
-    for include in includes(&mission.root) {
+    for include in includes(mission.root()) {
         let at = include
             .attribute("path")
             .map_or(include.name_span, |a| a.value_span);

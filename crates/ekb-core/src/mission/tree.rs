@@ -1,19 +1,44 @@
 //! The behaviour trees of a mission file: which `BehaviorTree` runs first, which ones it
 //! calls, and what each node element is.
 
+use std::collections::HashMap;
+
 use super::catalogue::{self, NodeModel, EXPLICIT_FORMS};
 use super::xml::Element;
 
 /// A mission: its `<root>` element, well-formed XML.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Mission {
-    pub root: Element,
+    root: Element,
     /// The IDs of the trees its `<include>`d files register, each with its file
     /// ([`super::include`]; empty until they are read).
     pub included: Vec<(String, std::path::PathBuf)>,
+    /// Where the first tree of each ID is among the root's children: a tree is looked up
+    /// at every `SubTree`, and a mission of 30,000 trees is not searched each time.
+    trees_by_id: HashMap<String, usize>,
 }
 
 impl Mission {
+    /// The mission of the `<root>` element `root`.
+    pub fn new(root: Element) -> Mission {
+        let mut trees_by_id = HashMap::new();
+        for (index, child) in root.children.iter().enumerate() {
+            if let Some(id) = child.value("ID").filter(|_| child.name == "BehaviorTree") {
+                trees_by_id.entry(id.to_string()).or_insert(index);
+            }
+        }
+        Mission {
+            root,
+            included: Vec::new(),
+            trees_by_id,
+        }
+    }
+
+    /// The `<root>` element.
+    pub fn root(&self) -> &Element {
+        &self.root
+    }
+
     /// The `<BehaviorTree>` elements, in file order.
     pub fn trees(&self) -> impl Iterator<Item = &Element> {
         self.root
@@ -24,7 +49,9 @@ impl Mission {
 
     /// The tree with this `ID`.
     pub fn tree(&self, id: &str) -> Option<&Element> {
-        self.trees().find(|tree| tree.value("ID") == Some(id))
+        self.trees_by_id
+            .get(id)
+            .map(|&index| &self.root.children[index])
     }
 
     /// The included file that registers the tree `id`, if this file does not have it
@@ -68,26 +95,33 @@ impl Mission {
     /// The trees the main tree runs, itself included, in file order; every tree if there is
     /// no main tree (nothing can be said to be unreachable then).
     pub fn reachable(&self) -> Vec<&Element> {
-        let Some(main) = self.main_tree() else {
+        let main = self.main_tree_id().and_then(|id| self.trees_by_id.get(id));
+        let Some(&main) = main else {
             return self.trees().collect();
         };
-        let mut reached = vec![main];
-        let mut next = 0;
-        while let Some(tree) = reached.get(next) {
-            next += 1;
-            for node in nodes(tree) {
+        // The trees reached, by their place among the root's children.
+        let mut reached = vec![false; self.root.children.len()];
+        reached[main] = true;
+        let mut waiting = vec![main];
+        while let Some(tree) = waiting.pop() {
+            for node in nodes(&self.root.children[tree]) {
                 let called = (node.name == "SubTree")
-                    .then(|| node.value("ID").and_then(|id| self.tree(id)))
+                    .then(|| node.value("ID").and_then(|id| self.trees_by_id.get(id)))
                     .flatten();
-                if let Some(called) = called {
-                    if !reached.iter().any(|t| std::ptr::eq(*t, called)) {
-                        reached.push(called);
+                if let Some(&called) = called {
+                    if !reached[called] {
+                        reached[called] = true;
+                        waiting.push(called);
                     }
                 }
             }
         }
-        self.trees()
-            .filter(|tree| reached.iter().any(|t| std::ptr::eq(*t, *tree)))
+        self.root
+            .children
+            .iter()
+            .zip(reached)
+            .filter(|(_, reached)| *reached)
+            .map(|(tree, _)| tree)
             .collect()
     }
 
@@ -128,10 +162,7 @@ mod tests {
     use super::*;
 
     fn mission(text: &str) -> Mission {
-        Mission {
-            root: super::super::xml::parse(text).unwrap(),
-            included: Vec::new(),
-        }
+        Mission::new(super::super::xml::parse(text).unwrap())
     }
 
     #[test]

@@ -35,7 +35,7 @@ declare_rule! {
 /// `<root>` may hold one `<TreeNodesModel>` at most.
 pub fn check_root(mission: &crate::mission::tree::Mission, out: &mut Diagnostics) {
     let models = mission
-        .root
+        .root()
         .children
         .iter()
         .filter(|c| c.name == "TreeNodesModel");

@@ -61,8 +61,5 @@ pub fn check(text: &str) -> Result<Mission, Box<Diagnostic>> {
             .with_help("wrap the trees in <root BTCPP_format=\"4\" main_tree_to_execute=\"…\">"),
         ));
     }
-    Ok(Mission {
-        root,
-        included: Vec::new(),
-    })
+    Ok(Mission::new(root))
 }

@@ -27,7 +27,7 @@ declare_rule! {
 }
 
 pub fn check(mission: &Mission, out: &mut Diagnostics) {
-    let root = &mission.root;
+    let root = mission.root();
     let finding = match root.attribute("BTCPP_format") {
         None => Diagnostic::new(
             &MISSION_MISSING_FORMAT,

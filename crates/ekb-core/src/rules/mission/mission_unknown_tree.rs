@@ -44,7 +44,7 @@ pub fn check(mission: &Mission, out: &mut Diagnostics) {
                 .join(", ")
         ),
     };
-    let root = &mission.root;
+    let root = mission.root();
     match root.attribute("main_tree_to_execute") {
         Some(main) if !mission.knows_tree(&main.value) => out.push(
             Diagnostic::new(
@@ -74,7 +74,7 @@ pub fn check(mission: &Mission, out: &mut Diagnostics) {
     }
     // BehaviorTree.CPP counts every element of <root>, a <TreeNodesModel> or an
     // <include> too, when it asks a tree for its ID.
-    if mission.root.children.len() > 1 {
+    if mission.root().children.len() > 1 {
         for nameless in mission.trees().filter(|t| t.value("ID").is_none()) {
             out.push(
                 Diagnostic::new(
