@@ -47,13 +47,15 @@ write("subtrees.xml", '<?xml version="1.0"?>\n<root BTCPP_format="4" main_tree_t
 xml = open(mission).read()
 write("paren.xml", xml.replace('<SetSpeechEvent name="false"/>', '<SetSpeechEvent name="' + "(" * 10_000_000 + '"/>', 1))
 write("eacute.xml", xml.replace('<SetSpeechEvent name="false"/>', '<SetSpeechEvent name="' + "\u00e9" * 5_000_000 + '"/>', 1))
-blocks = re.split(r"\n(?=robotLocationDescription)", no_tour.strip() + "\n")
-big, copies = [], 0
-while sum(map(len, big)) < 100_000_000:
-    for block in blocks:
-        copies += 1
-        big.append(re.sub(r"^(\S+ +)\d+", lambda m: m.group(1) + str(copies), block, flags=re.M) + "\n\n")
-write("big-100mb.dat", "".join(big))
+if not os.path.exists(os.path.join(work, "big-100mb.dat")):
+    blocks = re.split(r"\n(?=robotLocationDescription)", no_tour.strip() + "\n")
+    big, size, copies = [], 0, 0
+    while size < 100_000_000:
+        for block in blocks:
+            copies += 1
+            big.append(re.sub(r"^(\S+ +)\d+", lambda m: m.group(1) + str(copies), block, flags=re.M) + "\n\n")
+            size += len(big[-1])
+    write("big-100mb.dat", "".join(big))
 PY
 
 # A PO file of the real file's isiZulu, every message translated, for `import --po`.
