@@ -69,11 +69,14 @@ pub fn export(kb: &KnowledgeBase<'_>) -> ExportedKnowledgeBase {
     ExportedKnowledgeBase::from(kb)
 }
 
-/// The export JSON of a file's text, read as `ekb` reads it.
+/// The export JSON of a file's text, read as `ekb` reads it, its locations by id: the
+/// knowledge base, whatever order `ekb fmt` gives its blocks (the export keeps the file's).
 pub fn export_text(text: &str) -> ExportedKnowledgeBase {
     let source = ekb::SourceFile::from_bytes("t", text.as_bytes().to_vec());
     let checked = ekb::check(&source, &Default::default());
-    export(&checked.kb)
+    let mut exported = export(&checked.kb);
+    exported.locations.sort_by_key(|location| location.id);
+    exported
 }
 
 /// `ekb SUBCOMMAND kb.dat` on a read-only file: exit 2, a clear message, the file intact,

@@ -115,9 +115,11 @@ impl Model {
     fn of(text: &str) -> Model {
         let source = SourceFile::from_bytes("input", text.as_bytes().to_vec());
         let checked = check(&source, &Options::default());
+        // The locations by id: `fmt` may move a block (to where its id is first written).
+        let mut exported = ExportedKnowledgeBase::from(&checked.kb);
+        exported.locations.sort_by_key(|location| location.id);
         let mut json = Vec::new();
-        safe_json::write(&ExportedKnowledgeBase::from(&checked.kb), &mut json)
-            .expect("writing to memory cannot fail");
+        safe_json::write(&exported, &mut json).expect("writing to memory cannot fail");
         Model {
             json: String::from_utf8(json).expect("JSON is UTF-8"),
             has_errors: checked.has_errors(),
