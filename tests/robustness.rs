@@ -131,7 +131,7 @@ fn a_valid_file_itself() {
     survives(&file);
 }
 
-/// Inputs the fuzzer found (see BENCHMARKS.md, "Fuzzing"), kept so they stay fixed.
+/// Inputs the fuzzer found (`fuzz/`, as BENCHMARKS.md says), kept so they stay fixed.
 #[test]
 fn fuzz_regressions() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/fuzz");
