@@ -507,3 +507,30 @@ fn the_page_shows_at_most_500_stops_and_500_unvisited_locations() {
     assert!(page.contains("200 more stops are not shown: a page shows at most 500"));
     assert!(page.contains("695 more locations no stop visits are not shown"));
 }
+
+#[test]
+fn a_language_the_robot_does_not_speak_is_marked_not_spoken_on_its_column() {
+    let badge = "<th scope=\"col\" lang=\"zu\">isiZulu <span class=\"badge silent\" \
+                 title=\"the robot does not speak isiZulu: it says nothing at these stops (its \
+                 text-to-speech has no isiZulu engine; `[robot] speaks` in ekb.toml says \
+                 otherwise if yours does)\">not spoken</span></th>";
+    let dir = tempfile::tempdir().unwrap();
+    let (_, page) = report(dir.path(), SEED, &[]);
+    assert!(page.contains(badge), "no isiZulu badge");
+    // One column header per stop's table, each marked; the spoken languages are not.
+    let stops = page.matches("<table class=\"messages\">").count();
+    assert_eq!(page.matches(badge).count(), stops);
+    assert!(page.contains("<th scope=\"col\" lang=\"rw\">Kinyarwanda</th>"));
+    assert!(page.contains("<th scope=\"col\" lang=\"en\">English</th>"));
+    // Once ekb.toml says the robot speaks isiZulu, nothing is marked.
+    let file = dir.path().join("kb.dat");
+    std::fs::copy(root().join(SEED), &file).unwrap();
+    std::fs::write(
+        dir.path().join("ekb.toml"),
+        "[robot]\nspeaks = [\"english\", \"isiZulu\", \"kinyarwanda\"]\n",
+    )
+    .unwrap();
+    let (_, page) = report(dir.path(), file.to_str().unwrap(), &[]);
+    assert!(!page.contains("not spoken"));
+    assert!(page.contains("<th scope=\"col\" lang=\"zu\">isiZulu</th>"));
+}

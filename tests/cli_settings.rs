@@ -361,6 +361,45 @@ fn settings_shows_each_value_and_where_it_comes_from() {
     );
 }
 
+#[test]
+fn settings_shows_the_robot_profile_and_where_each_value_comes_from() {
+    let dir = project(
+        Some("[robot]\nspeaks = [\"english\", \"isiZulu\"]\n\nturn-speed = 1.2\n"),
+        &seed_text(),
+    );
+    let run = ekb(dir.path(), &["settings", "data/kb.dat"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    for expected in [
+        "[robot]\nspeaks = [\"English\", \"isiZulu\"]  # ekb.toml:2\n",
+        "speed = 0.27  # default\n",
+        "turn-speed = 1.2  # ekb.toml:4\n",
+        "syllables-per-second = 5.0  # default\n",
+    ] {
+        assert!(
+            run.stdout.contains(expected),
+            "no {expected:?} in\n{}",
+            run.stdout
+        );
+    }
+    let run = ekb(dir.path(), &["--isolated", "settings", "data/kb.dat"]);
+    assert!(
+        run.stdout
+            .contains("speaks = [\"English\", \"Kinyarwanda\"]  # default\n"),
+        "{}",
+        run.stdout
+    );
+    // A bad value stops every command, naming its line and column.
+    fs::write(dir.path().join("ekb.toml"), "[robot]\nspeed = -1\n").unwrap();
+    let run = ekb(dir.path(), &["check", "data/kb.dat"]);
+    assert_eq!(run.code, 2);
+    assert!(
+        run.stderr
+            .contains("ekb.toml:2:9: `speed` must be a number above 0 (m/s, e.g. 0.27), not -1"),
+        "{}",
+        run.stderr
+    );
+}
+
 // ---------------------------------------------------------------------------------------
 // Suppression comments
 

@@ -12,6 +12,8 @@ use std::path::{Path, PathBuf};
 use ekb::check::Checked;
 use ekb::mission::check::{check_together, MissionSources};
 use ekb::model::build::Options;
+use ekb::model::Language;
+use ekb::robot::speech::RobotProfile;
 use ekb::rules::selection::RuleSet;
 use ekb::rules::{self, Category};
 use ekb::source::LineIndex;
@@ -80,6 +82,7 @@ fn check_set(files: &[SourceFile; 4]) -> Vec<Finding> {
         culture_types: Some(&files[2]),
         kb: Some((&files[3], &options)),
         reader: None,
+        robot: None,
     };
     locate(&check_together(&sources, &RuleSet::default()))
 }
@@ -160,6 +163,7 @@ rule_tests! {
         (MISSION, 5, 35), (MISSION, 6, 8), (MISSION, 7, 36), (MISSION, 8, 36), (MISSION, 9, 22)
     ];
     mission_language_invalid: "mission-language-invalid" => [(CULTURE, 10, 43)];
+    mission_language_not_spoken: "mission-language-not-spoken" => [(CULTURE, 10, 43)];
     mission_missing_phrase: "mission-missing-phrase" => [(MISSION, 5, 22), (MISSION, 7, 22)];
     mission_untranslated_tour: "mission-untranslated-tour" => [(KB, 6, 33), (KB, 11, 1)];
     cultural_knowledge_unknown_key: "cultural-knowledge-unknown-key" => [(KB, 11, 33), (KB, 11, 46)];
@@ -188,6 +192,7 @@ fn a_culture_line_cut_inside_a_character_is_reported_at_that_character() {
         culture_types: None,
         kb: None,
         reader: None,
+        robot: None,
     };
     let found = locate(&check_together(&sources, &RuleSet::default()));
     let cut: Vec<(u32, u32, &str)> = found
@@ -296,7 +301,11 @@ fn in_isizulu_every_saytext_misses_its_phrase_and_every_stop_is_untranslated() {
         errors(&all).iter().map(|f| f.rule).collect();
     assert_eq!(
         rules_of_errors.into_iter().collect::<Vec<_>>(),
-        ["mission-missing-phrase", "mission-untranslated-tour"]
+        [
+            "mission-language-not-spoken",
+            "mission-missing-phrase",
+            "mission-untranslated-tour"
+        ]
     );
     let phrases: Vec<u32> = all
         .iter()
@@ -316,6 +325,69 @@ fn in_isizulu_every_saytext_misses_its_phrase_and_every_stop_is_untranslated() {
         .collect();
     // Each of the five stops, before and after the gesture.
     assert_eq!(stops, [5, 8, 16, 19, 27, 30, 38, 41, 49, 52]);
+}
+
+#[test]
+fn a_mission_in_a_language_the_robot_does_not_speak_is_silent_unless_the_profile_speaks_it() {
+    let files = corpus_in("IsiZulu");
+    let not_spoken = |all: &[Finding]| -> Vec<(String, u32, u32, String)> {
+        all.iter()
+            .filter(|f| f.rule == "mission-language-not-spoken")
+            .map(|f| (f.file.clone(), f.line, f.column, f.message.clone()))
+            .collect()
+    };
+    let found = not_spoken(&check_set(&files));
+    assert_eq!(
+        found,
+        [(
+            CULTURE.to_string(),
+            10,
+            16,
+            "the mission speaks isiZulu, which the robot's text-to-speech does not speak: every \
+             phrase and every talk of the tour is silent"
+                .to_string()
+        )]
+    );
+    let options = Options::default();
+    let speaks_zulu = RobotProfile {
+        speaks: vec![Language::English, Language::IsiZulu, Language::Kinyarwanda],
+        ..RobotProfile::default()
+    };
+    let check_with = |robot: &RobotProfile| {
+        let sources = MissionSources {
+            mission: Some(&files[0]),
+            culture_kb: Some(&files[1]),
+            culture_types: Some(&files[2]),
+            kb: Some((&files[3], &options)),
+            reader: None,
+            robot: Some(robot),
+        };
+        locate(&check_together(&sources, &RuleSet::default()))
+    };
+    assert!(not_spoken(&check_with(&speaks_zulu)).is_empty());
+    // A robot that speaks no Kinyarwanda: a Kinyarwanda mission is silent.
+    let english_only = RobotProfile {
+        speaks: vec![Language::English],
+        ..RobotProfile::default()
+    };
+    let files = corpus_in("Kinyarwanda");
+    let sources = MissionSources {
+        mission: Some(&files[0]),
+        culture_kb: Some(&files[1]),
+        culture_types: Some(&files[2]),
+        kb: Some((&files[3], &options)),
+        reader: None,
+        robot: Some(&english_only),
+    };
+    let all = locate(&check_together(&sources, &RuleSet::default()));
+    let finding = all
+        .iter()
+        .find(|f| f.rule == "mission-language-not-spoken")
+        .expect("a Kinyarwanda mission on a robot that speaks English only");
+    assert!(
+        finding.message.contains("speaks Kinyarwanda"),
+        "{finding:?}"
+    );
 }
 
 #[test]
@@ -575,7 +647,8 @@ mod any_input {
                 language: Some(ekb::model::Language::English),
             };
             outline::outline(&mission, files[0].text(), &phrases);
-            let world = walk::World { kb: &kb.kb, phrases, asr_enabled: true };
+            let robot = ekb::robot::speech::RobotProfile::default();
+            let world = walk::World { kb: &kb.kb, phrases, asr_enabled: true, robot: &robot };
             let walked = walk::walk(&mission, files[0].text(), &world);
             prop_assert!(walked.ticks <= walk::MAX_TICKS + 1);
         }

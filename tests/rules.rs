@@ -404,6 +404,7 @@ fn the_catalogue_is_the_specified_one() {
         ("mission-bad-include", Error, false),
         ("mission-invalid-name", Error, false),
         ("mission-language-invalid", Error, false),
+        ("mission-language-not-spoken", Error, false),
         ("mission-missing-phrase", Error, false),
         ("mission-untranslated-tour", Error, false),
         ("mission-missing-format", Warning, false),

@@ -15,6 +15,7 @@ use crate::model::Language;
 use crate::present::language;
 use crate::render::escape::{escape, escape_lines};
 use crate::render::{safe_json as json, Format};
+use crate::robot::speech::RobotProfile;
 use crate::robot::Reader;
 use crate::rules::selection::RuleSet;
 use crate::source::SourceFile;
@@ -135,6 +136,8 @@ struct Read {
     kb: Option<(SourceFile, Options)>,
     /// The robot's reader that the settings name for the knowledge bases, if any.
     reader: Option<Reader>,
+    /// The robot profile (`[robot]`) of the same settings.
+    robot: RobotProfile,
 }
 
 impl Read {
@@ -174,8 +177,17 @@ impl Read {
             (None, Some(path)) => context.read_options(path)?.reader,
             (None, None) => None,
         };
+        // The robot profile of the same settings: the environment knowledge base's, else the
+        // culture knowledge base's, else the current folder's.
+        let settings_of = paths
+            .kb
+            .as_deref()
+            .or(paths.culture_kb.as_deref())
+            .unwrap_or(Path::new("-"));
+        let robot = context.settings_for(settings_of)?.robot.profile();
         Ok(Read {
             reader,
+            robot,
             mission: read(&paths.mission, &files.mission, "--mission")?,
             culture_kb: read(&paths.culture_kb, &files.culture_kb, "--culture-kb")?,
             culture_types: read(
@@ -195,6 +207,7 @@ impl Read {
             culture_types: self.culture_types.as_ref(),
             kb: self.kb.as_ref().map(|(source, options)| (source, options)),
             reader: self.reader,
+            robot: Some(&self.robot),
         }
     }
 
@@ -317,6 +330,7 @@ fn run_walk(args: &ShowArgs, context: &Context) -> CommandResult {
         kb: &kb.kb,
         phrases,
         asr_enabled: paths.asr_enabled.unwrap_or(true),
+        robot: &read.robot,
     };
     let text = read.mission.as_ref().map_or("", |m| m.text());
     let walked = walk::walk(&mission, text, &world);

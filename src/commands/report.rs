@@ -36,7 +36,15 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         true => None,
         false => Some(stale_translations(&args.po, &checked)?),
     };
-    let page = crate::report::page(&checked, &loaded, input.map.as_ref(), stale.as_deref());
+    let path = context.input(args.file.as_deref())?;
+    let robot = context.settings_for(&path)?.robot.profile();
+    let page = crate::report::page(
+        &checked,
+        &loaded,
+        input.map.as_ref(),
+        stale.as_deref(),
+        &robot,
+    );
     let output = Some(args.output.as_path()).filter(|path| *path != Path::new("-"));
     write_result(output, page.as_bytes(), context)?;
     Ok(Exit::Clean)

@@ -119,6 +119,24 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         settings.mission.config_dir.as_ref(),
         &at,
     );
+    out.push_str("\n[robot]\n");
+    let robot = &settings.robot;
+    let profile = robot.profile();
+    let speaks: Vec<&str> = profile.speaks.iter().map(|l| l.name()).collect();
+    let speaks_line = robot.speaks.as_ref().map(|s| s.line);
+    entry(&mut out, "speaks", &quoted_list(&speaks), &at(speaks_line));
+    for (key, value, set) in [
+        ("speed", profile.speed, &robot.speed),
+        ("turn-speed", profile.turn_speed, &robot.turn_speed),
+        (
+            "syllables-per-second",
+            profile.syllables_per_second,
+            &robot.syllables_per_second,
+        ),
+    ] {
+        let line = set.as_ref().map(|s| s.line);
+        entry(&mut out, key, &number(value), &at(line));
+    }
     out.push_str(&rules_in_force(&settings, &file, &args.rules));
     std::io::stdout()
         .lock()
@@ -219,6 +237,15 @@ fn path_entry(
             &at(Some(path.line)),
         ),
         None => out.push_str(&format!("# {key} is not set\n")),
+    }
+}
+
+/// A number as TOML writes a float: `0.27`, `5.0`.
+fn number(value: f64) -> String {
+    let text = value.to_string();
+    match text.contains(['.', 'e', 'i', 'N']) {
+        true => text,
+        false => format!("{text}.0"),
     }
 }
 

@@ -9,9 +9,10 @@ use super::{CommandError, CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::build::parse_id;
 use crate::model::{Dialect, Location};
-use crate::present::{self, robot, table, Lines};
+use crate::present::{self, table, Lines};
 use crate::reader;
 use crate::render::escape::escape;
+use crate::robot::speech::{self, RobotProfile};
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -38,8 +39,9 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         // Like an id that is no number: the command was asked for what is not there.
         return Err(CommandError::Failed(not_found(&checked, args.id)));
     };
+    let robot = context.settings_for(&path)?.robot.profile();
     let mut stdout = std::io::stdout().lock();
-    stdout.write_all(render(&checked, location).as_bytes())?;
+    stdout.write_all(render(&checked, location, &robot).as_bytes())?;
     stdout.flush()?;
     Ok(Exit::Clean)
 }
@@ -63,7 +65,9 @@ fn not_found(checked: &Checked<'_>, id: u32) -> String {
     format!("no location {id} in {file}; {listed} (`ekb locations` lists them all)")
 }
 
-fn render(checked: &Checked<'_>, location: &Location<'_>) -> String {
+/// The location in full; a message in a language that `robot` does not speak is marked `not
+/// spoken`, and the reason said once below the table.
+fn render(checked: &Checked<'_>, location: &Location<'_>, robot: &RobotProfile) -> String {
     let lines = Lines::new(checked.source.text());
     let dialect = checked.kb.dialect.unwrap_or(Dialect::Seed);
     let title = location.description().map_or_else(
@@ -87,13 +91,25 @@ fn render(checked: &Checked<'_>, location: &Location<'_>) -> String {
     let text = checked.source.text().as_bytes();
     let loaded = reader::load(text, checked.reader);
     let mut table = table::new(&["line", "field", "value"]);
-    for row in robot::rows(location, dialect, &loaded, text) {
+    let mut silent = Vec::new();
+    for row in present::robot::rows(location, dialect, &loaded, text) {
         let line = row
             .span
             .map_or("–".into(), |span| lines.of(span).to_string());
-        table.add_row([line, row.key.name().to_string(), row.value]);
+        let mut value = row.value;
+        if let Some((_, language)) = row.key.message().filter(|(_, l)| !robot.speaks(*l)) {
+            value.push_str(" (not spoken)");
+            if !silent.contains(&language) {
+                silent.push(language);
+            }
+        }
+        table.add_row([line, row.key.name().to_string(), value]);
     }
     out.push_str(&format!("{table}\n"));
+    for language in silent {
+        out.push_str(&wrap(speech::silence_notice(language)));
+        out.push('\n');
+    }
     // As `check` shows them: the first findings of each rule, then how many more.
     let findings: Vec<_> = checked
         .shown()

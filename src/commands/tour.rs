@@ -16,6 +16,7 @@ use crate::reader;
 use crate::reader::view::{self, Held};
 use crate::render::escape::escape;
 use crate::render::safe_json as json;
+use crate::robot::speech;
 use crate::stderr_line;
 
 #[derive(Debug, clap::Args)]
@@ -63,7 +64,9 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         TourFormat::Text => MAX_STOPS_SHOWN,
         TourFormat::Json => usize::MAX,
     };
-    let tour = Tour::new(&checked, args.lang, shown);
+    let robot = context.settings_for(&path)?.robot.profile();
+    let mut tour = Tour::new(&checked, args.lang, shown);
+    tour.spoken = robot.speaks(args.lang);
     let mut stdout = std::io::stdout().lock();
     match args.format {
         TourFormat::Text => {
@@ -84,6 +87,9 @@ const MAX_STOPS_SHOWN: usize = 1000;
 struct Tour<'a> {
     #[serde(serialize_with = "serialize_language")]
     language: Language,
+    /// Whether the robot profile (`[robot] speaks`) speaks the language: if not, the robot
+    /// says nothing at any stop.
+    spoken: bool,
     /// The version of the robot's reader whose view this is.
     reader: &'static str,
     /// The stops the reader loads, where they are not the file's (`null`: undefined).
@@ -196,6 +202,7 @@ impl<'a> Tour<'a> {
         }
         Tour {
             language,
+            spoken: true,
             reader: checked.reader.name(),
             robot_tour: robot::other_tour(&checked.kb, &stops.loaded),
             messages: total * 2,
@@ -209,13 +216,18 @@ impl<'a> Tour<'a> {
 
     fn text(&self, file: &str, order: impl Iterator<Item = u32>) -> String {
         let count = self.total;
-        let mut out = format!(
+        let mut out = String::new();
+        if !self.spoken {
+            out.push_str(&speech::silence_notice(self.language));
+            out.push('\n');
+        }
+        out.push_str(&format!(
             "Tour of {file} in {}: {count} stop{} ({}), as reader {} loads it\n",
             self.language.name(),
             if count == 1 { "" } else { "s" },
             present::listed(order, " → "),
             self.reader
-        );
+        ));
         if let Some(robot_tour) = &self.robot_tour {
             out.push_str(&format!(
                 "The robot's reader loads another tour: {} (`ekb check` says why)\n",

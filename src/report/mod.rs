@@ -19,6 +19,7 @@ use crate::present::{self, Gesture, Lines};
 use crate::reader::Loaded;
 use crate::render::markup::markup;
 use crate::render::FileReport;
+use crate::robot::speech::{self, RobotProfile};
 use crate::rules::Rule;
 use crate::translations::import::StaleTranslation;
 use crate::translations::{Catalog, State, Status, Unit};
@@ -26,12 +27,14 @@ use crate::translations::{Catalog, State, Status, Unit};
 const STYLE: &str = include_str!("report.css");
 
 /// The page for `checked` (its file as `loaded`, on `map`), its `stale` translations
-/// marked (`None`: no translators' PO file was given to tell them).
+/// marked (`None`: no translators' PO file was given to tell them), the languages that
+/// `robot` does not speak marked `not spoken`.
 pub fn page(
     checked: &Checked<'_>,
     loaded: &Loaded<'_>,
     map: Option<&LabMap>,
     stale: Option<&[StaleTranslation]>,
+    robot: &RobotProfile,
 ) -> String {
     let report = FileReport::new(checked);
     let lines = Lines::new(checked.source.text());
@@ -88,6 +91,7 @@ pub fn page(
         units: &units,
         findings_at: &findings_at,
         stale,
+        robot,
     };
     tour_section(&mut html, checked, &views);
     status_section(
@@ -140,6 +144,8 @@ struct Views<'v> {
     /// The translations that translators' PO files say were made for another English;
     /// `None` without PO files.
     stale: Option<&'v [StaleTranslation]>,
+    /// The robot profile: which languages it speaks.
+    robot: &'v RobotProfile,
 }
 
 /// The most stops, and the most locations no stop visits, the page shows: a robot's tour
@@ -237,9 +243,17 @@ fn location_block(
         present::line_range(lines.range(location))
     );
     for language in Language::ALL {
+        // A language the robot does not speak: a badge, its reason in the title.
+        let silent = match views.robot.speaks(language) {
+            true => String::new(),
+            false => format!(
+                " <span class=\"badge silent\" title=\"{}\">not spoken</span>",
+                markup(&speech::silence_notice(language))
+            ),
+        };
         let _ = write!(
             html,
-            "<th scope=\"col\" lang=\"{}\">{}</th>",
+            "<th scope=\"col\" lang=\"{}\">{}{silent}</th>",
             language_code(language),
             language.name()
         );

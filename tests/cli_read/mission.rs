@@ -100,7 +100,8 @@ fn an_isizulu_mission_misses_its_phrases_and_its_tour() {
     let count = |rule: &str| errors.iter().filter(|r| *r == rule).count();
     assert_eq!(count("mission-missing-phrase"), 7);
     assert_eq!(count("mission-untranslated-tour"), 10);
-    assert_eq!(errors.len(), 17);
+    assert_eq!(count("mission-language-not-spoken"), 1);
+    assert_eq!(errors.len(), 18);
     let wrong_case = in_language("isiZulu");
     let checked = run(&[
         "mission",
@@ -117,6 +118,60 @@ fn an_isizulu_mission_misses_its_phrases_and_its_tour() {
             .contains("cultureKnowledgeBaseInput.dat:10:16: error[mission-language-invalid]"),
         "{}",
         checked.stdout
+    );
+}
+
+#[test]
+fn a_mission_in_a_language_the_robot_does_not_speak_is_an_error_unless_ekb_toml_says_it_does() {
+    let root = in_language("IsiZulu");
+    let check = || {
+        run(&[
+            "mission",
+            "check",
+            "--config-dir",
+            &config_of(&root),
+            "--format",
+            "concise",
+        ])
+    };
+    let checked = check();
+    assert_eq!(checked.code, 1);
+    assert!(
+        checked.stdout.contains(
+            "cultureKnowledgeBaseInput.dat:10:16: error[mission-language-not-spoken] the \
+             mission speaks isiZulu, which the robot's text-to-speech does not speak: every \
+             phrase and every talk of the tour is silent"
+        ),
+        "{}",
+        checked.stdout
+    );
+    std::fs::write(
+        root.path().join("ekb.toml"),
+        "[robot]\nspeaks = [\"english\", \"isiZulu\", \"kinyarwanda\"]\n",
+    )
+    .unwrap();
+    let checked = check();
+    assert!(
+        !checked.stdout.contains("mission-language-not-spoken"),
+        "{}",
+        checked.stdout
+    );
+    // An English mission is spoken by the default robot.
+    let english = run(&[
+        "mission",
+        "check",
+        "--config-dir",
+        CONFIG,
+        "--format",
+        "concise",
+    ]);
+    assert!(!english.stdout.contains("mission-language-not-spoken"));
+    let explained = run(&["explain", "mission-language-not-spoken"]);
+    assert_eq!(explained.code, 0, "{}", explained.stderr);
+    assert!(
+        explained.stdout.contains("no isiZulu engine"),
+        "{}",
+        explained.stdout
     );
 }
 
@@ -220,6 +275,86 @@ fn a_walk_in_isizulu_crashes_at_the_welcome_whose_phrase_is_undefined() {
         walked.stdout
     );
     assert!(walked.stdout.contains("logic_error"), "{}", walked.stdout);
+}
+
+#[test]
+fn a_phrase_in_a_language_the_robot_does_not_speak_is_walked_as_silence() {
+    // The isiZulu phrases declared and given, so that the robot holds them (it cannot say
+    // them; the visitor's isiZulu answer it does not understand either).
+    let root = edited_set_up("cultureKnowledgeValueTypesInput.dat", |text| {
+        text.lines()
+            .map(|line| match line.starts_with("utilityPhraseIsiZulu") {
+                true => line.replace("UNDEFINED", "PHRASE"),
+                false => line.to_string(),
+            })
+            .map(|line| line + "\n")
+            .collect()
+    });
+    let culture = root.path().join("data/cultureKnowledgeBaseInput.dat");
+    let mut text = std::fs::read_to_string(&culture).unwrap();
+    for n in 1..=7 {
+        text.push_str(&format!("utilityPhraseIsiZulu{n} Sawubona {n} \n"));
+    }
+    std::fs::write(&culture, text).unwrap();
+    let walk = || {
+        run(&[
+            "mission",
+            "walk",
+            "--config-dir",
+            &config_of(&root),
+            "--lang",
+            "zu",
+        ])
+    };
+    let walked = walk();
+    assert!(
+        walked.stdout.contains(
+            "say nothing: the robot does not speak isiZulu (\"Sawubona 4 \" goes unheard)"
+        ),
+        "{}",
+        walked.stdout
+    );
+    assert!(
+        !walked.stdout.contains("say \"Sawubona"),
+        "{}",
+        walked.stdout
+    );
+    let as_json = run(&[
+        "mission",
+        "walk",
+        "--config-dir",
+        &config_of(&root),
+        "--lang",
+        "zu",
+        "--format",
+        "json",
+    ]);
+    let walk_json = json(&as_json);
+    let says: Vec<&Value> = walk_json["steps"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|s| s["action"] == "say")
+        .collect();
+    assert!(!says.is_empty());
+    assert!(says
+        .iter()
+        .all(|s| s["silent"] == "the robot does not speak isiZulu"));
+    // Once ekb.toml says the robot speaks isiZulu, it says the phrases.
+    std::fs::write(
+        root.path().join("ekb.toml"),
+        "[robot]\nspeaks = [\"english\", \"isiZulu\", \"kinyarwanda\"]\n",
+    )
+    .unwrap();
+    let walked = walk();
+    assert!(
+        walked.stdout.contains("say \"Sawubona 4 \""),
+        "{}",
+        walked.stdout
+    );
+    assert!(!walked
+        .stdout
+        .contains("say nothing: the robot does not speak"));
 }
 
 #[test]

@@ -125,3 +125,36 @@ fn values_the_robot_loads_otherwise_are_marked_with_what_the_file_says() {
         seed.stdout
     );
 }
+
+#[test]
+fn a_message_in_a_language_the_robot_does_not_speak_is_marked_not_spoken() {
+    let out = run(&["show", "4", SEED]);
+    assert!(
+        out.stdout.contains(
+            "│ 32   ┆ preGestureMessageIsiZulu      ┆ No message in isiZulu (placeholder, \
+             untranslated) (not spoken)"
+        ),
+        "{}",
+        out.stdout
+    );
+    assert!(!out
+        .stdout
+        .contains("Kinyarwanda (placeholder, untranslated) (not spoken)"));
+    let joined = out.stdout.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(
+        joined.contains(
+            "the robot does not speak isiZulu: it says nothing at these stops (its \
+             text-to-speech has no isiZulu engine; `[robot] speaks` in ekb.toml says otherwise \
+             if yours does)"
+        ),
+        "{}",
+        out.stdout
+    );
+    assert_eq!(out.stdout.matches("does not speak").count(), 1);
+    // Once ekb.toml says the robot speaks isiZulu, nothing is said.
+    let (_dir, file) = crate::tour::seed_on_a_robot_that_speaks_isizulu();
+    let out = run(&["show", "4", &file]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert!(!out.stdout.contains("not spoken"), "{}", out.stdout);
+    assert!(!out.stdout.contains("does not speak"), "{}", out.stdout);
+}

@@ -202,3 +202,47 @@ fn the_tour_as_the_chosen_reader_loads_it() {
         "{text}"
     );
 }
+
+/// The seed file in a temporary folder, with an `ekb.toml` that says the robot speaks
+/// isiZulu too; the file's path.
+pub fn seed_on_a_robot_that_speaks_isizulu() -> (tempfile::TempDir, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let here = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let file = dir.path().join("kb.dat");
+    std::fs::copy(here.join(SEED), &file).unwrap();
+    std::fs::write(
+        dir.path().join("ekb.toml"),
+        "[robot]\nspeaks = [\"english\", \"isiZulu\", \"kinyarwanda\"]\n",
+    )
+    .unwrap();
+    (dir, file.display().to_string())
+}
+
+#[test]
+fn a_tour_in_a_language_the_robot_does_not_speak_says_so_first() {
+    let notice = "the robot does not speak isiZulu: it says nothing at these stops (its \
+                  text-to-speech has no isiZulu engine; `[robot] speaks` in ekb.toml says \
+                  otherwise if yours does)\n";
+    let out = run(&["tour", "--lang", "zu", SEED]);
+    assert!(out.stdout.starts_with(notice), "{}", out.stdout);
+    assert_eq!(out.stdout.matches("does not speak").count(), 1);
+    let json = run(&["tour", "--lang", "zu", "--format", "json", SEED]);
+    let json: serde_json::Value = serde_json::from_str(&json.stdout).unwrap();
+    assert_eq!(json["spoken"], false);
+    // Languages it speaks: no notice.
+    for lang in ["en", "rw"] {
+        let out = run(&["tour", "--lang", lang, SEED]);
+        assert!(out.stdout.starts_with("Tour of "), "{}", out.stdout);
+        let json = run(&["tour", "--lang", lang, "--format", "json", SEED]);
+        let json: serde_json::Value = serde_json::from_str(&json.stdout).unwrap();
+        assert_eq!(json["spoken"], true);
+    }
+    // Once ekb.toml says the robot speaks isiZulu, nothing is said.
+    let (_dir, file) = seed_on_a_robot_that_speaks_isizulu();
+    let out = run(&["tour", "--lang", "zu", &file]);
+    assert!(out.stdout.starts_with("Tour of "), "{}", out.stdout);
+    assert!(!out.stdout.contains("does not speak"));
+    let json = run(&["tour", "--lang", "zu", "--format", "json", &file]);
+    let json: serde_json::Value = serde_json::from_str(&json.stdout).unwrap();
+    assert_eq!(json["spoken"], true);
+}

@@ -16,11 +16,16 @@
 //! config = "../mapGeneration/config/mapGenerationConfiguration.ini"
 //! [mission]
 //! config-dir = "../behaviorController/config"
+//! [robot]                              # SPEC §15: the robot profile
+//! speaks = ["english", "kinyarwanda"]  # the languages its text-to-speech speaks
+//! speed = 0.27                         # m/s
+//! turn-speed = 0.9                     # rad/s
+//! syllables-per-second = 5.0
 //! ```
 //!
 //! Every key is optional, and every key, rule and category is checked: a misspelt one is an
 //! error that names its line and column and the nearest valid name, never a setting silently
-//! ignored. Paths are resolved relative to the settings file's folder. Each value keeps the
+//! ignored; a number of `[robot]` must be finite and above 0. Paths are resolved relative to the settings file's folder. Each value keeps the
 //! line that set it, for `ekb settings`.
 
 use std::ops::Range;
@@ -31,6 +36,7 @@ use toml_edit::{ImDocument, Item, Key, TableLike, Value};
 
 use crate::diagnostic::Severity;
 use crate::model::Language;
+use crate::robot::speech::RobotProfile;
 use crate::robot::Reader;
 use crate::rules::selection::{nearest, Choice, RuleSelector, RuleSet};
 
@@ -54,6 +60,7 @@ pub struct Settings {
     pub translations: TranslationSettings,
     pub map: MapSettings,
     pub mission: MissionSettings,
+    pub robot: RobotSettings,
 }
 
 /// `[check]`: which rules run, and how grave their findings are.
@@ -109,6 +116,38 @@ pub struct MapSettings {
 pub struct MissionSettings {
     /// The behaviour controller's configuration folder (SPEC §11), resolved.
     pub config_dir: Option<Sourced<PathBuf>>,
+}
+
+/// `[robot]`: the robot profile (SPEC §15), each value if set.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct RobotSettings {
+    /// `speaks`: the languages its text-to-speech speaks.
+    pub speaks: Option<Sourced<Vec<Language>>>,
+    /// `speed`, m/s.
+    pub speed: Option<Sourced<f64>>,
+    /// `turn-speed`, rad/s.
+    pub turn_speed: Option<Sourced<f64>>,
+    /// `syllables-per-second`.
+    pub syllables_per_second: Option<Sourced<f64>>,
+}
+
+impl RobotSettings {
+    /// The profile these settings make: each value set, the default's for the others.
+    pub fn profile(&self) -> RobotProfile {
+        let default = RobotProfile::default();
+        let number = |value: &Option<Sourced<f64>>, default: f64| {
+            value.as_ref().map_or(default, |v| v.value)
+        };
+        RobotProfile {
+            speaks: self
+                .speaks
+                .as_ref()
+                .map_or(default.speaks.clone(), |s| s.value.clone()),
+            speed: number(&self.speed, default.speed),
+            turn_speed: number(&self.turn_speed, default.turn_speed),
+            syllables_per_second: number(&self.syllables_per_second, default.syllables_per_second),
+        }
+    }
 }
 
 /// Where the settings come from (`--settings`, `--isolated`, or the file's folder).
@@ -227,7 +266,8 @@ impl Settings {
 }
 
 /// The keys of each table, for errors and suggestions.
-const TOP_KEYS: [&str; 5] = ["reader", "check", "translations", "map", "mission"];
+const TOP_KEYS: [&str; 6] = ["reader", "check", "translations", "map", "mission", "robot"];
+const ROBOT_KEYS: [&str; 4] = ["speaks", "speed", "turn-speed", "syllables-per-second"];
 const CHECK_KEYS: [&str; 5] = [
     "select",
     "ignore",
@@ -256,7 +296,7 @@ impl Parser<'_> {
                     for (key, item) in self.entries(table) {
                         match key.get() {
                             "languages" => {
-                                settings.translations.languages = Some(self.languages(item)?)
+                                settings.translations.languages = Some(self.languages(key, item)?)
                             }
                             _ => {
                                 return Err(self.unknown_key(key, "[translations]", &["languages"]))
@@ -280,6 +320,7 @@ impl Parser<'_> {
                         }
                     }
                 }
+                "robot" => settings.robot = self.robot(self.table(key, item)?)?,
                 _ => return Err(self.unknown_key(key, "ekb.toml", &TOP_KEYS)),
             }
         }
@@ -315,6 +356,42 @@ impl Parser<'_> {
             }
         }
         Ok(check)
+    }
+
+    fn robot(&self, table: &dyn TableLike) -> Result<RobotSettings, String> {
+        let mut robot = RobotSettings::default();
+        for (key, item) in self.entries(table) {
+            match key.get() {
+                "speaks" => robot.speaks = Some(self.languages(key, item)?),
+                "speed" => robot.speed = Some(self.positive(key, item, "m/s, e.g. 0.27")?),
+                "turn-speed" => {
+                    robot.turn_speed = Some(self.positive(key, item, "rad/s, e.g. 0.9")?)
+                }
+                "syllables-per-second" => {
+                    robot.syllables_per_second = Some(self.positive(key, item, "e.g. 5.0")?)
+                }
+                _ => return Err(self.unknown_key(key, "[robot]", &ROBOT_KEYS)),
+            }
+        }
+        Ok(robot)
+    }
+
+    /// A finite number above 0 (an integer counts).
+    fn positive(&self, key: &Key, item: &Item, example: &str) -> Result<Sourced<f64>, String> {
+        let at = item.span().map_or(0, |span| span.start);
+        let what = format!("`{}` must be a number above 0 ({example})", key.get());
+        let number = match item.as_value() {
+            Some(Value::Float(f)) => *f.value(),
+            Some(Value::Integer(i)) => *i.value() as f64,
+            _ => return Err(self.error(at, &what)),
+        };
+        if !number.is_finite() || number <= 0.0 {
+            return Err(self.error(at, &format!("{what}, not {number}")));
+        }
+        Ok(Sourced {
+            value: number,
+            line: self.line(at),
+        })
     }
 
     fn reader(&self, item: &Item) -> Result<Sourced<Reader>, String> {
@@ -392,10 +469,13 @@ impl Parser<'_> {
         })
     }
 
-    fn languages(&self, item: &Item) -> Result<Sourced<Vec<Language>>, String> {
-        let what = "`languages` must be a list of languages, e.g. [\"english\", \"isiZulu\"]";
+    fn languages(&self, key: &Key, item: &Item) -> Result<Sourced<Vec<Language>>, String> {
+        let what = format!(
+            "`{}` must be a list of languages, e.g. [\"english\", \"isiZulu\"]",
+            key.get()
+        );
         let languages = self
-            .strings(item, what)?
+            .strings(item, &what)?
             .into_iter()
             .map(|(name, at)| {
                 crate::present::language::parse(name).ok_or_else(|| {
@@ -634,7 +714,7 @@ config-dir = "../behaviorController/config"
         assert_eq!(
             error("colour = \"red\"\n"),
             "1:1: unknown key `colour` in ekb.toml; the keys are `reader`, `check`, \
-             `translations`, `map`, `mission`"
+             `translations`, `map`, `mission`, `robot`"
         );
         assert_eq!(
             error("[check]\nseverity = { key-case = \"fatal\" }\n"),
@@ -659,6 +739,84 @@ config-dir = "../behaviorController/config"
             "1:15: invalid basic string (found a line break: a string between \"…\" is one line)"
         );
         assert!(Settings::parse("").unwrap().reader.is_none());
+    }
+
+    #[test]
+    fn the_robot_profile_is_read_with_its_lines_and_defaults() {
+        let settings = Settings::parse(
+            "[robot]\nspeaks = [\"English\", \"zulu\", \"rw\"]\nspeed = 0.5\n\
+             turn-speed = 1\nsyllables-per-second = 4.5\n",
+        )
+        .unwrap();
+        let robot = &settings.robot;
+        assert_eq!(robot.speaks.as_ref().unwrap().line, 2);
+        assert_eq!(robot.speed.as_ref().unwrap().line, 3);
+        assert_eq!(robot.turn_speed.as_ref().unwrap().line, 4);
+        assert_eq!(robot.syllables_per_second.as_ref().unwrap().line, 5);
+        assert_eq!(
+            robot.profile(),
+            RobotProfile {
+                speaks: vec![Language::English, Language::IsiZulu, Language::Kinyarwanda],
+                speed: 0.5,
+                turn_speed: 1.0,
+                syllables_per_second: 4.5,
+            }
+        );
+        assert_eq!(
+            Settings::parse("").unwrap().robot.profile(),
+            RobotProfile::default()
+        );
+        let some = Settings::parse("[robot]\nspeed = 0.3\n").unwrap();
+        assert_eq!(
+            some.robot.profile(),
+            RobotProfile {
+                speed: 0.3,
+                ..RobotProfile::default()
+            }
+        );
+    }
+
+    #[test]
+    fn a_bad_robot_profile_names_its_line_and_column() {
+        let error = |text: &str| Settings::parse(text).unwrap_err();
+        assert_eq!(
+            error("[robot]\nspeak = []\n"),
+            "2:1: unknown key `speak` in [robot]; did you mean `speaks`?"
+        );
+        assert_eq!(
+            error("[robot]\nturn_speed = 1.0\n"),
+            "2:1: unknown key `turn_speed` in [robot]; did you mean `turn-speed`?"
+        );
+        assert_eq!(
+            error("[robot]\nspeaks = [\"english\", \"swahili\"]\n"),
+            "2:22: `swahili` is no language of the knowledge base; the languages are english, \
+             isiZulu, kinyarwanda"
+        );
+        assert_eq!(
+            error("[robot]\nspeaks = \"english\"\n"),
+            "2:10: `speaks` must be a list of languages, e.g. [\"english\", \"isiZulu\"]"
+        );
+        assert_eq!(
+            error("[robot]\nspeed = 0\n"),
+            "2:9: `speed` must be a number above 0 (m/s, e.g. 0.27), not 0"
+        );
+        assert_eq!(
+            error("[robot]\nturn-speed = -0.5\n"),
+            "2:14: `turn-speed` must be a number above 0 (rad/s, e.g. 0.9), not -0.5"
+        );
+        assert_eq!(
+            error("[robot]\nsyllables-per-second = nan\n"),
+            "2:24: `syllables-per-second` must be a number above 0 (e.g. 5.0), not NaN"
+        );
+        assert_eq!(
+            error("[robot]\nspeed = inf\n"),
+            "2:9: `speed` must be a number above 0 (m/s, e.g. 0.27), not inf"
+        );
+        assert_eq!(
+            error("[robot]\nspeed = \"fast\"\n"),
+            "2:9: `speed` must be a number above 0 (m/s, e.g. 0.27)"
+        );
+        assert_eq!(error("robot = 1\n"), "1:1: `robot` must be a table");
     }
 
     #[test]

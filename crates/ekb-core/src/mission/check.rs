@@ -7,6 +7,7 @@ use crate::diagnostic::Diagnostics;
 use crate::map::LabMap;
 use crate::model::build::Options;
 use crate::model::{KnowledgeBase, Language};
+use crate::robot::speech::RobotProfile;
 use crate::robot::Reader;
 use crate::rules::culture::culture_duplicate_key::Wins;
 use crate::rules::culture::*;
@@ -30,6 +31,8 @@ pub struct MissionSources<'s> {
     /// The robot's reader that the settings name, if any: its culture reader's line buffer
     /// ([`Reader::culture_line_buffer`]; `2025-06`'s when none is named).
     pub reader: Option<Reader>,
+    /// The robot profile that the settings give (`[robot]`), if any; the default's when none.
+    pub robot: Option<&'s RobotProfile>,
 }
 
 impl MissionSources<'_> {
@@ -86,6 +89,17 @@ pub fn check_together<'s>(sources: &MissionSources<'s>, rules: &RuleSet) -> Vec<
             culture_unknown_key::check(culture, types, &mut culture_out);
             culture_type_mismatch::check(culture, types, &mut culture_out);
             language = mission_language_invalid::check(culture, types, &mut culture_out);
+            if let Some(language) = language {
+                let default = RobotProfile::default();
+                let robot = sources.robot.unwrap_or(&default);
+                mission_language_not_spoken::check(
+                    culture,
+                    types,
+                    language,
+                    robot,
+                    &mut culture_out,
+                );
+            }
         }
         let said = match (&mission, language) {
             (Some(mission), Some(language)) => super::said_phrases(mission, language)

@@ -5,7 +5,9 @@
 //! Each node does what the robot's implementation does with the knowledge bases: the
 //! exhibits are the tour's stops in order, their messages in the mission's language; a
 //! `SayText` whose phrase the robot does not hold says what it last looked up; a target
-//! whose coordinates sum to 0 is not pointed at. The run is bounded: a mission still
+//! whose coordinates sum to 0 is not pointed at; words in a language the robot profile does
+//! not speak are silence (the text-to-speech fails, the mission's fallback swallows the
+//! failure). The run is bounded: a mission still
 //! running after [`MAX_TICKS`] nodes never ends.
 
 use serde::Serialize;
@@ -15,6 +17,7 @@ use super::ports;
 use super::tree::{self, Mission};
 use super::xml::Element;
 use crate::model::{Arm, KnowledgeBase, Language, Phase};
+use crate::robot::speech::RobotProfile;
 use crate::source::LineIndex;
 use crate::syntax::Span;
 
@@ -32,6 +35,8 @@ pub struct World<'a> {
     pub phrases: PhraseBook<'a>,
     /// `asrEnabled`: visitors answer by voice (else on the tablet).
     pub asr_enabled: bool,
+    /// The robot profile: the languages its text-to-speech speaks.
+    pub robot: &'a RobotProfile,
 }
 
 /// A stop of the tour, as a step names it.
@@ -60,6 +65,10 @@ pub enum Step {
         source: String,
         /// What is wrong with it, if anything.
         problem: Option<String>,
+        /// Why the robot says nothing although it holds the words: the robot does not
+        /// speak the language.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        silent: Option<String>,
     },
     /// `PerformIconicGesture`.
     Gesture { gesture: String },
@@ -501,6 +510,7 @@ impl Walker<'_, '_> {
                 text: self.last_phrase.clone(),
                 source: format!("utilityPhrase?{number}"),
                 problem: Some("the mission has no language the robot accepts".to_string()),
+                silent: None,
             });
             return Ok(());
         };
@@ -515,6 +525,7 @@ impl Walker<'_, '_> {
                     text: Some(text),
                     source: key,
                     problem: None,
+                    silent: self.silence(language),
                 }
             }
             // Not found, the robot's lookup leaves what it found last.
@@ -524,6 +535,7 @@ impl Walker<'_, '_> {
                     "{key} {problem}: the robot says the phrase it looked up last"
                 )),
                 source: key,
+                silent: self.silence(language),
             },
             (Err(problem), Some(_)) => {
                 return Err(crash(
@@ -538,6 +550,7 @@ impl Walker<'_, '_> {
                 text: None,
                 problem: Some(format!("{key} {problem}")),
                 source: key,
+                silent: self.silence(language),
             },
         };
         self.steps.push(step);
@@ -574,8 +587,15 @@ impl Walker<'_, '_> {
                 phase.name()
             ),
             problem,
+            silent: self.silence(language),
         });
         Status::Success
+    }
+
+    /// Why the robot says nothing in `language`, if it does not speak it.
+    fn silence(&self, language: Language) -> Option<String> {
+        (!self.world.robot.speaks(language))
+            .then(|| format!("the robot does not speak {}", language.name()))
     }
 
     /// `PerformDeicticGesture`: at the exhibit's target, unless it sums to 0.
@@ -667,10 +687,13 @@ fn describe(step: &Step) -> String {
             text,
             source,
             problem,
+            silent,
         } => {
-            let said = match text {
-                Some(text) => format!("say \"{text}\""),
-                None => format!("say nothing known ({source})"),
+            let said = match (text, silent) {
+                (Some(text), Some(why)) => format!("say nothing: {why} (\"{text}\" goes unheard)"),
+                (None, Some(why)) => format!("say nothing: {why} ({source})"),
+                (Some(text), None) => format!("say \"{text}\""),
+                (None, None) => format!("say nothing known ({source})"),
             };
             match problem {
                 Some(problem) => format!("{said} — {problem}"),

@@ -109,6 +109,7 @@ pub static ALL: &[&Rule] = &[
     &mission::mission_bad_include::MISSION_BAD_INCLUDE,
     &mission::mission_invalid_name::MISSION_INVALID_NAME,
     &mission::mission_language_invalid::MISSION_LANGUAGE_INVALID,
+    &mission::mission_language_not_spoken::MISSION_LANGUAGE_NOT_SPOKEN,
     &mission::mission_missing_phrase::MISSION_MISSING_PHRASE,
     &mission::mission_untranslated_tour::MISSION_UNTRANSLATED_TOUR,
     &mission::mission_missing_format::MISSION_MISSING_FORMAT,

@@ -8,6 +8,7 @@ pub mod mission_bad_port_value;
 pub mod mission_invalid_name;
 pub mod mission_invalid_xml;
 pub mod mission_language_invalid;
+pub mod mission_language_not_spoken;
 pub mod mission_missing_format;
 pub mod mission_missing_phrase;
 pub mod mission_unknown_attribute;
