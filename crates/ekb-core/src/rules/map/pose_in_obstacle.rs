@@ -29,9 +29,10 @@ declare_rule! {
     };
 }
 
-pub fn check(pose: &Loaded3, map: &LabMap, out: &mut Diagnostics) {
+/// Checks `pose`; whether it is in an obstacle.
+pub fn check(pose: &Loaded3, map: &LabMap, out: &mut Diagnostics) -> bool {
     let Some(blocker) = map.blocker(pose.x, pose.y) else {
-        return;
+        return false;
     };
     out.push_with(&POSE_IN_OBSTACLE, || {
         let what = match blocker {
@@ -61,4 +62,5 @@ pub fn check(pose: &Loaded3, map: &LabMap, out: &mut Diagnostics) {
         .at_location(Some(pose.id))
         .with_help("move the pose into free floor, at least the robot's radius from walls and furniture; `ekb map` draws it on the map")
     });
+    true
 }
