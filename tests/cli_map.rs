@@ -1077,3 +1077,90 @@ fn a_stop_walled_in_is_unreachable_and_the_tour_goes_on_from_where_the_robot_sta
         .unwrap()
         .contains("tour-leg-unreachable"));
 }
+
+/// The legs of an `ekb map` SVG: the planned ones' points, and the locations of those the
+/// robot cannot drive.
+fn legs(svg: &str) -> (Vec<Vec<(f64, f64)>>, Vec<String>) {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    let planned = doc
+        .descendants()
+        .filter(|node| node.has_tag_name("polyline") && node.attribute("class") == Some("leg"))
+        .map(|node| {
+            node.attribute("points")
+                .unwrap()
+                .split(' ')
+                .map(|pair| {
+                    let (x, y) = pair.split_once(',').unwrap();
+                    (x.parse().unwrap(), y.parse().unwrap())
+                })
+                .collect()
+        })
+        .collect();
+    let unreachable = doc
+        .descendants()
+        .filter(|node| node.attribute("class") == Some("leg unreachable"))
+        .map(|node| node.attribute("data-location").unwrap().to_string())
+        .collect();
+    (planned, unreachable)
+}
+
+#[test]
+fn the_map_draws_each_leg_as_the_robot_drives_it() {
+    // The lab: 1 → 4 → 3 → 2 each a path round the furniture (more points than its two
+    // ends); 2 → 5 stays at one pose and is not drawn.
+    let svg = svg_of(SEED, &["--map-config", LAB_MAP]);
+    let (planned, unreachable) = legs(&svg);
+    assert_eq!(planned.len(), 3, "{planned:?}");
+    assert!(
+        planned.iter().any(|points| points.len() > 2),
+        "no leg turns"
+    );
+    assert!(unreachable.is_empty());
+    // Walled in, location 3 is crossed out; the robot drives on from the Roomba.
+    let dir = walled_in_map(false);
+    let config = dir.path().join("mapGenerationConfiguration.ini");
+    let svg = svg_of(SEED, &["--map-config", config.to_str().unwrap()]);
+    let (planned, unreachable) = legs(&svg);
+    assert_eq!(unreachable, ["3"]);
+    assert_eq!(planned.len(), 2, "1 → 4, then 4 → 2");
+    assert!(svg.contains("Dashed red, crossed: a leg the robot cannot drive"));
+    // Without a map, straight lines stop to stop.
+    let (planned, _) = legs(&svg_of(SEED, &[]));
+    assert!(planned.iter().all(|points| points.len() == 2));
+}
+
+#[test]
+fn circles_and_rectangles_are_obstacles_in_any_case() {
+    let dir = walled_in_map(false);
+    let obstacles = dir.path().join("obstacles.dat");
+    // A disc on location 4's pose (5.0, 3.9, line 29), in lower case.
+    let text = std::fs::read_to_string(&obstacles).unwrap() + "circle 5.0 3.9 0.1\n";
+    std::fs::write(&obstacles, text).unwrap();
+    let config = dir.path().join("mapGenerationConfiguration.ini");
+    let run = ekb(&[
+        "check",
+        SEED,
+        "--format",
+        "concise",
+        "--map-config",
+        config.to_str().unwrap(),
+    ]);
+    let stdout = String::from_utf8(run.stdout).unwrap();
+    assert!(
+        stdout.contains(
+            ":29:33: error[pose-in-obstacle] location 4 stands at (5.0, 3.9), within the robot's \
+             radius (0.3 m) of the obstacle of obstacles.dat:16 (a disc of radius 0.1 m at 5.0, 3.9)"
+        ),
+        "{stdout}"
+    );
+    std::fs::write(&obstacles, "CIRCLE 5.0 3.9\n").unwrap();
+    let run = ekb(&["check", SEED, "--map-config", config.to_str().unwrap()]);
+    assert_eq!(run.code, 2);
+    assert!(
+        run.stderr.contains(
+            "obstacles.dat:1:1: a circle has 3 numbers (centre x, centre y, radius in metres), this one has 2"
+        ),
+        "{}",
+        run.stderr
+    );
+}

@@ -222,6 +222,10 @@ fn legs(spots: &[Spot<'_>], tour: &[usize], map: &LabMap) -> Vec<Leg> {
             .entry((standing, to))
             .or_insert_with(|| {
                 let path = map.space.path(at(standing), at(to)).ok()?;
+                if path.turns.len() < 2 {
+                    // One pixel: the robot is there already.
+                    return Some(vec![at(standing), at(to)]);
+                }
                 let rows = map.space.rows as f64;
                 let pixels = path.turns.iter().map(|&(column, row)| {
                     let per_metre = crate::map::space::PIXELS_PER_METRE;
