@@ -674,7 +674,7 @@ fn the_png_has_the_arrows_colour_at_each_poses_pixel() {
     // The map is beneath: its west wall (x 0–0.8 m) is grey, the floor white.
     let (wall, floor) = (
         rgb_at(ox + 0.4 * scale, oy - 5.0 * scale),
-        rgb_at(ox + 4.7 * scale, oy - 2.3 * scale),
+        rgb_at(ox + 5.0 * scale, oy - 7.5 * scale),
     );
     assert!(wall.0 < 200 && wall.0 > 100, "{wall:?}");
     assert_eq!(floor, (255, 255, 255));
@@ -698,7 +698,7 @@ fn the_png_scales_the_map_when_the_drawing_does() {
     assert_eq!(scale, 80.0);
     let (wall, floor) = (
         rgb_at(ox + 0.4 * scale, oy - 5.0 * scale),
-        rgb_at(ox + 4.7 * scale, oy - 2.3 * scale),
+        rgb_at(ox + 5.0 * scale, oy - 7.5 * scale),
     );
     assert!(wall.0 < 200 && wall.0 > 100, "{wall:?}");
     assert_eq!(floor, (255, 255, 255));
@@ -930,4 +930,237 @@ fn a_drawing_has_at_most_2000_locations_and_1000_stops_and_says_what_it_leaves_o
     std::fs::write(&file, many_locations(2_000, 1_000)).unwrap();
     let svg = svg_of(file.to_str().unwrap(), &[]);
     assert!(!svg.contains("not drawn ("), "{svg}");
+}
+
+/// The lab map of `tests/fixtures/map/` in a folder of its own, with a square wall round
+/// the seed's location 3 (at 2.0, 6.3: 1.2 m wide, 0.1 m thick): drawn black into
+/// `environmentMap.png` and, when `space_image`, blocked (with its clearance) in a
+/// `configurationSpaceMap.png` made as the robot's generator makes it; else written into
+/// `obstacles.dat` as four `rectangle` lines.
+fn walled_in_map(space_image: bool) -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    for file in [
+        "mapGenerationConfiguration.ini",
+        "mapGenerationInput.dat",
+        "obstacles.dat",
+        "environmentMap.png",
+    ] {
+        std::fs::copy(
+            root().join("tests/fixtures/map").join(file),
+            dir.path().join(file),
+        )
+        .unwrap();
+    }
+    let walls = [
+        (2.0, 6.9, 1.2, 0.1),
+        (2.0, 5.7, 1.2, 0.1),
+        (1.4, 6.3, 0.1, 1.2),
+        (2.6, 6.3, 0.1, 1.2),
+    ];
+    // The walls in the occupancy image (1 cm a pixel, rows from the top).
+    let decoder = png::Decoder::new(std::io::BufReader::new(
+        std::fs::File::open(dir.path().join("environmentMap.png")).unwrap(),
+    ));
+    let mut reader = decoder.read_info().unwrap();
+    let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut pixels).unwrap();
+    let (width, height) = (info.width as usize, info.height as usize);
+    let mut grey: Vec<u8> = pixels
+        .chunks(info.color_type.samples())
+        .take(width * height)
+        .map(|pixel| pixel[0])
+        .collect();
+    let in_wall = |column: usize, row: usize| {
+        let (x, y) = (column as f64 / 100.0, (height - row) as f64 / 100.0);
+        walls
+            .iter()
+            .any(|&(cx, cy, w, h)| (x - cx).abs() <= w / 2.0 && (y - cy).abs() <= h / 2.0)
+    };
+    for row in 0..height {
+        for column in 0..width {
+            if in_wall(column, row) {
+                grey[row * width + column] = 0;
+            }
+        }
+    }
+    write_grey_png(&dir.path().join("environmentMap.png"), width, height, &grey);
+    let mut obstacles = std::fs::read_to_string(dir.path().join("obstacles.dat")).unwrap();
+    for (cx, cy, w, h) in walls {
+        obstacles += &format!("rectangle {cx} {cy} {w} {h}\n");
+    }
+    if space_image {
+        // The robot's own image: the obstacles and the walls, grown as its generator grows them.
+        let map = LabMap::from_config(&dir.path().join("mapGenerationConfiguration.ini")).unwrap();
+        let mut all = map.obstacles.clone();
+        for (cx, cy, w, h) in walls {
+            all.push(ekb::map::Obstacle {
+                centre_x: cx,
+                centre_y: cy,
+                width: w,
+                height: h,
+                shape: ekb::map::Shape::Rectangle,
+                place: "the walls".to_string(),
+            });
+        }
+        let space = ekb::map::ConfigurationSpace::from_obstacles(6.8, 9.93, &all, 0.3);
+        let grey: Vec<u8> = (0..space.rows)
+            .flat_map(|row| (0..space.columns).map(move |column| (column, row)))
+            .map(|pixel| if space.is_free(pixel) { 255 } else { 0 })
+            .collect();
+        let image = dir.path().join("configurationSpaceMap.png");
+        write_grey_png(&image, space.columns, space.rows, &grey);
+    } else {
+        std::fs::write(dir.path().join("obstacles.dat"), obstacles).unwrap();
+    }
+    dir
+}
+
+fn write_grey_png(path: &Path, width: usize, height: usize, grey: &[u8]) {
+    let file = std::io::BufWriter::new(std::fs::File::create(path).unwrap());
+    let mut encoder = png::Encoder::new(file, width as u32, height as u32);
+    encoder.set_color(png::ColorType::Grayscale);
+    encoder.set_depth(png::BitDepth::Eight);
+    encoder
+        .write_header()
+        .unwrap()
+        .write_image_data(grey)
+        .unwrap();
+}
+
+#[test]
+fn a_stop_walled_in_is_unreachable_and_the_tour_goes_on_from_where_the_robot_stands() {
+    let expected = "the robot cannot drive to location 3 (Lynxmotion) from location 4 (Roomba): \
+                    no path joins the two: walls close one off from the other; the tour goes on \
+                    and it gives location 3's talk at the Roomba";
+    for space_image in [true, false] {
+        let dir = walled_in_map(space_image);
+        let config = dir.path().join("mapGenerationConfiguration.ini");
+        let run = ekb(&[
+            "check",
+            SEED,
+            "--format",
+            "json",
+            "--map-config",
+            config.to_str().unwrap(),
+        ]);
+        let json: serde_json::Value = serde_json::from_slice(&run.stdout).unwrap();
+        let found: Vec<(u64, u64, String)> = json["diagnostics"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|d| d["rule"] == "tour-leg-unreachable")
+            .map(|d| {
+                (
+                    d["line"].as_u64().unwrap(),
+                    d["column"].as_u64().unwrap(),
+                    d["message"].as_str().unwrap().to_string(),
+                )
+            })
+            .collect();
+        // The tour `5 1 4 3 2 5` of line 46: its third stop, location 3; the robot then
+        // drives on from the Roomba to location 2.
+        assert_eq!(found, [(46, 25, expected.to_string())], "{space_image}");
+        // The image and the obstacles disagree when only the image has the walls.
+        let told = run.stderr.contains("configurationSpaceMap.png is not what the robot's map generator makes of the obstacles");
+        assert_eq!(told, space_image, "{}", run.stderr);
+    }
+    // On the lab as it is, every leg is driven.
+    let run = ekb(&[
+        "check",
+        SEED,
+        "--format",
+        "concise",
+        "--map-config",
+        LAB_MAP,
+    ]);
+    assert!(!String::from_utf8(run.stdout)
+        .unwrap()
+        .contains("tour-leg-unreachable"));
+}
+
+/// The legs of an `ekb map` SVG: the planned ones' points, and the locations of those the
+/// robot cannot drive.
+fn legs(svg: &str) -> (Vec<Vec<(f64, f64)>>, Vec<String>) {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    let planned = doc
+        .descendants()
+        .filter(|node| node.has_tag_name("polyline") && node.attribute("class") == Some("leg"))
+        .map(|node| {
+            node.attribute("points")
+                .unwrap()
+                .split(' ')
+                .map(|pair| {
+                    let (x, y) = pair.split_once(',').unwrap();
+                    (x.parse().unwrap(), y.parse().unwrap())
+                })
+                .collect()
+        })
+        .collect();
+    let unreachable = doc
+        .descendants()
+        .filter(|node| node.attribute("class") == Some("leg unreachable"))
+        .map(|node| node.attribute("data-location").unwrap().to_string())
+        .collect();
+    (planned, unreachable)
+}
+
+#[test]
+fn the_map_draws_each_leg_as_the_robot_drives_it() {
+    // The lab: 1 → 4 → 3 → 2 each a path round the furniture (more points than its two
+    // ends); 2 → 5 stays at one pose and is not drawn.
+    let svg = svg_of(SEED, &["--map-config", LAB_MAP]);
+    let (planned, unreachable) = legs(&svg);
+    assert_eq!(planned.len(), 3, "{planned:?}");
+    assert!(
+        planned.iter().any(|points| points.len() > 2),
+        "no leg turns"
+    );
+    assert!(unreachable.is_empty());
+    // Walled in, location 3 is crossed out; the robot drives on from the Roomba.
+    let dir = walled_in_map(false);
+    let config = dir.path().join("mapGenerationConfiguration.ini");
+    let svg = svg_of(SEED, &["--map-config", config.to_str().unwrap()]);
+    let (planned, unreachable) = legs(&svg);
+    assert_eq!(unreachable, ["3"]);
+    assert_eq!(planned.len(), 2, "1 → 4, then 4 → 2");
+    assert!(svg.contains("Dashed red, crossed: a leg the robot cannot drive"));
+    // Without a map, straight lines stop to stop.
+    let (planned, _) = legs(&svg_of(SEED, &[]));
+    assert!(planned.iter().all(|points| points.len() == 2));
+}
+
+#[test]
+fn circles_and_rectangles_are_obstacles_in_any_case() {
+    let dir = walled_in_map(false);
+    let obstacles = dir.path().join("obstacles.dat");
+    // A disc on location 4's pose (5.0, 3.9, line 29), in lower case.
+    let text = std::fs::read_to_string(&obstacles).unwrap() + "circle 5.0 3.9 0.1\n";
+    std::fs::write(&obstacles, text).unwrap();
+    let config = dir.path().join("mapGenerationConfiguration.ini");
+    let run = ekb(&[
+        "check",
+        SEED,
+        "--format",
+        "concise",
+        "--map-config",
+        config.to_str().unwrap(),
+    ]);
+    let stdout = String::from_utf8(run.stdout).unwrap();
+    assert!(
+        stdout.contains(
+            ":29:33: error[pose-in-obstacle] location 4 stands at (5.0, 3.9), within the robot's \
+             radius (0.3 m) of the obstacle of obstacles.dat:16 (a disc of radius 0.1 m at 5.0, 3.9)"
+        ),
+        "{stdout}"
+    );
+    std::fs::write(&obstacles, "CIRCLE 5.0 3.9\n").unwrap();
+    let run = ekb(&["check", SEED, "--map-config", config.to_str().unwrap()]);
+    assert_eq!(run.code, 2);
+    assert!(
+        run.stderr.contains(
+            "obstacles.dat:1:1: a circle has 3 numbers (centre x, centre y, radius in metres), this one has 2"
+        ),
+        "{}",
+        run.stderr
+    );
 }

@@ -53,10 +53,14 @@ impl MapArgs {
                 .map(Some)
                 .map_err(failed);
         }
-        match self.map_config.clone().or(settings_map_config) {
-            Some(config) => LabMap::from_config(&config).map(Some).map_err(failed),
-            None => Ok(None),
+        let Some(config) = self.map_config.clone().or(settings_map_config) else {
+            return Ok(None);
+        };
+        let map = LabMap::from_config(&config).map_err(failed)?;
+        for warning in &map.warnings {
+            stderr_line!("ekb: warning: {}", crate::render::escape::escape(warning));
         }
+        Ok(Some(map))
     }
 }
 

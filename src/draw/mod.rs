@@ -9,6 +9,8 @@ pub mod layout;
 pub mod png;
 pub mod svg;
 
+use std::collections::HashMap;
+
 use crate::check::Checked;
 use crate::check::Summary;
 use crate::diagnostic::Severity;
@@ -42,9 +44,26 @@ pub struct Scene<'a> {
     pub undrawn_locations: usize,
     /// The stops of the tour after its first [`MAX_DRAWN_STOPS`].
     pub undrawn_stops: usize,
+    /// With a map, each leg of `tour` as the robot's planner drives it; without one, none.
+    pub legs: Vec<Leg>,
     /// Findings that are not about one location (the tour's, the file's), by rule.
     pub elsewhere: Vec<RuleCount>,
     pub summary: Summary,
+}
+
+/// A path in metres, from pose to pose.
+pub type Route = Vec<(f64, f64)>;
+
+/// One leg of the tour, as the robot would drive it on the map's configuration space.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Leg {
+    /// Indexes into [`Scene::spots`]: where the robot stands (the last stop it reached), and
+    /// the stop it drives to.
+    pub from: usize,
+    pub to: usize,
+    /// The planned path in metres, from pose to pose through the pixels where it turns;
+    /// `None` where no path joins the two (the robot stays where it stands).
+    pub path: Option<Route>,
 }
 
 /// One location as the robot holds it.
@@ -150,12 +169,13 @@ impl<'a> Scene<'a> {
             });
         }
         let stops = checked.kb.tour_stops().count();
-        let tour = checked
+        let tour: Vec<usize> = checked
             .kb
             .tour_stops()
             .take(MAX_DRAWN_STOPS)
             .filter_map(|id| index_of(&spots, id))
             .collect();
+        let legs = map.map_or_else(Vec::new, |map| legs(&spots, &tour, map));
         let mut elsewhere = Vec::new();
         for diagnostic in &checked.diagnostics {
             let counts = match diagnostic.location_id {
@@ -175,12 +195,64 @@ impl<'a> Scene<'a> {
             map,
             undrawn_locations: all_locations - spots.len(),
             undrawn_stops: stops.saturating_sub(MAX_DRAWN_STOPS),
+            legs,
             spots,
             tour,
             elsewhere,
             summary: checked.summary(),
         }
     }
+}
+
+/// The legs of `tour` (indexes into `spots`) on `map`: from where the robot stands to each
+/// next stop, planned once for each pair of places.
+fn legs(spots: &[Spot<'_>], tour: &[usize], map: &LabMap) -> Vec<Leg> {
+    let Some(&first) = tour.first() else {
+        return Vec::new();
+    };
+    let at = |index: usize| (spots[index].pose.x, spots[index].pose.y);
+    let mut planned: HashMap<(usize, usize), Option<Route>> = HashMap::new();
+    let mut standing = first;
+    let mut legs = Vec::new();
+    for &to in &tour[1..] {
+        if to == standing {
+            continue;
+        }
+        let path = planned
+            .entry((standing, to))
+            .or_insert_with(|| {
+                let path = map.space.path(at(standing), at(to)).ok()?;
+                if path.turns.len() < 2 {
+                    // One pixel: the robot is there already.
+                    return Some(vec![at(standing), at(to)]);
+                }
+                let rows = map.space.rows as f64;
+                let pixels = path.turns.iter().map(|&(column, row)| {
+                    let per_metre = crate::map::space::PIXELS_PER_METRE;
+                    (
+                        (column as f64 + 0.5) / per_metre,
+                        (rows - row as f64 - 0.5) / per_metre,
+                    )
+                });
+                Some(
+                    std::iter::once(at(standing))
+                        .chain(pixels)
+                        .chain([at(to)])
+                        .collect(),
+                )
+            })
+            .clone();
+        let reached = path.is_some();
+        legs.push(Leg {
+            from: standing,
+            to,
+            path,
+        });
+        if reached {
+            standing = to;
+        }
+    }
+    legs
 }
 
 /// Where location `id` is in `spots` (sorted by id).

@@ -113,12 +113,12 @@ pub fn draw(scene: &Scene<'_>, map_image: MapImage) -> Drawing {
     map_layer(&mut svg, scene, &frame, map_image);
     grid(&mut svg, &frame);
     footprints(&mut svg, scene, &frame, &positions);
-    tour_path(&mut svg, scene, &positions);
+    tour_path(&mut svg, scene, &frame, &positions);
     gestures(&mut svg, scene, &positions);
     rings(&mut svg, scene, &positions);
     arrows(&mut svg, scene, &positions);
     let bounds = Rect::new(4.0, TOP - 8.0, legend_x - 16.0, height - TOP + 4.0);
-    labels(&mut svg, scene, &positions, bounds);
+    labels(&mut svg, scene, &frame, &positions, bounds);
     svg.push_str("</g>");
     legend_panel(&mut svg, scene, &frame, legend_x, &legend);
     svg.push_str("</svg>\n");
@@ -333,8 +333,9 @@ fn arrow_colour(spot: &Spot<'_>) -> &'static str {
     }
 }
 
-/// The tour's path, stop to stop, with an arrowhead halfway along each leg.
-fn tour_path(svg: &mut String, scene: &Scene<'_>, positions: &[Option<Placed>]) {
+/// The tour's path, stop to stop, with an arrowhead halfway along each leg: with a map, as
+/// the robot's planner drives it, a leg it cannot drive dashed in red from where it stands.
+fn tour_path(svg: &mut String, scene: &Scene<'_>, frame: &Frame, positions: &[Option<Placed>]) {
     let stops: Vec<String> = scene
         .tour
         .iter()
@@ -345,25 +346,101 @@ fn tour_path(svg: &mut String, scene: &Scene<'_>, positions: &[Option<Placed>]) 
         r#"<g id="tour" data-locations="{}" stroke="{PATH_COLOUR}" fill="{PATH_COLOUR}" stroke-width="2.5" stroke-linecap="round">"#,
         stops.join(" ")
     );
-    let points: Vec<(f64, f64)> = scene
-        .tour
-        .iter()
-        .filter_map(|&index| positions[index].map(|placed| placed.pose))
-        .collect();
-    for leg in points.windows(2) {
-        let ((x1, y1), (x2, y2)) = (leg[0], leg[1]);
-        if (x2 - x1).hypot(y2 - y1) < 1.0 {
-            continue;
+    for (points, to) in drawn_legs(scene, frame, positions) {
+        match to {
+            None => planned_leg(svg, &points),
+            Some(to) => unreachable_leg(svg, points[0], points[1], to),
         }
-        let angle = (y2 - y1).atan2(x2 - x1).to_degrees();
-        let _ = write!(
-            svg,
-            r#"<line x1="{x1:.1}" y1="{y1:.1}" x2="{x2:.1}" y2="{y2:.1}" stroke-opacity="0.8"/><path d="M-7 -6 L7 0 L-7 6 Z" stroke="none" transform="translate({:.1} {:.1}) rotate({angle:.1})"/>"#,
-            (x1 + x2) / 2.0,
-            (y1 + y2) / 2.0
-        );
     }
     svg.push_str("</g>");
+}
+
+/// A leg as drawn: its points in pixels of the drawing, and the stop it cannot reach, if
+/// the robot cannot drive it.
+type DrawnLeg<'s> = (Vec<(f64, f64)>, Option<&'s Spot<'s>>);
+
+/// Each leg of the tour as drawn: with a map, the path the robot's planner drives (or, to a
+/// stop it cannot reach, the straight line); without one, the straight line stop to stop.
+fn drawn_legs<'s>(
+    scene: &'s Scene<'_>,
+    frame: &Frame,
+    positions: &[Option<Placed>],
+) -> Vec<DrawnLeg<'s>> {
+    if scene.map.is_none() {
+        let points: Vec<(f64, f64)> = scene
+            .tour
+            .iter()
+            .filter_map(|&index| positions[index].map(|placed| placed.pose))
+            .collect();
+        return points.windows(2).map(|leg| (leg.to_vec(), None)).collect();
+    }
+    scene
+        .legs
+        .iter()
+        .filter_map(|leg| {
+            let (from, to) = (positions[leg.from]?, positions[leg.to]?);
+            Some(match &leg.path {
+                Some(path) => (path.iter().map(|&(x, y)| frame.px(x, y)).collect(), None),
+                None => (vec![from.pose, to.pose], Some(&scene.spots[leg.to])),
+            })
+        })
+        .collect()
+}
+
+/// A leg along `points` (pixels of the drawing), its arrowhead halfway along it.
+fn planned_leg(svg: &mut String, points: &[(f64, f64)]) {
+    let length: f64 = points
+        .windows(2)
+        .map(|pair| (pair[1].0 - pair[0].0).hypot(pair[1].1 - pair[0].1))
+        .sum();
+    if length < 1.0 {
+        return;
+    }
+    let list: Vec<String> = points
+        .iter()
+        .map(|(x, y)| format!("{x:.1},{y:.1}"))
+        .collect();
+    let _ = write!(
+        svg,
+        r#"<polyline class="leg" points="{}" fill="none" stroke-opacity="0.8" stroke-linejoin="round"/>"#,
+        list.join(" ")
+    );
+    // The arrowhead where half the length is behind.
+    let mut left = length / 2.0;
+    for pair in points.windows(2) {
+        let ((x1, y1), (x2, y2)) = (pair[0], pair[1]);
+        let step = (x2 - x1).hypot(y2 - y1);
+        if step >= left && step > 0.0 {
+            let (x, y) = (x1 + (x2 - x1) * left / step, y1 + (y2 - y1) * left / step);
+            let angle = (y2 - y1).atan2(x2 - x1).to_degrees();
+            let _ = write!(
+                svg,
+                r#"<path d="M-7 -6 L7 0 L-7 6 Z" stroke="none" transform="translate({x:.1} {y:.1}) rotate({angle:.1})"/>"#
+            );
+            return;
+        }
+        left -= step;
+    }
+}
+
+/// A leg the robot cannot drive: dashed in red from where it stands to the stop, crossed
+/// out halfway.
+fn unreachable_leg(svg: &mut String, (x1, y1): (f64, f64), (x2, y2): (f64, f64), to: &Spot<'_>) {
+    let (x, y) = ((x1 + x2) / 2.0, (y1 + y2) / 2.0);
+    let _ = write!(
+        svg,
+        r#"<g class="leg unreachable" data-location="{}" stroke="{FINDING_COLOUR}"><title>The robot cannot drive to location {}: it gives the talk where it stands</title><line x1="{x1:.1}" y1="{y1:.1}" x2="{x2:.1}" y2="{y2:.1}" stroke-dasharray="6 5"/><path d="M{:.1} {:.1} L{:.1} {:.1} M{:.1} {:.1} L{:.1} {:.1}" stroke-width="3"/></g>"#,
+        to.id,
+        to.id,
+        x - 7.0,
+        y - 7.0,
+        x + 7.0,
+        y + 7.0,
+        x - 7.0,
+        y + 7.0,
+        x + 7.0,
+        y - 7.0,
+    );
 }
 
 /// A dashed line from each pose to its gesture target, and the target's marker.
@@ -557,8 +634,32 @@ fn target_line(spot: &Spot<'_>) -> Option<LabelLine> {
 
 /// The labels: one per place where poses stand (listing each location there, its stops
 /// and findings), and one per gesture target, each placed where it covers nothing.
-fn labels(svg: &mut String, scene: &Scene<'_>, positions: &[Option<Placed>], bounds: Rect) {
+fn labels(
+    svg: &mut String,
+    scene: &Scene<'_>,
+    frame: &Frame,
+    positions: &[Option<Placed>],
+    bounds: Rect,
+) {
     let mut placer = Placer::new(bounds);
+    // Labels stay off the tour's lines: each line is taken in short pieces (a diagonal's
+    // bounding box would take the whole square it crosses).
+    for (points, _) in drawn_legs(scene, frame, positions)
+        .iter()
+        .take(MAX_LABELLED)
+    {
+        for pair in points.windows(2) {
+            let ((x1, y1), (x2, y2)) = (pair[0], pair[1]);
+            let pieces = ((x2 - x1).hypot(y2 - y1) / 16.0).ceil().clamp(1.0, 1000.0) as usize;
+            for piece in 0..pieces {
+                let at = |k: usize| {
+                    let t = k as f64 / pieces as f64;
+                    (x1 + (x2 - x1) * t, y1 + (y2 - y1) * t)
+                };
+                placer.take(Rect::of_segment(at(piece), at(piece + 1), 3.0));
+            }
+        }
+    }
     let labelled = labelled(scene, positions);
     for &index in &labelled {
         let Some(placed) = positions[index] else {
@@ -768,6 +869,12 @@ fn legend_lines(scene: &Scene<'_>) -> Vec<LabelLine> {
     if undrawn > 0 {
         lines.push(LabelLine::plain(
             format!("{undrawn} locations not drawn: a pose is not a finite number"),
+            FINDING_COLOUR,
+        ));
+    }
+    if scene.legs.iter().any(|leg| leg.path.is_none()) {
+        lines.push(LabelLine::plain(
+            "Dashed red, crossed: a leg the robot cannot drive".to_string(),
             FINDING_COLOUR,
         ));
     }

@@ -8,7 +8,10 @@ use std::path::PathBuf;
 use lsp_types::{TextDocumentContentChangeEvent, Uri};
 
 use super::position::{Encoding, LineIndex, Positions};
-use crate::check::{check_with, Checked};
+use std::rc::Rc;
+
+use crate::check::{check_on_map, Checked};
+use crate::map::LabMap;
 use crate::model::build::Options;
 use crate::reader::{self, Loaded};
 use crate::rules::selection::RuleSet;
@@ -140,14 +143,18 @@ impl Document {
         }
     }
 
-    /// Checks this version (with `how`: how to read this file, and the rules `ekb.toml`
-    /// chooses for it), unless it was checked already.
-    pub fn check(&mut self, name: &str, how: impl FnOnce() -> (Options, RuleSet)) {
+    /// Checks this version (with `how`: how to read this file, the rules `ekb.toml`
+    /// chooses for it, and the lab map it names, if any), unless it was checked already.
+    pub fn check(
+        &mut self,
+        name: &str,
+        how: impl FnOnce() -> (Options, RuleSet, Option<Rc<LabMap>>),
+    ) {
         if let Content::Text(text) = &mut self.content {
             let source = SourceFile::from_text(name, std::mem::take(text));
-            let (options, rules) = how();
+            let (options, rules, map) = how();
             self.content = Content::Checked(Analysis::new(source, |source| Analysed {
-                checked: check_with(source, &options, &rules),
+                checked: check_on_map(source, &options, &rules, map.as_deref()),
                 options,
                 loaded: OnceCell::new(),
             }));
@@ -247,7 +254,7 @@ mod tests {
             document.with_analysed(|analysed| analysed.checked.diagnostics.len())
         };
         assert_eq!(findings(&document), None);
-        document.check("t", Default::default);
+        document.check("t", || (Options::default(), RuleSet::default(), None));
         let findings = findings(&document).unwrap();
         assert!(findings > 0);
         let mut asked = false;
@@ -258,7 +265,7 @@ mod tests {
         assert!(!asked, "checked once per version");
         document.change(2, vec![change(Some(((0, 0), (0, 0))), "#")], Encoding::Utf8);
         assert_eq!(document.text(), "#robotLocation 1 1 2 3\n");
-        document.check("t", Default::default);
+        document.check("t", || (Options::default(), RuleSet::default(), None));
         let locations = document.with_analysed(|analysed| analysed.checked.kb.locations().len());
         assert_eq!(locations, Some(0));
     }

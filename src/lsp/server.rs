@@ -348,11 +348,11 @@ impl Server {
         let mut settings = None;
         document.check(&name, || {
             let options = workspace.options(path.as_deref());
-            let fallback = options
+            let (options_in_force, rules) = options
                 .as_ref()
                 .map_or_else(|_| workspace.fallback_options(), Clone::clone);
             settings = Some(options.map(|_| ()));
-            fallback
+            (options_in_force, rules, workspace.map(path.as_deref()))
         });
         // A broken `ekb.toml` is told once, not at every key typed.
         match settings {

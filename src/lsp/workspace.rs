@@ -1,12 +1,16 @@
 //! How the server reads each document: the robot's configuration and `ekb.toml`, found as
 //! the command line finds them, with the workspace's folder in place of the current one.
 
+use std::cell::RefCell;
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+use std::rc::Rc;
 
 use lsp_types::{InitializeParams, Uri};
 
 use crate::config::{self, Config};
 use crate::context::Context;
+use crate::map::LabMap;
 use crate::mission::culture::{self, ValueTypes};
 use crate::mission::setup::{self, MissionPaths};
 use crate::model::build::Options;
@@ -17,6 +21,8 @@ use crate::source::SourceFile;
 #[derive(Debug)]
 pub struct Workspace {
     context: Context,
+    /// The lab maps `[map] config` names, read once each (`None`: it cannot be read).
+    maps: RefCell<HashMap<PathBuf, Option<Rc<LabMap>>>>,
 }
 
 impl Workspace {
@@ -43,11 +49,27 @@ impl Workspace {
         problems.extend(config.warnings.iter().cloned());
         let mut context = Context::with_config(config);
         context.reader = cli.reader;
-        (Workspace { context }, problems)
+        let maps = RefCell::default();
+        (Workspace { context, maps }, problems)
     }
 
     /// How to read the document at `path` (`None`: not a file; the current folder's
     /// `ekb.toml` applies), or why the settings cannot be used.
+    /// The lab map the document's `ekb.toml` names (`[map] config`), for the map rules;
+    /// `None` without one, or when it cannot be read (`ekb check` tells why).
+    pub fn map(&self, path: Option<&Path>) -> Option<Rc<LabMap>> {
+        let settings = self
+            .context
+            .settings_for(path.unwrap_or(Path::new("-")))
+            .ok()?;
+        let config = settings.map.config?.value;
+        self.maps
+            .borrow_mut()
+            .entry(config.clone())
+            .or_insert_with(|| LabMap::from_config(&config).ok().map(Rc::new))
+            .clone()
+    }
+
     pub fn options(&self, path: Option<&Path>) -> Result<(Options, RuleSet), String> {
         let path = path.unwrap_or(Path::new("-"));
         let mut options = self

@@ -565,3 +565,43 @@ fn broken_settings_are_told_once_and_the_file_is_checked_all_the_same() {
     );
     assert!(client.shut_down().success());
 }
+
+#[test]
+fn the_map_of_ekb_toml_brings_the_map_rules_a_leg_the_robot_cannot_drive_among_them() {
+    let mut client = Client::start();
+    client.initialize(json!({}));
+    let folder = client.folder.path().to_path_buf();
+    let (kb, text) = fixture_in(&folder, "rules/tour-leg-unreachable/bad.dat");
+    let map = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/map/mapGenerationConfiguration.ini");
+    let codes_of = |client: &mut Client| {
+        client.open(&uri(&kb), &text);
+        let diagnostics = client.diagnostics(&uri(&kb));
+        codes(&diagnostics)
+            .iter()
+            .filter(|(_, code)| *code == "tour-leg-unreachable")
+            .map(|(line, _)| *line)
+            .collect::<Vec<_>>()
+    };
+    // Without a map, no map rule.
+    assert_eq!(codes_of(&mut client), Vec::<u64>::new());
+    drop(client);
+    let mut client = Client::start();
+    client.initialize(json!({}));
+    let folder = client.folder.path().to_path_buf();
+    let (kb2, _) = fixture_in(&folder, "rules/tour-leg-unreachable/bad.dat");
+    std::fs::write(
+        folder.join("ekb.toml"),
+        format!("[map]\nconfig = \"{}\"\n", map.display()),
+    )
+    .unwrap();
+    client.open(&uri(&kb2), &text);
+    let diagnostics = client.diagnostics(&uri(&kb2));
+    let lines: Vec<u64> = codes(&diagnostics)
+        .iter()
+        .filter(|(_, code)| *code == "tour-leg-unreachable")
+        .map(|(line, _)| *line)
+        .collect();
+    // Both stops of the tour line (LSP lines count from 0).
+    assert_eq!(lines, [36, 36]);
+}

@@ -7,12 +7,14 @@
 
 mod files;
 mod occupancy;
+pub mod space;
 
 use std::fmt;
 use std::path::{Path, PathBuf};
 
 use files::{Located, MapFile};
 pub use occupancy::{Occupancy, Pixel, OCCUPIED_BELOW};
+pub use space::ConfigurationSpace;
 
 /// The robot's radius when only an image is given (the lab's `robotRadius`).
 pub const DEFAULT_ROBOT_RADIUS: f64 = 0.3;
@@ -45,23 +47,43 @@ impl MapError {
     }
 }
 
-/// An obstacle rectangle of `obstacles.dat`, in metres.
+/// An obstacle of `obstacles.dat`, in metres: a rectangle (`OBSTACLE` or `RECTANGLE cx cy
+/// width height`) or a disc (`CIRCLE cx cy r`, its width and height the diameter).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Obstacle {
     pub centre_x: f64,
     pub centre_y: f64,
     pub width: f64,
     pub height: f64,
+    pub shape: Shape,
     /// `obstacles.dat:3`: where it is written.
     pub place: String,
 }
 
+/// The shape of an [`Obstacle`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shape {
+    Rectangle,
+    Circle,
+}
+
 impl Obstacle {
-    /// How far (`x`, `y`) is from the rectangle (0 inside it).
+    /// How far (`x`, `y`) is from the obstacle (0 inside it).
     pub fn distance(&self, x: f64, y: f64) -> f64 {
-        let dx = ((x - self.centre_x).abs() - self.width / 2.0).max(0.0);
-        let dy = ((y - self.centre_y).abs() - self.height / 2.0).max(0.0);
-        dx.hypot(dy)
+        let (dx, dy) = ((x - self.centre_x).abs(), (y - self.centre_y).abs());
+        match self.shape {
+            Shape::Rectangle => {
+                let dx = (dx - self.width / 2.0).max(0.0);
+                let dy = (dy - self.height / 2.0).max(0.0);
+                dx.hypot(dy)
+            }
+            Shape::Circle => (dx.hypot(dy) - self.width / 2.0).max(0.0),
+        }
+    }
+
+    /// Half its width and half its height.
+    pub fn half_extent(&self) -> (f64, f64) {
+        (self.width / 2.0, self.height / 2.0)
     }
 }
 
@@ -77,6 +99,11 @@ pub struct LabMap {
     pub robot_radius: f64,
     pub obstacles: Vec<Obstacle>,
     pub image: Option<Occupancy>,
+    /// Where the robot's centre can be and where it can drive (SPEC §10.1).
+    pub space: ConfigurationSpace,
+    /// What a person should know of the map: the robot's configuration space image
+    /// disagreeing with the obstacles, say.
+    pub warnings: Vec<String>,
 }
 
 /// What is within the robot's radius of a pose.
@@ -117,6 +144,14 @@ impl LabMap {
             }
             None => Vec::new(),
         };
+        let space_image = match input.value("configurationSpaceMapFile") {
+            // The robot plans on it where it exists.
+            Some(name) if input.resolve(name).exists() => Some(Occupancy::read(
+                &input.resolve(name),
+                Some(&input.place(name)),
+            )?),
+            _ => None,
+        };
         let image = match input.value("environmentMapFile") {
             Some(name) => {
                 let image = Occupancy::read(&input.resolve(name), Some(&input.place(name)))?;
@@ -130,6 +165,23 @@ impl LabMap {
             }
             None => None,
         };
+        let from_obstacles =
+            || ConfigurationSpace::from_obstacles(width, height, &obstacles, robot_radius);
+        let (space, warnings) = match (&space_image, &image) {
+            (Some(space_image), _) => {
+                let space = ConfigurationSpace::from_image(space_image);
+                let warnings = disagreement(&space, &from_obstacles())
+                    .into_iter()
+                    .collect();
+                (space, warnings)
+            }
+            (None, _) if !obstacles.is_empty() => (from_obstacles(), Vec::new()),
+            (None, Some(image)) => (
+                ConfigurationSpace::from_occupancy(image, robot_radius),
+                Vec::new(),
+            ),
+            (None, None) => (from_obstacles(), Vec::new()),
+        };
         Ok(LabMap {
             source: path.to_path_buf(),
             width,
@@ -137,6 +189,8 @@ impl LabMap {
             robot_radius,
             obstacles,
             image,
+            space,
+            warnings,
         })
     }
 
@@ -150,13 +204,16 @@ impl LabMap {
                 )));
             }
         }
+        let image = Occupancy::read(path, None)?;
         Ok(LabMap {
             source: path.to_path_buf(),
             width,
             height,
             robot_radius: DEFAULT_ROBOT_RADIUS,
             obstacles: Vec::new(),
-            image: Some(Occupancy::read(path, None)?),
+            space: ConfigurationSpace::from_occupancy(&image, DEFAULT_ROBOT_RADIUS),
+            image: Some(image),
+            warnings: Vec::new(),
         })
     }
 
@@ -208,7 +265,28 @@ impl LabMap {
     }
 }
 
-/// Reads `OBSTACLE cx cy width height` lines (metres: centre, size).
+/// What to say when the robot's configuration space image and the one its map generator
+/// would make of the obstacles differ in more than 1% of their pixels: the image was not
+/// made again after the obstacles changed (or the other way round).
+fn disagreement(image: &ConfigurationSpace, obstacles: &ConfigurationSpace) -> Option<String> {
+    let differing = match image.differing_pixels(obstacles) {
+        Some(count) if count * 100 <= image.pixels() => return None,
+        Some(count) => format!("{count} of its {} pixels differ", image.pixels()),
+        None => format!(
+            "it is {} × {} pixels, and the map {} × {}",
+            image.columns, image.rows, obstacles.columns, obstacles.rows
+        ),
+    };
+    Some(format!(
+        "{} is not what the robot's map generator makes of the obstacles ({differing}): the \
+         robot plans on the image, so ekb does too; run its mapGeneration again if the \
+         obstacles are right",
+        image.name()
+    ))
+}
+
+/// Reads the obstacle lines: `OBSTACLE` or `RECTANGLE cx cy width height`, `CIRCLE cx cy r`
+/// (metres: centre, size; the keyword in any case).
 fn read_obstacles(file: &MapFile) -> Result<Vec<Obstacle>, MapError> {
     let name = file
         .path
@@ -217,19 +295,27 @@ fn read_obstacles(file: &MapFile) -> Result<Vec<Obstacle>, MapError> {
     file.lines()
         .map(|words| {
             let keyword = words[0];
-            if keyword.text != "OBSTACLE" {
+            let (shape, numbers) = match keyword.text.to_ascii_uppercase().as_str() {
+                "OBSTACLE" | "RECTANGLE" => (Shape::Rectangle, 4),
+                "CIRCLE" => (Shape::Circle, 3),
+                _ => {
+                    return Err(file.error_at(
+                        keyword,
+                        format!(
+                            "expected `OBSTACLE cx cy width height`, `RECTANGLE cx cy width height` or `CIRCLE cx cy r`, found `{}`",
+                            keyword.text
+                        ),
+                    ))
+                }
+            };
+            if words.len() != numbers + 1 {
+                let what = match shape {
+                    Shape::Rectangle => "an obstacle has 4 numbers (centre x, centre y, width, height in metres)",
+                    Shape::Circle => "a circle has 3 numbers (centre x, centre y, radius in metres)",
+                };
                 return Err(file.error_at(
                     keyword,
-                    format!("expected `OBSTACLE cx cy width height`, found `{}`", keyword.text),
-                ));
-            }
-            if words.len() != 5 {
-                return Err(file.error_at(
-                    keyword,
-                    format!(
-                        "an obstacle has 4 numbers (centre x, centre y, width, height in metres), this one has {}",
-                        words.len() - 1
-                    ),
+                    format!("{what}, this one has {}", words.len() - 1),
                 ));
             }
             let number = |word: Located<'_>, what: &str, positive: bool| -> Result<f64, MapError> {
@@ -240,11 +326,22 @@ fn read_obstacles(file: &MapFile) -> Result<Vec<Obstacle>, MapError> {
                     file.error_at(word, format!("{what} `{}` is not a number", word.text))
                 })
             };
+            let (width, height) = match shape {
+                Shape::Rectangle => (
+                    number(words[3], "the width", true)?,
+                    number(words[4], "the height", true)?,
+                ),
+                Shape::Circle => {
+                    let diameter = 2.0 * number(words[3], "the radius", true)?;
+                    (diameter, diameter)
+                }
+            };
             Ok(Obstacle {
                 centre_x: number(words[1], "the centre's x", false)?,
                 centre_y: number(words[2], "the centre's y", false)?,
-                width: number(words[3], "the width", true)?,
-                height: number(words[4], "the height", true)?,
+                width,
+                height,
+                shape,
                 place: format!("{name}:{}", keyword.line),
             })
         })

@@ -100,6 +100,7 @@ pub static ALL: &[&Rule] = &[
     &map::pose_outside_map::POSE_OUTSIDE_MAP,
     &map::pose_in_obstacle::POSE_IN_OBSTACLE,
     &map::target_outside_map::TARGET_OUTSIDE_MAP,
+    &map::tour_leg_unreachable::TOUR_LEG_UNREACHABLE,
     &mission::mission_invalid_xml::MISSION_INVALID_XML,
     &mission::mission_unknown_node::MISSION_UNKNOWN_NODE,
     &mission::mission_bad_children::MISSION_BAD_CHILDREN,

@@ -4,6 +4,9 @@
 pub mod pose_in_obstacle;
 pub mod pose_outside_map;
 pub mod target_outside_map;
+pub mod tour_leg_unreachable;
+
+use std::collections::HashMap;
 
 use crate::diagnostic::Diagnostics;
 use crate::map::LabMap;
@@ -35,16 +38,34 @@ impl Loaded3 {
 
 /// Runs the map rules on every location of `kb`, as `loaded` holds it.
 pub fn check(kb: &KnowledgeBase<'_>, loaded: &Loaded<'_>, map: &LabMap, out: &mut Diagnostics) {
+    // Each pose, and whether a rule of its own flags it.
+    let mut poses: HashMap<u32, (Loaded3, bool)> = HashMap::new();
     for location in kb.locations() {
         if let Some(pose) = loaded3(loaded, location, Key::RobotLocationPose) {
-            if !pose_outside_map::check(&pose, map, out) {
-                pose_in_obstacle::check(&pose, map, out);
-            }
+            let flagged = pose_outside_map::check(&pose, map, out)
+                || pose_in_obstacle::check(&pose, map, out);
+            poses.insert(location.id, (pose, flagged));
         }
         if let Some(target) = loaded3(loaded, location, Key::GestureTarget) {
             target_outside_map::check(&target, map, out);
         }
     }
+    // The tour's stops with a pose (the tour's rules tell of the others).
+    let stops: Vec<tour_leg_unreachable::Stop<'_>> = kb
+        .tour
+        .iter()
+        .flat_map(|tour| tour.stops())
+        .filter_map(|stop| {
+            let (pose, flagged) = poses.get(&stop.value)?;
+            Some(tour_leg_unreachable::Stop {
+                pose,
+                description: kb.location(stop.value)?.description().map(|d| d.value),
+                at: stop.span,
+                flagged: *flagged,
+            })
+        })
+        .collect();
+    tour_leg_unreachable::check(&stops, map, out);
 }
 
 /// The pose or gesture target (`key`) of `location` as `loaded` holds it, if a line set

@@ -1,7 +1,7 @@
 use super::Loaded3;
 use crate::diagnostic::Diagnostic;
 use crate::diagnostic::Diagnostics;
-use crate::map::{Blocker, LabMap};
+use crate::map::{Blocker, LabMap, Shape};
 use crate::rules::declare_rule;
 
 declare_rule! {
@@ -29,16 +29,23 @@ declare_rule! {
     };
 }
 
-pub fn check(pose: &Loaded3, map: &LabMap, out: &mut Diagnostics) {
+/// Checks `pose`; whether it is in an obstacle.
+pub fn check(pose: &Loaded3, map: &LabMap, out: &mut Diagnostics) -> bool {
     let Some(blocker) = map.blocker(pose.x, pose.y) else {
-        return;
+        return false;
     };
     out.push_with(&POSE_IN_OBSTACLE, || {
         let what = match blocker {
-            Blocker::Obstacle(obstacle) => format!(
-                "the obstacle of {} ({} × {} m at {:?}, {:?})",
-                obstacle.place, obstacle.width, obstacle.height, obstacle.centre_x, obstacle.centre_y
-            ),
+            Blocker::Obstacle(obstacle) => {
+                let shape = match obstacle.shape {
+                    Shape::Rectangle => format!("{} × {} m", obstacle.width, obstacle.height),
+                    Shape::Circle => format!("a disc of radius {} m", obstacle.width / 2.0),
+                };
+                format!(
+                    "the obstacle of {} ({shape} at {:?}, {:?})",
+                    obstacle.place, obstacle.centre_x, obstacle.centre_y
+                )
+            }
             Blocker::Pixel { x, y } => format!(
                 "an occupied pixel of {} at ({x:.2}, {y:.2})",
                 map.image.as_ref().map_or_else(String::new, |image| image
@@ -61,4 +68,5 @@ pub fn check(pose: &Loaded3, map: &LabMap, out: &mut Diagnostics) {
         .at_location(Some(pose.id))
         .with_help("move the pose into free floor, at least the robot's radius from walls and furniture; `ekb map` draws it on the map")
     });
+    true
 }

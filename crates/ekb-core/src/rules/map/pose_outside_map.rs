@@ -6,14 +6,16 @@ use crate::rules::declare_rule;
 
 declare_rule! {
     /// ## What it does
-    /// Flags a pose, as the robot's reader loads it, that is off the lab map: x outside
-    /// 0..=`mapWidth` or y outside 0..=`mapHeight` (the origin is the map's bottom-left
-    /// corner). Runs when a map is given (`--map-config`, `--map-image`).
+    /// Flags a pose, as the robot's reader loads it, that is off the lab map once rounded
+    /// to 0.1 m as the robot's navigation rounds a goal: x outside 0..=`mapWidth` or y
+    /// outside 0..=`mapHeight` (the origin is the map's bottom-left corner). Runs when a
+    /// map is given (`--map-config`, `--map-image`).
     ///
     /// ## Why it matters
-    /// The robot's navigation refuses a goal outside its map: the robot stays where it is
-    /// and the tour stops at this location. Usually x and y are swapped, a sign is lost, or
-    /// the pose was measured in another frame.
+    /// The robot's navigation refuses a goal outside its map: `Navigate` fails, the
+    /// mission's fallback swallows it, and the robot gives this location's talk where it
+    /// stands. Usually x and y are swapped, a sign is lost, or the pose was measured in
+    /// another frame.
     ///
     /// ## Example
     /// ```text
@@ -30,7 +32,9 @@ declare_rule! {
 
 /// Reports `pose` if it is off `map`; returns whether it is.
 pub fn check(pose: &Loaded3, map: &LabMap, out: &mut Diagnostics) -> bool {
-    if map.contains(pose.x, pose.y) {
+    // The robot's navigation rounds a goal to 0.1 m before it looks at it.
+    let tenth = |value: f64| (value * 10.0).round() / 10.0;
+    if map.contains(tenth(pose.x), tenth(pose.y)) {
         return false;
     }
     out.push_with(&POSE_OUTSIDE_MAP, || {
@@ -38,7 +42,7 @@ pub fn check(pose: &Loaded3, map: &LabMap, out: &mut Diagnostics) -> bool {
             &POSE_OUTSIDE_MAP,
             pose.span,
             format!(
-                "location {} stands at {}{}, off the map ({} × {} m): the robot's navigation refuses the goal and the tour stops here",
+                "location {} stands at {}{}, off the map ({} × {} m): the robot's navigation refuses the goal, and the tour goes on with the robot giving this talk where it stands",
                 pose.id,
                 pose.at(),
                 pose.differs,
