@@ -21,6 +21,7 @@ pub mod rules;
 pub mod set;
 pub mod settings;
 pub mod show;
+pub mod timeline;
 pub mod tour;
 pub mod translations;
 

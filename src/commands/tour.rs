@@ -7,10 +7,12 @@ use std::path::PathBuf;
 
 use serde::Serialize;
 
-use super::{CommandResult, Context, Exit};
+use super::map::MapArgs;
+use super::{timeline, CommandError, CommandResult, Context, Exit};
 use crate::check::{check, Checked};
 use crate::model::{Arm, Key, Language, Location, Phase, Point, Pose};
 use crate::present::field::{Field, FieldValue};
+use crate::present::language::Languages;
 use crate::present::{self, language, robot, Gesture, Lines, Message};
 use crate::reader;
 use crate::reader::view::{self, Held};
@@ -25,13 +27,21 @@ pub struct Args {
     #[arg(value_name = "FILE")]
     pub file: Option<PathBuf>,
 
-    /// The language the robot speaks: english, isizulu (zulu), kinyarwanda, or an ISO 639 code: en/eng, zu/zul, rw/kin (any case)
-    #[arg(long, value_name = "L", ignore_case = true, value_parser = language::parser(), default_value = "english")]
-    pub lang: Language,
+    /// The language the robot speaks: english, isizulu (zulu), kinyarwanda, or an ISO 639 code: en/eng, zu/zul, rw/kin (any case); with --timeline also `all`, side by side
+    #[arg(long, value_name = "L", ignore_case = true, value_parser = language::parser_or_all(), default_value = "english")]
+    pub lang: Languages,
+
+    /// The tour in time: each leg driven (metres, seconds, the turn; with the map, as the
+    /// robot's planner drives it) and the seconds each message takes to say, and the totals
+    #[arg(long)]
+    pub timeline: bool,
 
     /// Output format
     #[arg(long, value_enum, default_value_t = TourFormat::Text)]
     pub format: TourFormat,
+
+    #[command(flatten)]
+    pub map: MapArgs,
 }
 
 /// `ekb tour --format`.
@@ -44,6 +54,16 @@ pub enum TourFormat {
 }
 
 pub fn run(args: &Args, context: &Context) -> CommandResult {
+    if args.timeline {
+        return timeline::run(args, context);
+    }
+    let Languages::One(lang) = args.lang else {
+        return Err(CommandError::Failed(
+            "`--lang all` shows the languages side by side in the timeline: give --timeline, \
+             or one language"
+                .to_string(),
+        ));
+    };
     let path = context.input(args.file.as_deref())?;
     let options = context.read_options(&path)?;
     let source = context.read(&path)?;
@@ -65,8 +85,8 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
         TourFormat::Json => usize::MAX,
     };
     let robot = context.settings_for(&path)?.robot.profile();
-    let mut tour = Tour::new(&checked, args.lang, shown);
-    tour.spoken = robot.speaks(args.lang);
+    let mut tour = Tour::new(&checked, lang, shown);
+    tour.spoken = robot.speaks(lang);
     let mut stdout = std::io::stdout().lock();
     match args.format {
         TourFormat::Text => {
@@ -85,7 +105,7 @@ const MAX_STOPS_SHOWN: usize = 1000;
 /// The tour as the robot will perform it in one language.
 #[derive(Serialize)]
 struct Tour<'a> {
-    #[serde(serialize_with = "serialize_language")]
+    #[serde(serialize_with = "language::serialize_name")]
     language: Language,
     /// Whether the robot profile (`[robot] speaks`) speaks the language: if not, the robot
     /// says nothing at any stop.
@@ -170,10 +190,6 @@ struct Said<'a> {
     /// Where the robot says something else than the file: what, shown.
     #[serde(skip)]
     differs: Option<String>,
-}
-
-fn serialize_language<S: serde::Serializer>(language: &Language, s: S) -> Result<S::Ok, S::Error> {
-    s.serialize_str(language.name())
 }
 
 impl<'a> Tour<'a> {

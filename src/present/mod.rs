@@ -9,6 +9,7 @@ pub mod field;
 pub mod language;
 pub mod robot;
 pub mod table;
+pub mod timeline;
 pub mod wrap;
 
 use std::borrow::Cow;
