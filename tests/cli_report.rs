@@ -534,3 +534,34 @@ fn a_language_the_robot_does_not_speak_is_marked_not_spoken_on_its_column() {
     assert!(!page.contains("not spoken"));
     assert!(page.contains("<th scope=\"col\" lang=\"zu\">isiZulu</th>"));
 }
+
+#[test]
+fn the_page_charts_the_tour_in_time_for_each_language() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, page) = report(
+        dir.path(),
+        "tests/fixtures/corpus/upstream-2025-06-environmentKnowledgeBaseInput.dat",
+        &[
+            "--map-config",
+            "tests/fixtures/map/mapGenerationConfiguration.ini",
+        ],
+    );
+    let section = &page[page.find("<section id=\"time\"").expect("the section")..];
+    let section = &section[..section.find("</section>").unwrap()];
+    for language in ["English", "isiZulu", "Kinyarwanda"] {
+        assert!(
+            section.contains(&format!("<g data-language=\"{language}\">")),
+            "{language}"
+        );
+    }
+    // isiZulu is silent: its bar is the driving alone, and the table says why.
+    assert!(section.contains("35 s (silent)"), "{section}");
+    assert!(section.contains("silent: the robot does not speak it"));
+    assert!(section.contains("each leg as the robot's planner drives it on the map"));
+    // Each segment says what it is.
+    assert!(
+        section.contains("<title>Stop 2, location 4: driving, 13 s</title>"),
+        "{section}"
+    );
+    assert!(!section.contains("cannot drive there"));
+}

@@ -15,6 +15,7 @@ use crate::draw::svg::{self, MapImage};
 use crate::draw::Scene;
 use crate::map::LabMap;
 use crate::model::{Language, Location, Phase};
+use crate::present::timeline::Timeline;
 use crate::present::{self, Gesture, Lines};
 use crate::reader::Loaded;
 use crate::render::markup::markup;
@@ -23,6 +24,8 @@ use crate::robot::speech::{self, RobotProfile};
 use crate::rules::Rule;
 use crate::translations::import::StaleTranslation;
 use crate::translations::{Catalog, State, Status, Unit};
+
+mod timeline;
 
 const STYLE: &str = include_str!("report.css");
 
@@ -70,7 +73,7 @@ pub fn page(
 <header>
 <h1>Review of <span class="file">{file}</span></h1>
 <p class="summary">{summary}, checked against the <strong>{reader}</strong> reader (what the robot loads).</p>
-<nav aria-label="Contents"><ul><li><a href="#map">The tour on the map</a></li><li><a href="#tour">The tour, stop by stop</a></li><li><a href="#translations">Translation status</a></li><li><a href="#findings">Findings</a></li></ul></nav>
+<nav aria-label="Contents"><ul><li><a href="#map">The tour on the map</a></li><li><a href="#time">The tour in time</a></li><li><a href="#tour">The tour, stop by stop</a></li><li><a href="#translations">Translation status</a></li><li><a href="#findings">Findings</a></li></ul></nav>
 </header>
 <main>
 "##,
@@ -79,6 +82,11 @@ pub fn page(
         reader = checked.reader.name(),
     );
     map_section(&mut html, checked, loaded, map);
+    let timelines: Vec<Timeline> = Language::ALL
+        .iter()
+        .map(|&language| Timeline::new(checked, loaded, map, robot, language))
+        .collect();
+    timeline::section(&mut html, &timelines);
     let catalog = Catalog::new(checked);
     let units: Units = catalog
         .units
