@@ -648,7 +648,7 @@ mod any_input {
             };
             outline::outline(&mission, files[0].text(), &phrases);
             let robot = ekb::robot::speech::RobotProfile::default();
-            let world = walk::World { kb: &kb.kb, phrases, asr_enabled: true, robot: &robot };
+            let world = walk::World { kb: &kb.kb, phrases, asr_enabled: true, robot: &robot, map: None };
             let walked = walk::walk(&mission, files[0].text(), &world);
             prop_assert!(walked.ticks <= walk::MAX_TICKS + 1);
         }

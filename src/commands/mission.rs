@@ -4,6 +4,7 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
+use super::map::MapArgs;
 use super::{CommandError, CommandResult, Context, Exit};
 use crate::mission::check::{check_together, read_mission, MissionSources};
 use crate::mission::culture::{CultureKnowledgeBase, Held, PhraseBook, ValueTypes};
@@ -81,6 +82,9 @@ pub struct ShowArgs {
     /// Output format
     #[arg(long, value_enum, default_value_t = TextOrJson::Text)]
     pub format: TextOrJson,
+    /// The lab map, for `walk`: a `Navigate` to a stop the robot cannot drive to fails
+    #[command(flatten)]
+    pub map: MapArgs,
 }
 
 /// `--format` of `tree` and `walk`.
@@ -138,6 +142,8 @@ struct Read {
     reader: Option<Reader>,
     /// The robot profile (`[robot]`) of the same settings.
     robot: RobotProfile,
+    /// The lab map (`[map] config`) of the same settings, resolved, if any.
+    map_config: Option<PathBuf>,
 }
 
 impl Read {
@@ -184,10 +190,11 @@ impl Read {
             .as_deref()
             .or(paths.culture_kb.as_deref())
             .unwrap_or(Path::new("-"));
-        let robot = context.settings_for(settings_of)?.robot.profile();
+        let settings = context.settings_for(settings_of)?;
         Ok(Read {
             reader,
-            robot,
+            robot: settings.robot.profile(),
+            map_config: settings.map.config.map(|config| config.value),
             mission: read(&paths.mission, &files.mission, "--mission")?,
             culture_kb: read(&paths.culture_kb, &files.culture_kb, "--culture-kb")?,
             culture_types: read(
@@ -326,11 +333,13 @@ fn run_walk(args: &ShowArgs, context: &Context) -> CommandResult {
             );
         }
     }
+    let map = args.map.load(read.map_config.clone())?;
     let world = walk::World {
         kb: &kb.kb,
         phrases,
         asr_enabled: paths.asr_enabled.unwrap_or(true),
         robot: &read.robot,
+        map: map.as_ref(),
     };
     let text = read.mission.as_ref().map_or("", |m| m.text());
     let walked = walk::walk(&mission, text, &world);

@@ -700,3 +700,75 @@ fn the_walk_stops_at_a_call_into_an_included_file() {
         walked.stdout
     );
 }
+
+#[test]
+fn a_navigate_the_map_does_not_join_fails_and_the_walk_goes_on_through_its_fallback() {
+    // The lab map of tests/fixtures/map with a square wall round the Roomba (location 4 at
+    // 2.3, 5.1).
+    let map = tempfile::tempdir().unwrap();
+    let here = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for file in [
+        "mapGenerationConfiguration.ini",
+        "mapGenerationInput.dat",
+        "obstacles.dat",
+        "environmentMap.png",
+    ] {
+        std::fs::copy(
+            here.join("tests/fixtures/map").join(file),
+            map.path().join(file),
+        )
+        .unwrap();
+    }
+    let obstacles = std::fs::read_to_string(map.path().join("obstacles.dat")).unwrap()
+        + "RECTANGLE 2.3 5.55 1.0 0.1\nRECTANGLE 2.3 4.65 1.0 0.1\nRECTANGLE 1.85 5.1 0.1 1.0\nRECTANGLE 2.75 5.1 0.1 1.0\n";
+    std::fs::write(map.path().join("obstacles.dat"), obstacles).unwrap();
+    let config = map.path().join("mapGenerationConfiguration.ini");
+    let args = [
+        "mission",
+        "walk",
+        "--config-dir",
+        CONFIG,
+        "--lang",
+        "en",
+        "--map-config",
+        config.to_str().unwrap(),
+    ];
+    let walked = run(&args);
+    assert_eq!(walked.code, 0, "{}", walked.stderr);
+    assert!(
+        walked.stdout.contains(
+            "12. cannot drive to location 4 \"Roomba\" at (2.3, 5.1), facing 270° (no path joins the two: walls close one off from the other): Navigate fails, and the robot stays where it stands\n13. say \"This is the Roomba\"\n"
+        ),
+        "{}",
+        walked.stdout
+    );
+    // The next leg starts from location 1, where the robot still stands, and is driven.
+    assert!(
+        walked.stdout.contains("16. go to location 3"),
+        "{}",
+        walked.stdout
+    );
+    let json_args: Vec<&str> = args.iter().copied().chain(["--format", "json"]).collect();
+    let walk = json(&run(&json_args));
+    let unreachable: Vec<u64> = walk["steps"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|s| s["action"] == "go-to" && s["unreachable"].is_string())
+        .map(|s| s["place"]["location"].as_u64().unwrap())
+        .collect();
+    assert_eq!(unreachable, [4]);
+    assert_eq!(walk["outcome"]["status"], "completed");
+    // On the lab as it is, every Navigate succeeds.
+    let lab = [
+        "mission",
+        "walk",
+        "--config-dir",
+        CONFIG,
+        "--lang",
+        "en",
+        "--map-config",
+        "tests/fixtures/map/mapGenerationConfiguration.ini",
+    ];
+    assert!(!run(&lab).stdout.contains("cannot drive"));
+}

@@ -16,6 +16,7 @@ use super::culture::{Held, PhraseBook};
 use super::ports;
 use super::tree::{self, Mission};
 use super::xml::Element;
+use crate::map::LabMap;
 use crate::model::{Arm, KnowledgeBase, Language, Phase};
 use crate::robot::speech::RobotProfile;
 use crate::source::LineIndex;
@@ -37,6 +38,9 @@ pub struct World<'a> {
     pub asr_enabled: bool,
     /// The robot profile: the languages its text-to-speech speaks.
     pub robot: &'a RobotProfile,
+    /// The lab map, if given: a `Navigate` to a stop its configuration space does not join
+    /// to where the robot stands fails.
+    pub map: Option<&'a LabMap>,
 }
 
 /// A stop of the tour, as a step names it.
@@ -80,7 +84,13 @@ pub enum Step {
     /// knows the yes-words of the mission's language.
     Listen { understood: bool },
     /// `Navigate`.
-    GoTo { place: Option<Place>, home: bool },
+    GoTo {
+        place: Option<Place>,
+        home: bool,
+        /// Why the robot cannot drive there (the map says): `Navigate` fails.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        unreachable: Option<String>,
+    },
     /// `PerformDeicticGesture`.
     Point {
         location: u32,
@@ -142,6 +152,7 @@ pub fn walk(mission: &Mission, text: &str, world: &World<'_>) -> Walk {
         ticks: 0,
         last_phrase: None,
         operator_asked: false,
+        standing: None,
     };
     let outcome = match mission.main_tree() {
         None => Outcome::Stopped {
@@ -228,6 +239,8 @@ struct Walker<'w, 'a> {
     /// What the robot last looked up in the culture knowledge base.
     last_phrase: Option<String>,
     operator_asked: bool,
+    /// Where the robot stands, once `SetRobotPose` put it somewhere (metres).
+    standing: Option<(f64, f64)>,
 }
 
 impl Walker<'_, '_> {
@@ -386,9 +399,9 @@ impl Walker<'_, '_> {
                 Status::Success
             }
             "SetRobotPose" => {
-                self.steps.push(Step::SetPose {
-                    place: stops.first().and_then(|&id| self.place(id)),
-                });
+                let place = stops.first().and_then(|&id| self.place(id));
+                self.standing = place.as_ref().map(|place| (place.x, place.y));
+                self.steps.push(Step::SetPose { place });
                 Status::Success
             }
             "RetrieveListOfExhibits" => {
@@ -417,13 +430,7 @@ impl Walker<'_, '_> {
                 Status::Success
             }
             "Navigate" => match self.board.destination {
-                Some((location, home)) => {
-                    self.steps.push(Step::GoTo {
-                        place: self.place(location),
-                        home,
-                    });
-                    Status::Success
-                }
+                Some((location, home)) => self.navigate(location, home),
                 None => Status::Failure,
             },
             "DescribeExhibitSpeech" => self.describe_exhibit(name),
@@ -487,6 +494,33 @@ impl Walker<'_, '_> {
         if let Some(milliseconds) = milliseconds {
             self.steps.push(Step::Wait { milliseconds });
         }
+    }
+
+    /// `Navigate` to `location`: it fails where the map joins no path from where the robot
+    /// stands, and the robot stays there (the mission's fallback goes on).
+    fn navigate(&mut self, location: u32, home: bool) -> Status {
+        let place = self.place(location);
+        let unreachable = match (self.world.map, self.standing, &place) {
+            (Some(map), Some(from), Some(goal)) => map
+                .space
+                .reach(from, (goal.x, goal.y))
+                .err()
+                .map(|why| why.reason().to_string()),
+            _ => None,
+        };
+        let reached = unreachable.is_none();
+        if reached {
+            self.standing = place
+                .as_ref()
+                .map(|goal| (goal.x, goal.y))
+                .or(self.standing);
+        }
+        self.steps.push(Step::GoTo {
+            place,
+            home,
+            unreachable,
+        });
+        Status::of(reached)
     }
 
     fn place(&self, id: u32) -> Option<Place> {
@@ -708,13 +742,22 @@ fn describe(step: &Step) -> String {
                                                no answer: the robot knows no yes-word in this \
                                                language"
             .to_string(),
-        Step::GoTo { place, home } => format!(
-            "go {}to {}",
-            if *home { "home " } else { "" },
-            place
+        Step::GoTo {
+            place,
+            home,
+            unreachable,
+        } => {
+            let place = place
                 .as_ref()
-                .map_or("an unknown location".into(), describe_place)
-        ),
+                .map_or("an unknown location".into(), describe_place);
+            let home = if *home { "home " } else { "" };
+            match unreachable {
+                None => format!("go {home}to {place}"),
+                Some(why) => format!(
+                    "cannot drive {home}to {place} ({why}): Navigate fails, and the robot stays where it stands"
+                ),
+            }
+        }
         Step::Point { x, y, z, arm, .. } => format!(
             "point {}at ({}, {}, {})",
             arm.map(|arm| format!("with the {arm} arm "))
