@@ -115,7 +115,7 @@ What \fBekb fix\fR would change, without writing; \fBekb fix FILE\fR then fixes 
 One rule: what it does, why it matters, an example.
 .TP
 .B ekb tour \-\-lang rw FILE
-The tour as the robot says it, in Kinyarwanda.
+The tour as the robot says it, in Kinyarwanda; \fBekb tour \-\-timeline \-\-lang all FILE\fR how long each leg and each message takes, in each language.
 .TP
 .B ekb export \-\-format po \-\-lang zu \-o zu.po FILE
 A PO file for translators; \fBekb import \-\-po zu.po FILE\fR brings their isiZulu back, changing only those lines.
