@@ -1164,3 +1164,34 @@ fn circles_and_rectangles_are_obstacles_in_any_case() {
         run.stderr
     );
 }
+
+#[test]
+fn a_pose_is_judged_where_the_robots_navigation_rounds_it() {
+    // 1.13 m from the west wall's 0.8 m is clear of the robot's 0.3 m radius; rounded to
+    // 1.1 m, as the navigation rounds a goal, it is not. 6.84 m is on the map, rounded.
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("kb.dat");
+    let text =
+        std::fs::read_to_string(root().join("tests/fixtures/rules/tour-leg-unreachable/good.dat"))
+            .unwrap()
+            .replace(
+                "robotLocationPose             3 1.2 1.675 0",
+                "robotLocationPose             3 1.13 1.675 0",
+            );
+    std::fs::write(&file, &text).unwrap();
+    let run = ekb(&[
+        "check",
+        file.to_str().unwrap(),
+        "--format",
+        "concise",
+        "--map-config",
+        LAB_MAP,
+    ]);
+    let stdout = String::from_utf8(run.stdout).unwrap();
+    assert!(
+        stdout.contains("error[pose-in-obstacle] location 3 stands at (1.13, 1.675), which the robot's navigation rounds to (1.1, 1.7), within the robot's radius"),
+        "{stdout}"
+    );
+    // Its leg is then the pose's rule's to tell.
+    assert!(!stdout.contains("tour-leg-unreachable"), "{stdout}");
+}

@@ -391,8 +391,8 @@ fn neighbours(at: usize, columns: usize, rows: usize) -> impl Iterator<Item = us
     .map(move |(c, r)| r as usize * columns + c as usize)
 }
 
-/// `value` rounded to 0.1, as the robot rounds a goal and its own pose.
-fn tenth(value: f64) -> f64 {
+/// `value` rounded to 0.1, as the robot's navigation rounds a goal and its own pose.
+pub fn tenth(value: f64) -> f64 {
     (value * 10.0).round() / 10.0
 }
 

@@ -1,14 +1,15 @@
 use super::Loaded3;
 use crate::diagnostic::Diagnostic;
 use crate::diagnostic::Diagnostics;
+use crate::map::space::tenth;
 use crate::map::{Blocker, LabMap, Shape};
 use crate::rules::declare_rule;
 
 declare_rule! {
     /// ## What it does
-    /// Flags a pose, as the robot's reader loads it, whose centre is within the robot's
-    /// radius (`robotRadius`) of an obstacle: a rectangle of `obstacles.dat`, or an occupied
-    /// (black) pixel of the map's image. The image's grey and white "Origin" legend is not
+    /// Flags a pose, as the robot's reader loads it and its navigation rounds it (to
+    /// 0.1 m), whose centre is within the robot's radius (`robotRadius`) of an obstacle:
+    /// one of `obstacles.dat`, or an occupied (black) pixel of the map's image. The image's grey and white "Origin" legend is not
     /// an obstacle. Runs when a map is given (`--map-config`, `--map-image`).
     ///
     /// ## Why it matters
@@ -31,8 +32,14 @@ declare_rule! {
 
 /// Checks `pose`; whether it is in an obstacle.
 pub fn check(pose: &Loaded3, map: &LabMap, out: &mut Diagnostics) -> bool {
-    let Some(blocker) = map.blocker(pose.x, pose.y) else {
+    // Where the robot's navigation puts the goal: rounded to 0.1 m.
+    let (x, y) = (tenth(pose.x), tenth(pose.y));
+    let Some(blocker) = map.blocker(x, y) else {
         return false;
+    };
+    let rounded = match (x, y) == (pose.x, pose.y) {
+        true => String::new(),
+        false => format!(", which the robot's navigation rounds to ({x:?}, {y:?})"),
     };
     out.push_with(&POSE_IN_OBSTACLE, || {
         let what = match blocker {
@@ -58,7 +65,7 @@ pub fn check(pose: &Loaded3, map: &LabMap, out: &mut Diagnostics) -> bool {
             &POSE_IN_OBSTACLE,
             pose.span,
             format!(
-                "location {} stands at {}{}, within the robot's radius ({} m) of {what}: the robot cannot stand there and its navigation fails",
+                "location {} stands at {}{}{rounded}, within the robot's radius ({} m) of {what}: the robot cannot stand there and its navigation fails",
                 pose.id,
                 pose.at(),
                 pose.differs,

@@ -1,6 +1,7 @@
 use super::Loaded3;
 use crate::diagnostic::Diagnostic;
 use crate::diagnostic::Diagnostics;
+use crate::map::space::tenth;
 use crate::map::LabMap;
 use crate::rules::declare_rule;
 
@@ -33,7 +34,6 @@ declare_rule! {
 /// Reports `pose` if it is off `map`; returns whether it is.
 pub fn check(pose: &Loaded3, map: &LabMap, out: &mut Diagnostics) -> bool {
     // The robot's navigation rounds a goal to 0.1 m before it looks at it.
-    let tenth = |value: f64| (value * 10.0).round() / 10.0;
     if map.contains(tenth(pose.x), tenth(pose.y)) {
         return false;
     }
