@@ -65,7 +65,7 @@ fn bad_language_lists_the_choices() {
     assert!(
         out.stderr
             .contains(
-                "[possible values: english, isizulu, kinyarwanda, zulu, ikinyarwanda, en, zu, rw, eng, zul, kin]"
+                "[possible values: english, isizulu, kinyarwanda, zulu, ikinyarwanda, en, zu, rw, eng, zul, kin, all]"
             ),
         "{}",
         out.stderr
