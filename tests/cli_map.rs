@@ -1,6 +1,9 @@
 //! The lab map (SPEC §10): reading it, checking poses against it (`ekb check --map-config`),
 //! and drawing the tour on it (`ekb map`), read back from the SVG and the PNG.
 
+#[path = "support/lab_map.rs"]
+mod lab_map;
+
 use std::path::{Path, PathBuf};
 
 use ekb::map::{Blocker, LabMap};
@@ -939,12 +942,7 @@ fn a_drawing_has_at_most_2000_locations_and_1000_stops_and_says_what_it_leaves_o
 /// `obstacles.dat` as four `rectangle` lines.
 fn walled_in_map(space_image: bool) -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
-    for file in [
-        "mapGenerationConfiguration.ini",
-        "mapGenerationInput.dat",
-        "obstacles.dat",
-        "environmentMap.png",
-    ] {
+    for file in lab_map::FILES {
         std::fs::copy(
             root().join("tests/fixtures/map").join(file),
             dir.path().join(file),

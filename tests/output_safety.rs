@@ -20,25 +20,6 @@ fn ekb(dir: &Path) -> Command {
     command
 }
 
-/// GitHub runner's commands (its documentation's list, and what its source registers).
-const WORKFLOW_COMMANDS: [&str; 15] = [
-    "add-mask",
-    "add-matcher",
-    "add-path",
-    "debug",
-    "echo",
-    "endgroup",
-    "error",
-    "group",
-    "notice",
-    "remove-matcher",
-    "save-state",
-    "set-env",
-    "set-output",
-    "stop-commands",
-    "warning",
-];
-
 /// The lines of `output` that a CI runner would obey or a terminal act on. With
 /// `github_commands`, a line that is one of `--format github`'s annotations is allowed.
 fn forged_lines(output: &str, github_commands: bool) -> Vec<String> {
@@ -57,7 +38,7 @@ fn forged_lines(output: &str, github_commands: bool) -> Vec<String> {
                     .chars()
                     .take_while(|c| c.is_ascii_alphanumeric() || *c == '-')
                     .collect();
-                WORKFLOW_COMMANDS
+                ekb::render::escape::WORKFLOW_COMMANDS
                     .iter()
                     .any(|command| name.eq_ignore_ascii_case(command))
             });

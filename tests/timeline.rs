@@ -2,6 +2,8 @@
 //! say, on the lab map of `tests/fixtures/map/` (the lab's own obstacles).
 
 mod author_support;
+#[path = "support/lab_map.rs"]
+mod lab_map;
 
 use std::path::Path;
 
@@ -128,23 +130,8 @@ fn english_takes_the_robots_own_wait_and_isizulu_is_silent_until_the_robot_speak
 #[test]
 fn a_leg_the_robot_cannot_drive_is_null_and_the_next_starts_where_it_stands() {
     // Location 4 (the Roomba, at 2.3, 5.1) walled in with a square of obstacles.
-    let dir = tempfile::tempdir().unwrap();
-    for file in [
-        "mapGenerationConfiguration.ini",
-        "mapGenerationInput.dat",
-        "obstacles.dat",
-        "environmentMap.png",
-    ] {
-        std::fs::copy(
-            root().join("tests/fixtures/map").join(file),
-            dir.path().join(file),
-        )
-        .unwrap();
-    }
-    let mut obstacles = std::fs::read_to_string(dir.path().join("obstacles.dat")).unwrap();
-    obstacles += "RECTANGLE 2.3 5.55 1.0 0.1\nRECTANGLE 2.3 4.65 1.0 0.1\nRECTANGLE 1.85 5.1 0.1 1.0\nRECTANGLE 2.75 5.1 0.1 1.0\n";
-    std::fs::write(dir.path().join("obstacles.dat"), obstacles).unwrap();
-    let config = dir.path().join("mapGenerationConfiguration.ini");
+    let map = lab_map::LabMap::with_obstacles(&lab_map::square_round(2.3, 5.1, 1.0));
+    let config = map.config();
     let walled = timeline(&[LAB, "--map-config", config.to_str().unwrap()]);
     let stop = &walled["stops"][1];
     assert_eq!(stop["id"], 4);

@@ -878,23 +878,16 @@ fn legend_lines(scene: &Scene<'_>) -> Vec<LabelLine> {
             FINDING_COLOUR,
         ));
     }
-    if scene.undrawn_locations > 0 {
-        lines.push(LabelLine::plain(
-            format!(
-                "{} more locations not drawn (at most {MAX_DRAWN_LOCATIONS})",
-                scene.undrawn_locations
-            ),
-            FINDING_COLOUR,
-        ));
-    }
-    if scene.undrawn_stops > 0 {
-        lines.push(LabelLine::plain(
-            format!(
-                "{} more stops not drawn (at most {MAX_DRAWN_STOPS})",
-                scene.undrawn_stops
-            ),
-            FINDING_COLOUR,
-        ));
+    for (undrawn, what, most) in [
+        (scene.undrawn_locations, "locations", MAX_DRAWN_LOCATIONS),
+        (scene.undrawn_stops, "stops", MAX_DRAWN_STOPS),
+    ] {
+        if undrawn > 0 {
+            lines.push(LabelLine::plain(
+                format!("{undrawn} more {what} not drawn (at most {most})"),
+                FINDING_COLOUR,
+            ));
+        }
     }
     if scene.spots.len() > MAX_LABELLED {
         lines.push(LabelLine::plain(

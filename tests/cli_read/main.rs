@@ -4,6 +4,8 @@
 
 mod common;
 mod diff;
+#[path = "../support/lab_map.rs"]
+mod lab_map;
 mod export;
 mod locations;
 mod mission;

@@ -705,24 +705,8 @@ fn the_walk_stops_at_a_call_into_an_included_file() {
 fn a_navigate_the_map_does_not_join_fails_and_the_walk_goes_on_through_its_fallback() {
     // The lab map of tests/fixtures/map with a square wall round the Roomba (location 4 at
     // 2.3, 5.1).
-    let map = tempfile::tempdir().unwrap();
-    let here = Path::new(env!("CARGO_MANIFEST_DIR"));
-    for file in [
-        "mapGenerationConfiguration.ini",
-        "mapGenerationInput.dat",
-        "obstacles.dat",
-        "environmentMap.png",
-    ] {
-        std::fs::copy(
-            here.join("tests/fixtures/map").join(file),
-            map.path().join(file),
-        )
-        .unwrap();
-    }
-    let obstacles = std::fs::read_to_string(map.path().join("obstacles.dat")).unwrap()
-        + "RECTANGLE 2.3 5.55 1.0 0.1\nRECTANGLE 2.3 4.65 1.0 0.1\nRECTANGLE 1.85 5.1 0.1 1.0\nRECTANGLE 2.75 5.1 0.1 1.0\n";
-    std::fs::write(map.path().join("obstacles.dat"), obstacles).unwrap();
-    let config = map.path().join("mapGenerationConfiguration.ini");
+    let map = crate::lab_map::LabMap::with_obstacles(&crate::lab_map::square_round(2.3, 5.1, 1.0));
+    let config = map.config();
     let args = [
         "mission",
         "walk",

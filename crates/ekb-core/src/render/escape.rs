@@ -197,7 +197,7 @@ fn escape_line(line: &str, out: &mut String) {
 }
 
 /// The commands of GitHub's runner (`::error file=…::…`), which it matches in any case.
-const WORKFLOW_COMMANDS: [&str; 15] = [
+pub const WORKFLOW_COMMANDS: [&str; 15] = [
     "add-mask",
     "add-matcher",
     "add-path",
