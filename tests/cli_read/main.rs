@@ -4,9 +4,9 @@
 
 mod common;
 mod diff;
+mod export;
 #[path = "../support/lab_map.rs"]
 mod lab_map;
-mod export;
 mod locations;
 mod mission;
 mod show;
