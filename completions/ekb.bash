@@ -1192,7 +1192,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__mission__subcmd__tree)
-            opts="-v -q -h -V --config-dir --mission --culture-kb --culture-types --kb --lang --format --config --color --verbose --reader --quiet --settings --isolated --help --version"
+            opts="-v -q -h -V --config-dir --mission --culture-kb --culture-types --kb --lang --format --map-config --map-image --map-size --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1224,6 +1224,18 @@ _ekb() {
                     ;;
                 --format)
                     COMPREPLY=($(compgen -W "text json" -- "${cur}"))
+                    return 0
+                    ;;
+                --map-config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --map-image)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --map-size)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --config)
@@ -1250,7 +1262,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__mission__subcmd__walk)
-            opts="-v -q -h -V --config-dir --mission --culture-kb --culture-types --kb --lang --format --config --color --verbose --reader --quiet --settings --isolated --help --version"
+            opts="-v -q -h -V --config-dir --mission --culture-kb --culture-types --kb --lang --format --map-config --map-image --map-size --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1282,6 +1294,18 @@ _ekb() {
                     ;;
                 --format)
                     COMPREPLY=($(compgen -W "text json" -- "${cur}"))
+                    return 0
+                    ;;
+                --map-config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --map-image)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --map-size)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --config)
@@ -1494,18 +1518,30 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__tour)
-            opts="-v -q -h -V --lang --format --config --color --verbose --reader --quiet --settings --isolated --help --version"
+            opts="-v -q -h -V --lang --timeline --format --map-config --map-image --map-size --config --color --verbose --reader --quiet --settings --isolated --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
                 --lang)
-                    COMPREPLY=($(compgen -W "english isizulu kinyarwanda zulu ikinyarwanda en zu rw eng zul kin" -- "${cur}"))
+                    COMPREPLY=($(compgen -W "english isizulu kinyarwanda zulu ikinyarwanda en zu rw eng zul kin all" -- "${cur}"))
                     return 0
                     ;;
                 --format)
                     COMPREPLY=($(compgen -W "text json" -- "${cur}"))
+                    return 0
+                    ;;
+                --map-config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --map-image)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --map-size)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --config)

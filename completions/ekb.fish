@@ -128,7 +128,7 @@ complete -c ekb -n "__fish_ekb_using_subcommand show" -s q -l quiet -d 'Print on
 complete -c ekb -n "__fish_ekb_using_subcommand show" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s V -l version -d 'Print version'
-complete -c ekb -n "__fish_ekb_using_subcommand tour" -l lang -d 'The language the robot speaks: english, isizulu (zulu), kinyarwanda, or an ISO 639 code: en/eng, zu/zul, rw/kin (any case)' -r -f -a "english\t''
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l lang -d 'The language the robot speaks: english, isizulu (zulu), kinyarwanda, or an ISO 639 code: en/eng, zu/zul, rw/kin (any case); with --timeline also `all`, side by side' -r -f -a "english\t''
 isizulu\t''
 kinyarwanda\t''
 zulu\t''
@@ -138,9 +138,13 @@ zu\t''
 rw\t''
 eng\t''
 zul\t''
-kin\t''"
+kin\t''
+all\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l format -d 'Output format' -r -f -a "text\t'The tour as a script to read'
 json\t'One JSON object'"
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l map-config -d 'The robot\'s mapGenerationConfiguration.ini: check poses against its map and draw on it' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l map-image -d 'A map image instead (PNG: white free, black occupied), with --map-size; the robot\'s radius is taken as 0.3 m' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l map-size -d 'The map image\'s width and height, in metres' -r
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
@@ -151,6 +155,7 @@ complete -c ekb -n "__fish_ekb_using_subcommand tour" -l reader -d 'The version 
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l timeline -d 'The tour in time: each leg driven (metres, seconds, the turn; with the map, as the robot\'s planner drives it) and the seconds each message takes to say, and the totals'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l isolated -d 'Use no settings file: every rule, at its own severity'
@@ -440,6 +445,9 @@ zul\t''
 kin\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l format -d 'Output format' -r -f -a "text\t'For people'
 json\t'One JSON object'"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l map-config -d 'The robot\'s mapGenerationConfiguration.ini: check poses against its map and draw on it' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l map-image -d 'A map image instead (PNG: white free, black occupied), with --map-size; the robot\'s radius is taken as 0.3 m' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l map-size -d 'The map image\'s width and height, in metres' -r
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
@@ -473,6 +481,9 @@ zul\t''
 kin\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l format -d 'Output format' -r -f -a "text\t'For people'
 json\t'One JSON object'"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l map-config -d 'The robot\'s mapGenerationConfiguration.ini: check poses against its map and draw on it' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l map-image -d 'A map image instead (PNG: white free, black occupied), with --map-size; the robot\'s radius is taken as 0.3 m' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l map-size -d 'The map image\'s width and height, in metres' -r
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
