@@ -58,6 +58,7 @@ complete -c ekb -n "__fish_ekb_needs_command" -f -a "mission" -d 'The behaviour-
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "translations" -d 'How far each language is translated, message by message'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "set" -d 'Edit one value in place, losslessly'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "lsp" -d 'Run the language server (LSP, on standard input and output) for editors'
+complete -c ekb -n "__fish_ekb_needs_command" -f -a "serve" -d 'Edit the knowledge base in a local web page, checked as you type'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "settings" -d 'Print the settings in force for a file, and where each comes from'
 complete -c ekb -n "__fish_ekb_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c ekb -n "__fish_ekb_using_subcommand check" -l format -d 'Output format' -r -f -a "human\t'For people: each finding with the lines around it, underlined, and what to do'
@@ -128,7 +129,7 @@ complete -c ekb -n "__fish_ekb_using_subcommand show" -s q -l quiet -d 'Print on
 complete -c ekb -n "__fish_ekb_using_subcommand show" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand show" -s V -l version -d 'Print version'
-complete -c ekb -n "__fish_ekb_using_subcommand tour" -l lang -d 'The language the robot speaks: english, isizulu (zulu), kinyarwanda, or an ISO 639 code: en/eng, zu/zul, rw/kin (any case)' -r -f -a "english\t''
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l lang -d 'The language the robot speaks: english, isizulu (zulu), kinyarwanda, or an ISO 639 code: en/eng, zu/zul, rw/kin (any case); with --timeline also `all`, side by side' -r -f -a "english\t''
 isizulu\t''
 kinyarwanda\t''
 zulu\t''
@@ -138,9 +139,13 @@ zu\t''
 rw\t''
 eng\t''
 zul\t''
-kin\t''"
+kin\t''
+all\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l format -d 'Output format' -r -f -a "text\t'The tour as a script to read'
 json\t'One JSON object'"
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l map-config -d 'The robot\'s mapGenerationConfiguration.ini: check poses against its map and draw on it' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l map-image -d 'A map image instead (PNG: white free, black occupied), with --map-size; the robot\'s radius is taken as 0.3 m' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l map-size -d 'The map image\'s width and height, in metres' -r
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
@@ -151,6 +156,7 @@ complete -c ekb -n "__fish_ekb_using_subcommand tour" -l reader -d 'The version 
 2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
 2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand tour" -l timeline -d 'The tour in time: each leg driven (metres, seconds, the turn; with the map, as the robot\'s planner drives it) and the seconds each message takes to say, and the totals'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -s q -l quiet -d 'Print only findings and errors, no summary'
 complete -c ekb -n "__fish_ekb_using_subcommand tour" -l isolated -d 'Use no settings file: every rule, at its own severity'
@@ -440,6 +446,9 @@ zul\t''
 kin\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l format -d 'Output format' -r -f -a "text\t'For people'
 json\t'One JSON object'"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l map-config -d 'The robot\'s mapGenerationConfiguration.ini: check poses against its map and draw on it' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l map-image -d 'A map image instead (PNG: white free, black occupied), with --map-size; the robot\'s radius is taken as 0.3 m' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l map-size -d 'The map image\'s width and height, in metres' -r
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from tree" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
@@ -473,6 +482,9 @@ zul\t''
 kin\t''"
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l format -d 'Output format' -r -f -a "text\t'For people'
 json\t'One JSON object'"
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l map-config -d 'The robot\'s mapGenerationConfiguration.ini: check poses against its map and draw on it' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l map-image -d 'A map image instead (PNG: white free, black occupied), with --map-size; the robot\'s radius is taken as 0.3 m' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l map-size -d 'The map image\'s width and height, in metres' -r
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
 complete -c ekb -n "__fish_ekb_using_subcommand mission; and __fish_seen_subcommand_from walk" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
 always\t''
@@ -555,6 +567,26 @@ complete -c ekb -n "__fish_ekb_using_subcommand lsp" -s q -l quiet -d 'Print onl
 complete -c ekb -n "__fish_ekb_using_subcommand lsp" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand lsp" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand lsp" -s V -l version -d 'Print version'
+complete -c ekb -n "__fish_ekb_using_subcommand serve" -l port -d 'The port on 127.0.0.1 (0: a free one, chosen by the system)' -r
+complete -c ekb -n "__fish_ekb_using_subcommand serve" -l map-config -d 'The robot\'s mapGenerationConfiguration.ini: check poses against its map and draw on it' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand serve" -l map-image -d 'A map image instead (PNG: white free, black occupied), with --map-size; the robot\'s radius is taken as 0.3 m' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand serve" -l map-size -d 'The map image\'s width and height, in metres' -r
+complete -c ekb -n "__fish_ekb_using_subcommand serve" -l config -d 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand serve" -l color -d 'When to use colour (NO_COLOR in the environment means never, unless `always`)' -r -f -a "auto\t''
+always\t''
+never\t''"
+complete -c ekb -n "__fish_ekb_using_subcommand serve" -l reader -d 'The version of the robot\'s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]' -r -f -a "d5.4.2\t'The document\'s class (D5.4.2, appendix A)'
+2025-06\t'`main`, June 2025 (still `main` in April 2026)'
+2026-02\t'The `bc_service` branch, February 2026'
+2026-03\t'The workspace branch, March 2026: reads `gestureArm`'
+2026-04\t'"behaviorController v1.1", April 2026: the arm comes from the culture knowledge base'"
+complete -c ekb -n "__fish_ekb_using_subcommand serve" -l settings -d 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file\'s folder or above' -r -F
+complete -c ekb -n "__fish_ekb_using_subcommand serve" -l open -d 'Say to open the page in a browser (this version prints the address on standard error too; it starts no browser)'
+complete -c ekb -n "__fish_ekb_using_subcommand serve" -s v -l verbose -d 'Print what is read, as it is read, on standard error'
+complete -c ekb -n "__fish_ekb_using_subcommand serve" -s q -l quiet -d 'Print only findings and errors, no summary'
+complete -c ekb -n "__fish_ekb_using_subcommand serve" -l isolated -d 'Use no settings file: every rule, at its own severity'
+complete -c ekb -n "__fish_ekb_using_subcommand serve" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c ekb -n "__fish_ekb_using_subcommand serve" -s V -l version -d 'Print version'
 complete -c ekb -n "__fish_ekb_using_subcommand settings" -l select -d 'Run only these rules or categories (comma-separated), instead of those ekb.toml selects' -r
 complete -c ekb -n "__fish_ekb_using_subcommand settings" -l extend-select -d 'Run these rules or categories as well' -r
 complete -c ekb -n "__fish_ekb_using_subcommand settings" -l ignore -d 'Do not run these rules or categories' -r
@@ -573,27 +605,28 @@ complete -c ekb -n "__fish_ekb_using_subcommand settings" -s q -l quiet -d 'Prin
 complete -c ekb -n "__fish_ekb_using_subcommand settings" -l isolated -d 'Use no settings file: every rule, at its own severity'
 complete -c ekb -n "__fish_ekb_using_subcommand settings" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c ekb -n "__fish_ekb_using_subcommand settings" -s V -l version -d 'Print version'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "check" -d 'Validate knowledge-base files against every rule'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "locations" -d 'A table of all locations'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "show" -d 'One location in full'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "tour" -d 'The tour in order, as the robot will say it in one language'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "diff" -d 'What changed between two knowledge bases, location by location'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "export" -d 'The typed model as JSON'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "import" -d 'JSON back to a canonical knowledge-base file'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "fmt" -d 'Rewrite files in the canonical layout'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "fix" -d 'Apply the machine-applicable fixes'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "rules" -d 'List the rule catalogue'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "explain" -d 'Show one rule\'s documentation'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "completions" -d 'Print a shell completion script'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "man" -d 'Print the man page'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "map" -d 'Draw the tour on the lab map, as SVG or PNG'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "report" -d 'Write one HTML page to review: the map, the tour\'s messages, the findings'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "mission" -d 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "translations" -d 'How far each language is translated, message by message'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "set" -d 'Edit one value in place, losslessly'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "lsp" -d 'Run the language server (LSP, on standard input and output) for editors'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "settings" -d 'Print the settings in force for a file, and where each comes from'
-complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "check" -d 'Validate knowledge-base files against every rule'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "locations" -d 'A table of all locations'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "show" -d 'One location in full'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "tour" -d 'The tour in order, as the robot will say it in one language'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "diff" -d 'What changed between two knowledge bases, location by location'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "export" -d 'The typed model as JSON'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "import" -d 'JSON back to a canonical knowledge-base file'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "fmt" -d 'Rewrite files in the canonical layout'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "fix" -d 'Apply the machine-applicable fixes'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "rules" -d 'List the rule catalogue'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "explain" -d 'Show one rule\'s documentation'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "completions" -d 'Print a shell completion script'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "man" -d 'Print the man page'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "map" -d 'Draw the tour on the lab map, as SVG or PNG'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "report" -d 'Write one HTML page to review: the map, the tour\'s messages, the findings'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "mission" -d 'The behaviour-tree mission with both knowledge bases: check, tree, walk'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "translations" -d 'How far each language is translated, message by message'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "set" -d 'Edit one value in place, losslessly'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "lsp" -d 'Run the language server (LSP, on standard input and output) for editors'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "serve" -d 'Edit the knowledge base in a local web page, checked as you type'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "settings" -d 'Print the settings in force for a file, and where each comes from'
+complete -c ekb -n "__fish_ekb_using_subcommand help; and not __fish_seen_subcommand_from check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c ekb -n "__fish_ekb_using_subcommand help; and __fish_seen_subcommand_from mission" -f -a "check" -d 'Check the mission, the culture knowledge base and the environment knowledge base together'
 complete -c ekb -n "__fish_ekb_using_subcommand help; and __fish_seen_subcommand_from mission" -f -a "tree" -d 'Print the mission\'s trees, with each node\'s parameter and the phrase each SayText says'
 complete -c ekb -n "__fish_ekb_using_subcommand help; and __fish_seen_subcommand_from mission" -f -a "walk" -d 'A dry run of the mission on the happy path: the steps the robot takes, in order'
