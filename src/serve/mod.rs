@@ -13,9 +13,11 @@
 //! - `POST /api/check` `{text, edits?}`: the edits applied to `text` with
 //!   [`crate::edit::apply`], then `{text, fields, tour, check}`, `check` being exactly what
 //!   `ekb check --format json` prints for that text.
-//! - `POST /api/save` `{base_version, edits}`: written through the locking writer
-//!   ([`crate::write`]), merged with a file changed on disk since ([`merge`]); 200
-//!   `{name, text, version, fields, tour, merged}`, or 409 `{conflicts, name, text,
+//! - `POST /api/save` `{base_version, text?, edits}`: the edits made on `text` (the page's
+//!   version with the fixes it applied; else the version `base_version`) and written
+//!   through the locking writer ([`crate::write`]); when the file changed on disk since,
+//!   the edits are merged with it ([`merge`]) and the fixes dropped. 200 `{name, text,
+//!   version, fields, tour, merged, fixes_dropped}`, or 409 `{conflicts, name, text,
 //!   version, fields, tour}` (the file on disk) with nothing written.
 //! - `GET /api/map`: the SVG of `ekb map` for the text last checked (else the file).
 
@@ -176,6 +178,10 @@ struct CheckIn {
 #[derive(Debug, Deserialize)]
 struct SaveIn {
     base_version: String,
+    /// The text the edits apply to, when the page applied fixes to the version it loaded
+    /// (else that version itself).
+    #[serde(default)]
+    text: Option<String>,
     edits: Vec<EditIn>,
 }
 
@@ -421,16 +427,20 @@ impl Server<'_> {
         let disk = source.text();
         let disk_version = version(disk.as_bytes());
         let merged = disk_version != input.base_version;
-        let edits = match merged {
-            false => edits,
-            true => {
-                let base = self
-                    .known
-                    .iter()
-                    .find(|(version, _)| *version == input.base_version)
-                    .map(|(_, text)| text.as_str());
+        // The page's fixes are kept when the file is still the version they were made on;
+        // else only its value edits are merged, and the page shows the findings again.
+        let fixes_dropped = merged && input.text.is_some();
+        let (onto, edits) = match (merged, input.text.as_deref()) {
+            (false, fixed) => (fixed.unwrap_or(disk), edits),
+            (true, fixed) => {
+                let base = fixed.or_else(|| {
+                    self.known
+                        .iter()
+                        .find(|(version, _)| *version == input.base_version)
+                        .map(|(_, text)| text.as_str())
+                });
                 match merge::merge(base, disk, &edits) {
-                    Ok(edits) => edits,
+                    Ok(edits) => (disk, edits),
                     Err(conflicts) => {
                         let mut value = self.on_disk(disk);
                         value["conflicts"] = json!(conflicts);
@@ -439,7 +449,7 @@ impl Server<'_> {
                 }
             }
         };
-        let text = match edit::apply(disk, &edits) {
+        let text = match edit::apply(onto, &edits) {
             Ok(edited) => edited.text,
             Err(error) => return Reply::plain(422, error.to_string()),
         };
@@ -454,6 +464,7 @@ impl Server<'_> {
         }
         let mut value = self.on_disk(&text);
         value["merged"] = json!(merged);
+        value["fixes_dropped"] = json!(fixes_dropped);
         Reply::json(200, &value)
     }
 

@@ -213,7 +213,7 @@ mod tests {
 
     #[test]
     fn a_body_over_the_cap_is_refused() {
-        let body = vec![b'a'; 100];
+        let body = [b'a'; 100];
         assert!(matches!(
             read_body(Some(100), &mut &body[..], 99),
             Err(BodyError::TooLarge)

@@ -73,20 +73,8 @@ function edits() {
   return out;
 }
 
-function saveEdits() {
-  const baseValues = valuesOf(state.base.fields);
-  const out = [];
-  for (const [where, value] of state.values) {
-    const before = baseValues.get(where);
-    if (value === before || (before === undefined && value === '')) continue;
-    const [id, key] = where.split('|');
-    out.push({ id: Number(id), key, value });
-  }
-  return out;
-}
-
 function isDirty() {
-  return state.work !== state.base.text || saveEdits().length > 0;
+  return state.work !== state.base.text || edits().length > 0;
 }
 
 // ---- The form ---------------------------------------------------------------------------
@@ -341,7 +329,8 @@ function renderSummary(counts, entries) {
   if (!entries.length) return;
   const list = el('ol');
   for (const { finding, node, target } of entries) {
-    const link = el('a', { href: `#${node.id}`, 'data-severity': finding.severity, 'data-rule': finding.rule });
+    // No data-rule here: the hooks are on the findings themselves (SPEC §14).
+    const link = el('a', { href: `#${node.id}`, class: `sev-${finding.severity}` });
     const where = finding.location_id !== null && finding.location_id !== undefined ? `location ${finding.location_id}` : `line ${finding.line}`;
     link.textContent = `${finding.severity} ${finding.rule} (${where}): ${finding.message}`;
     link.addEventListener('click', (event) => {
@@ -399,12 +388,16 @@ async function save() {
   state.saving = true;
   setState('saving', 'Saving…');
   try {
-    const { status, data } = await api('/api/save', { base_version: state.base.version, edits: saveEdits() });
+    const request = { base_version: state.base.version, edits: edits() };
+    if (state.work !== state.base.text) request.text = state.work;
+    const { status, data } = await api('/api/save', request);
     if (status === 200) {
       loaded(data);
       state.values = valuesOf(data.fields);
       fillForm();
-      setState('saved', data.merged ? 'Saved, merged with the changes on disk' : 'Saved');
+      const merged = data.merged ? ', merged with the changes on disk' : '';
+      const dropped = data.fixes_dropped ? ' (the file had changed: apply your fixes again)' : '';
+      setState('saved', `Saved${merged}${dropped}`);
       scheduleCheck();
     } else if (status === 409) {
       showConflicts(data);
@@ -448,9 +441,8 @@ function choose(conflict, side, row) {
   if (chosen.size < disk.conflicts.length) return;
   // Every conflict chosen: the page now edits the file on disk, with its own changes on top.
   remember(null);
-  const oldBase = valuesOf(state.base.fields);
   const mine = new Map();
-  for (const [where, value] of state.values) if (oldBase.get(where) !== value) mine.set(where, value);
+  for (const [where, value] of state.values) if (state.workValues.get(where) !== value) mine.set(where, value);
   loaded(disk);
   state.values = valuesOf(disk.fields);
   for (const [where, value] of mine) state.values.set(where, value);
@@ -478,11 +470,16 @@ async function refreshMap() {
     if (!plot) return;
     $('#map-section').hidden = false;
     const node = document.importNode(svg, true);
-    for (const pose of node.querySelectorAll('g.pose[data-location]')) {
-      pose.setAttribute('data-pose-handle', pose.getAttribute('data-location'));
+    // `data-location` names the page's sections: the drawing's own become data-map-location.
+    for (const item of node.querySelectorAll('[data-location]')) {
+      item.setAttribute('data-map-location', item.getAttribute('data-location'));
+      item.removeAttribute('data-location');
+    }
+    for (const pose of node.querySelectorAll('g.pose[data-map-location]')) {
+      pose.setAttribute('data-pose-handle', pose.getAttribute('data-map-location'));
       pose.setAttribute('tabindex', '0');
       pose.setAttribute('role', 'button');
-      pose.setAttribute('aria-label', `Pose of location ${pose.getAttribute('data-location')}: drag to move, or edit its x and y fields`);
+      pose.setAttribute('aria-label', `Pose of location ${pose.getAttribute('data-map-location')}: drag to move, or edit its x and y fields`);
       pose.addEventListener('pointerdown', (event) => startDrag(event, node, pose));
     }
     $('#map-box').replaceChildren(node);
