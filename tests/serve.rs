@@ -225,4 +225,19 @@ fn the_server_guards_checks_and_saves_one_line() {
     let conflict: serde_json::Value = serde_json::from_str(&conflict.body).unwrap();
     assert_eq!(conflict["conflicts"][0]["theirs"], "The other Pepper");
     assert_eq!(std::fs::read_to_string(&file).unwrap(), written);
+
+    // A fix the page applied (a key's case) is saved with the page's text, when the file
+    // is still the version the page has.
+    let version: serde_json::Value =
+        serde_json::from_str(&server.get("/api/version", &server.host(), true).body).unwrap();
+    assert_eq!(version["version"], conflict["version"]);
+    let fixed = written.replace("postGestureMessageenglish", "postGestureMessageEnglish");
+    let save = serde_json::json!({
+        "base_version": version["version"],
+        "text": fixed,
+        "edits": [{ "id": 1, "key": "culturalKnowledge", "value": "" }],
+    });
+    let saved = server.post("/api/save", &own_origin, &save.to_string());
+    assert_eq!(saved.status, 200, "{}", saved.body);
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), fixed);
 }

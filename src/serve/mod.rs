@@ -9,7 +9,10 @@
 //!
 //! Endpoints (JSON unless said):
 //! - `GET /`, `/app.js`, `/app.css`: the page ([`assets`]), served by the server itself.
-//! - `GET /api/file`: `{name, text, version, fields, tour}`, the file on disk now.
+//! - `GET /api/file`: `{name, text, version, fields, tour}`, the file on disk now (`fields`:
+//!   `[{id, key, value, line}]`, the value the robot reads for each key of each location;
+//!   `tour`: the ids in order).
+//! - `GET /api/version`: `{version}` of the file on disk now (the page asks every 3 s).
 //! - `POST /api/check` `{text, edits?}`: the edits applied to `text` with
 //!   [`crate::edit::apply`], then `{text, fields, tour, check}`, `check` being exactly what
 //!   `ekb check --format json` prints for that text.
@@ -284,6 +287,7 @@ impl Server<'_> {
             (false, "/app.js") => asset("text/javascript; charset=utf-8", assets::APP_JS),
             (false, "/app.css") => asset("text/css; charset=utf-8", assets::APP_CSS),
             (false, "/api/file") => self.file(),
+            (false, "/api/version") => self.version(),
             (false, "/api/map") => self.map(),
             (true, "/api/check" | "/api/save") => {
                 let body = match security::read_body(length, body, security::MAX_BODY) {
@@ -301,7 +305,7 @@ impl Server<'_> {
                     _ => self.save(&body),
                 }
             }
-            (true, "/" | "/app.js" | "/app.css" | "/api/file" | "/api/map")
+            (true, "/" | "/app.js" | "/app.css" | "/api/file" | "/api/version" | "/api/map")
             | (false, "/api/check" | "/api/save") => {
                 Reply::plain(405, "method not allowed on this address")
             }
@@ -353,6 +357,17 @@ impl Server<'_> {
         }
     }
 
+    /// `{version}` of the file on disk now: how the page notices a change on disk.
+    fn version(&mut self) -> Reply {
+        match self.read() {
+            Ok(source) => Reply::json(
+                200,
+                &json!({ "version": version(source.text().as_bytes()) }),
+            ),
+            Err(reply) => reply,
+        }
+    }
+
     fn check(&mut self, body: &str) -> Reply {
         let input: CheckIn = match serde_json::from_str(body) {
             Ok(input) => input,
@@ -362,6 +377,7 @@ impl Server<'_> {
             Ok(edits) => edits,
             Err(reply) => return reply,
         };
+        let edits = without_empty_additions(&input.text, edits);
         let text = match edits.is_empty() {
             true => input.text,
             false => match edit::apply(&input.text, &edits) {
@@ -449,6 +465,7 @@ impl Server<'_> {
                 }
             }
         };
+        let edits = without_empty_additions(onto, edits);
         let text = match edit::apply(onto, &edits) {
             Ok(edited) => edited.text,
             Err(error) => return Reply::plain(422, error.to_string()),
@@ -485,6 +502,22 @@ impl Server<'_> {
         let svg = draw::svg::draw(&scene, MapImage::Embedded).svg;
         Reply::new(200, "image/svg+xml", svg)
     }
+}
+
+/// `edits` less those that would add an empty value: a field left empty where `text` has
+/// no line for it adds no line.
+fn without_empty_additions(text: &str, mut edits: Vec<ValueEdit>) -> Vec<ValueEdit> {
+    if edits.iter().all(|edit| !edit.value.is_empty()) {
+        return edits;
+    }
+    let found = fields(text).fields;
+    edits.retain(|edit| {
+        !edit.value.is_empty()
+            || found
+                .iter()
+                .any(|field| field.id == edit.id && field.key == edit.key.name())
+    });
+    edits
 }
 
 fn bad_json(error: &serde_json::Error) -> Reply {
@@ -571,6 +604,28 @@ mod tests {
             ..post
         };
         assert_eq!(guard(&big, 9, TOKEN).unwrap_err().status, 413);
+    }
+
+    #[test]
+    fn an_empty_field_with_no_line_adds_no_line() {
+        let edit = |key, value: &str| ValueEdit {
+            id: 1,
+            key,
+            value: value.to_string(),
+        };
+        let text = "robotLocationDescription 1 Hall\n";
+        let kept = without_empty_additions(
+            text,
+            vec![
+                edit(Key::CulturalKnowledge, ""),
+                edit(Key::RobotLocationDescription, ""),
+                edit(Key::GestureArm, "left"),
+            ],
+        );
+        assert_eq!(
+            kept.iter().map(|edit| edit.key).collect::<Vec<_>>(),
+            vec![Key::RobotLocationDescription, Key::GestureArm]
+        );
     }
 
     #[test]

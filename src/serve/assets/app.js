@@ -439,7 +439,12 @@ function choose(conflict, side, row) {
   row.dataset.chosen = side;
   for (const button of row.querySelectorAll('button')) button.setAttribute('aria-pressed', String(button.dataset.choose === side));
   if (chosen.size < disk.conflicts.length) return;
-  // Every conflict chosen: the page now edits the file on disk, with its own changes on top.
+  rebase(disk, chosen);
+}
+
+// The page now edits `disk`, the file on disk, with its own changed values on top and, for
+// the values changed on both sides, those `chosen`.
+function rebase(disk, chosen) {
   remember(null);
   const mine = new Map();
   for (const [where, value] of state.values) if (state.workValues.get(where) !== value) mine.set(where, value);
@@ -449,8 +454,49 @@ function choose(conflict, side, row) {
   for (const [where, value] of chosen) state.values.set(where, value);
   state.conflicts = null;
   $('#conflict-box').replaceChildren();
+  $('#disk-notice').replaceChildren();
   buildForm();
   afterChange();
+}
+
+// ---- A change on disk -------------------------------------------------------------------
+
+const POLL_MS = 3000;
+async function poll() {
+  try {
+    if (!state.base || state.saving || state.conflicts) return;
+    const { status, data } = await api('/api/version');
+    if (status !== 200 || data.version === state.base.version || state.saving) return;
+    const notice = $('#disk-notice');
+    if (notice.dataset.version === data.version) return;
+    notice.dataset.version = data.version;
+    const button = el('button', { type: 'button', 'data-action': 'reload', text: isDirty() ? 'Load it, keeping my edits' : 'Load it' });
+    button.addEventListener('click', reload);
+    notice.replaceChildren(el('p', { text: 'The file changed on disk since you loaded it (a colleague, git, ekb set).' }), button);
+  } finally {
+    setTimeout(poll, POLL_MS);
+  }
+}
+
+// Loads the file on disk: the page's own edits are kept on top; a value changed on both
+// sides is offered to choose, as a save would.
+async function reload() {
+  const { status, data } = await api('/api/file');
+  if (status !== 200) return;
+  const diskValues = valuesOf(data.fields);
+  const conflicts = [];
+  for (const [where, value] of state.values) {
+    const before = state.workValues.get(where);
+    if (value === before) continue;
+    const theirs = diskValues.get(where);
+    if (theirs !== before && theirs !== value) {
+      const [id, key] = where.split('|');
+      conflicts.push({ id: Number(id), key, mine: value, theirs: theirs ?? null });
+    }
+  }
+  $('#disk-notice').replaceChildren();
+  if (conflicts.length) showConflicts({ ...data, conflicts });
+  else rebase(data, new Map());
 }
 
 // ---- The map ----------------------------------------------------------------------------
@@ -542,6 +588,7 @@ async function start() {
   // The token is in the cookie now: keep it out of the address bar and the history.
   if (location.search) history.replaceState(null, '', '/');
   await runCheck();
+  setTimeout(poll, POLL_MS);
 }
 
 document.addEventListener('DOMContentLoaded', () => {
