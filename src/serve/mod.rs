@@ -14,8 +14,9 @@
 //!   `tour`: the ids in order).
 //! - `GET /api/version`: `{version}` of the file on disk now (the page asks every 3 s).
 //! - `POST /api/check` `{text, edits?}`: the edits applied to `text` with
-//!   [`crate::edit::apply`], then `{text, fields, tour, check}`, `check` being exactly what
-//!   `ekb check --format json` prints for that text.
+//!   [`crate::edit::apply`], then `{text, fields, tour, check, translations}`, `check` being
+//!   exactly what `ekb check --format json` prints for that text, `translations` each
+//!   language's status as `ekb translations --format json` counts it.
 //! - `POST /api/save` `{base_version, text?, edits}`: the edits made on `text` (the page's
 //!   version with the fixes it applied; else the version `base_version`) and written
 //!   through the locking writer ([`crate::write`]); when the file changed on disk since,
@@ -394,6 +395,12 @@ impl Server<'_> {
         );
         let mut summary = Summary::default();
         summary.merge(&checked.summary());
+        let catalog = crate::translations::Catalog::new(&checked);
+        let translations: Vec<crate::translations::Status> = crate::robot::Language::ALL
+            .iter()
+            .map(|&language| catalog.status(language))
+            .collect();
+        drop(catalog);
         let mut findings = Vec::new();
         let rendered = render::render(
             Format::Json,
@@ -417,6 +424,7 @@ impl Server<'_> {
             "fields": found.fields,
             "tour": found.tour,
             "check": check,
+            "translations": translations,
         });
         self.last_checked = Some(text);
         Reply::json(200, &value)

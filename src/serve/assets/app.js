@@ -262,7 +262,20 @@ async function runCheck() {
   }
   state.lastChecked = data;
   showFindings(data);
+  showTranslations(data.translations || []);
   refreshMap();
+}
+
+function showTranslations(statuses) {
+  const box = $('#translations');
+  box.replaceChildren();
+  for (const status of statuses) {
+    box.append(el('span', {
+      class: 'translation', 'data-translation': status.code,
+      title: `${status.translated} of ${status.total} messages translated, ${status.untranslated} untranslated`,
+      text: `${status.language} ${status.translated_percent}%`,
+    }));
+  }
 }
 
 // ---- Findings ---------------------------------------------------------------------------
