@@ -320,7 +320,9 @@ function findingNode(finding, index, lineText) {
     el('span', { class: 'rule', text: finding.rule }), el('span', { class: 'message', text: finding.message }));
   node.append(head);
   if (lineText !== undefined && lineText !== null) {
-    node.append(el('pre', { 'aria-label': `Line ${finding.line} as written`, text: `${finding.line}: ${lineText.replace(/\r$/, '')}` }));
+    const written = lineText.replace(/\r$/, '');
+    node.append(el('pre', { 'aria-label': `Line ${finding.line} as written`, text: `${finding.line}: ${written}` }));
+    node.append(lineEditor(finding.line, written, index));
   }
   if (finding.help) node.append(el('p', { class: 'help', text: finding.help }));
   if (finding.fix) {
@@ -329,6 +331,19 @@ function findingNode(finding, index, lineText) {
     node.append(button);
   }
   return node;
+}
+
+// A line that is no field, edited as text: it replaces the line, as a fix would.
+function lineEditor(line, written, index) {
+  const input = el('input', { type: 'text', id: `line-edit-${index}`, 'data-line-edit': String(line), size: 60 });
+  input.value = written;
+  const apply = el('button', { type: 'button', 'data-action': 'apply-line', text: 'Change the line' });
+  apply.addEventListener('click', () => {
+    if (input.value === written || /[\r\n]/.test(input.value)) return;
+    applyFix({ edits: [{ line, column: 1, end_line: line, end_column: Array.from(written).length + 1, replacement: input.value }] });
+  });
+  return el('details', {}, el('summary', { text: 'Edit the line as text' }),
+    el('label', { for: input.id, text: `Line ${line}` }), ' ', input, ' ', apply);
 }
 
 function renderSummary(counts, entries) {
