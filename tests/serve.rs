@@ -221,8 +221,9 @@ fn the_server_guards_checks_and_saves_one_line() {
         "edits": [{ "id": 2, "key": "robotLocationDescription", "value": "Pepper, again" }],
     });
     let conflict = server.post("/api/save", &own_origin, &again.to_string());
-    assert_eq!(conflict.status, 409, "{}", conflict.body);
+    assert_eq!(conflict.status, 200, "{}", conflict.body);
     let conflict: serde_json::Value = serde_json::from_str(&conflict.body).unwrap();
+    assert_eq!(conflict["saved"], false);
     assert_eq!(conflict["conflicts"][0]["theirs"], "The other Pepper");
     assert_eq!(std::fs::read_to_string(&file).unwrap(), written);
 

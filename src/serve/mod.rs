@@ -20,9 +20,11 @@
 //! - `POST /api/save` `{base_version, text?, edits}`: the edits made on `text` (the page's
 //!   version with the fixes it applied; else the version `base_version`) and written
 //!   through the locking writer ([`crate::write`]); when the file changed on disk since,
-//!   the edits are merged with it ([`merge`]) and the fixes dropped. 200 `{name, text,
-//!   version, fields, tour, merged, fixes_dropped}`, or 409 `{conflicts, name, text,
-//!   version, fields, tour}` (the file on disk) with nothing written.
+//!   the edits are merged with it ([`merge`]) and the fixes dropped. 200 `{saved: true,
+//!   conflicts: [], merged, fixes_dropped, name, text, version, fields, tour}` (the file as
+//!   written), or, a value changed on both sides, 200 `{saved: false, conflicts: [{id, key,
+//!   mine, theirs}], name, text, version, fields, tour}` (the file on disk) with nothing
+//!   written.
 //! - `GET /api/map`: the SVG of `ekb map` for the text last checked (else the file).
 
 pub mod assets;
@@ -466,9 +468,12 @@ impl Server<'_> {
                 match merge::merge(base, disk, &edits) {
                     Ok(edits) => (disk, edits),
                     Err(conflicts) => {
+                        // 200, not 409: the browser logs every 4xx as a console error, and a
+                        // conflict is an answer, not a failure.
                         let mut value = self.on_disk(disk);
+                        value["saved"] = json!(false);
                         value["conflicts"] = json!(conflicts);
-                        return Reply::json(409, &value);
+                        return Reply::json(200, &value);
                     }
                 }
             }
@@ -488,6 +493,8 @@ impl Server<'_> {
             }
         }
         let mut value = self.on_disk(&text);
+        value["saved"] = json!(true);
+        value["conflicts"] = json!([]);
         value["merged"] = json!(merged);
         value["fixes_dropped"] = json!(fixes_dropped);
         Reply::json(200, &value)

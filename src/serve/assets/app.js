@@ -287,6 +287,10 @@ function fieldAtLine(checked, line) {
 function showFindings(checked) {
   for (const box of document.querySelectorAll('.findings')) box.replaceChildren();
   for (const box of document.querySelectorAll('.has-error, .has-warning')) box.classList.remove('has-error', 'has-warning');
+  for (const input of document.querySelectorAll('[aria-describedby^="finding-"]')) {
+    input.removeAttribute('aria-describedby');
+    input.removeAttribute('aria-invalid');
+  }
   const lines = checked.text.split('\n');
   const diagnostics = checked.check.diagnostics.slice().sort((a, b) =>
     (SEVERITY_ORDER[a.severity] ?? 9) - (SEVERITY_ORDER[b.severity] ?? 9) || a.line - b.line || a.column - b.column);
@@ -300,6 +304,12 @@ function showFindings(checked) {
       box.classList.add(`has-${finding.severity}`);
       $('.findings', box).append(node);
       target = $('input, textarea', box);
+      // Screen readers read a field's findings with it.
+      for (const input of box.querySelectorAll('input, textarea')) {
+        const described = input.getAttribute('aria-describedby');
+        input.setAttribute('aria-describedby', described ? `${described} ${node.id}` : node.id);
+        if (finding.severity === 'error') input.setAttribute('aria-invalid', 'true');
+      }
     } else {
       const id = finding.location_id;
       box = id !== null && id !== undefined && $(`[data-findings-of="${CSS.escape(String(id))}"]`);
@@ -313,7 +323,6 @@ function showFindings(checked) {
 function findingNode(finding, index, lineText) {
   const node = el('div', {
     class: 'finding', id: `finding-${index}`, 'data-rule': finding.rule, 'data-severity': finding.severity,
-    role: finding.severity === 'error' ? 'alert' : null,
   });
   const head = el('div');
   head.append(el('span', { class: `sev-${finding.severity}`, text: finding.severity }), ' ',
@@ -409,6 +418,7 @@ function loaded(file) {
   state.work = file.text;
   state.workValues = valuesOf(file.fields);
   $('#file-name').textContent = file.name;
+  document.title = `${file.name} — ekb serve`;
 }
 
 async function save() {
@@ -419,7 +429,9 @@ async function save() {
     const request = { base_version: state.base.version, edits: edits() };
     if (state.work !== state.base.text) request.text = state.work;
     const { status, data } = await api('/api/save', request);
-    if (status === 200) {
+    if (status === 200 && data.conflicts && data.conflicts.length) {
+      showConflicts(data);
+    } else if (status === 200) {
       loaded(data);
       state.values = valuesOf(data.fields);
       fillForm();
@@ -427,8 +439,6 @@ async function save() {
       const dropped = data.fixes_dropped ? ' (the file had changed: apply your fixes again)' : '';
       setState('saved', `Saved${merged}${dropped}`);
       scheduleCheck();
-    } else if (status === 409) {
-      showConflicts(data);
     } else {
       setState('dirty', `Not saved: ${typeof data === 'string' ? data : JSON.stringify(data)}`);
     }
