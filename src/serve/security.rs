@@ -29,9 +29,10 @@ pub fn host_allowed(host: Option<&str>, port: u16) -> bool {
     };
     let host = host.trim();
     LOOPBACK_NAMES.iter().any(|name| {
-        host.len() > name.len()
-            && host[..name.len()].eq_ignore_ascii_case(name)
-            && host[name.len()..] == format!(":{port}")
+        // `get`, not slicing: a byte of a multi-byte character is no boundary.
+        host.get(..name.len())
+            .is_some_and(|start| start.eq_ignore_ascii_case(name))
+            && host.get(name.len()..) == Some(format!(":{port}").as_str())
     })
 }
 
@@ -150,6 +151,8 @@ mod tests {
             "localhost.evil.example:8080",
             "127.0.0.1:8080.evil.example",
             "127.0.0.2:8080",
+            "127.0.0é:8080",
+            "localhosté:8080",
             "",
         ] {
             assert!(!host_allowed(Some(host), 8080), "{host}");
