@@ -69,6 +69,68 @@ pub fn fields(text: &str) -> Fields {
     found
 }
 
+/// `text` with its tour made `stops`: the arguments of its `tourSpecification` line (the
+/// last one, which the robot reads) rewritten as `N id…`, every other byte as it was; a file
+/// with no tour line gets one at its end.
+pub fn set_tour(text: &str, stops: &[u32]) -> String {
+    let mut args = stops.len().to_string();
+    for stop in stops {
+        args.push(' ');
+        args.push_str(&stop.to_string());
+    }
+    let mut last = None;
+    for line in syntax::lines(text) {
+        if let Body::Entry { key, args } = line.body {
+            if Key::from_name(key.text(text)) == Some(Key::TourSpecification) {
+                last = Some(args);
+            }
+        }
+    }
+    match last {
+        Some(span) if !span.is_empty() => {
+            let (start, end) = (span.start as usize, span.end as usize);
+            format!("{}{args}{}", &text[..start], &text[end..])
+        }
+        _ => {
+            let ending = if text.contains("\r\n") { "\r\n" } else { "\n" };
+            let gap = if text.is_empty() || text.ends_with('\n') {
+                ""
+            } else {
+                ending
+            };
+            format!("{text}{gap}tourSpecification {args}{ending}")
+        }
+    }
+}
+
+/// The id of a conflict over the tour, which belongs to no location (ids start at 1).
+pub const TOUR_ID: u32 = 0;
+
+/// The page's tour `mine` over `disk`, the file on disk, given `base`, the tour the page
+/// loaded (`None`: unknown): the tour to write, or a conflict when both changed it.
+pub fn merge_tour(
+    base: Option<&[u32]>,
+    disk: &[u32],
+    mine: &[u32],
+) -> Result<Option<Vec<u32>>, Conflict> {
+    let line = |stops: &[u32]| {
+        let ids: Vec<String> = stops.iter().map(u32::to_string).collect();
+        ids.join(" ")
+    };
+    if disk == mine {
+        return Ok(None);
+    }
+    if base == Some(disk) {
+        return Ok(Some(mine.to_vec()));
+    }
+    Err(Conflict {
+        id: TOUR_ID,
+        key: Key::TourSpecification.name(),
+        mine: line(mine),
+        theirs: Some(line(disk)),
+    })
+}
+
 /// The values of `text` by location and key.
 fn values(text: &str) -> HashMap<(u32, &'static str), String> {
     fields(text)
@@ -169,6 +231,39 @@ mod tests {
                 (1, "robotLocation", "1.0 2.0 90", 2),
                 (2, "robotLocationDescription", "Lab two", 5),
             ]
+        );
+    }
+
+    #[test]
+    fn the_tour_line_is_rewritten_in_place() {
+        let text =
+            "# the tour\ntourSpecification   3 1 2 3 \r\nrobotLocationDescription 1 Hall\r\n";
+        assert_eq!(
+            set_tour(text, &[3, 1]),
+            "# the tour\ntourSpecification   2 3 1 \r\nrobotLocationDescription 1 Hall\r\n"
+        );
+        assert_eq!(
+            set_tour("robotLocationDescription 1 Hall", &[1]),
+            "robotLocationDescription 1 Hall\ntourSpecification 1 1\n"
+        );
+        assert_eq!(fields(&set_tour(BASE, &[1, 2, 1])).tour, vec![1, 2, 1]);
+    }
+
+    #[test]
+    fn a_tour_changed_on_both_sides_is_a_conflict() {
+        assert_eq!(
+            merge_tour(Some(&[1, 2]), &[1, 2], &[2, 1]),
+            Ok(Some(vec![2, 1]))
+        );
+        assert_eq!(merge_tour(Some(&[1, 2]), &[2, 1], &[2, 1]), Ok(None));
+        let conflict = merge_tour(Some(&[1, 2]), &[1], &[2, 1]).unwrap_err();
+        assert_eq!(
+            (
+                conflict.id,
+                conflict.mine.as_str(),
+                conflict.theirs.as_deref()
+            ),
+            (TOUR_ID, "2 1", Some("1"))
         );
     }
 

@@ -13,18 +13,19 @@
 //!   `[{id, key, value, line}]`, the value the robot reads for each key of each location;
 //!   `tour`: the ids in order).
 //! - `GET /api/version`: `{version}` of the file on disk now (the page asks every 3 s).
-//! - `POST /api/check` `{text, edits?}`: the edits applied to `text` with
-//!   [`crate::edit::apply`], then `{text, fields, tour, check, translations}`, `check` being
+//! - `POST /api/check` `{text, edits?, tour?}`: the edits applied to `text` with
+//!   [`crate::edit::apply`] (and the tour line rewritten to `tour`, [`merge::set_tour`]), then `{text, fields, tour, check, translations}`, `check` being
 //!   exactly what `ekb check --format json` prints for that text, `translations` each
 //!   language's status as `ekb translations --format json` counts it.
-//! - `POST /api/save` `{base_version, text?, edits}`: the edits made on `text` (the page's
+//! - `POST /api/save` `{base_version, text?, edits, tour?}`: the edits made on `text` (the page's
 //!   version with the fixes it applied; else the version `base_version`) and written
 //!   through the locking writer ([`crate::write`]); when the file changed on disk since,
 //!   the edits are merged with it ([`merge`]) and the fixes dropped. 200 `{saved: true,
 //!   conflicts: [], merged, fixes_dropped, name, text, version, fields, tour}` (the file as
 //!   written), or, a value changed on both sides, 200 `{saved: false, conflicts: [{id, key,
 //!   mine, theirs}], name, text, version, fields, tour}` (the file on disk) with nothing
-//!   written.
+//!   written; a conflict over the tour has id 0 and key `tourSpecification`, its values the
+//!   ids in order.
 //! - `GET /api/map`: the SVG of `ekb map` for the text last checked (else the file).
 
 pub mod assets;
@@ -179,6 +180,9 @@ struct CheckIn {
     text: String,
     #[serde(default)]
     edits: Vec<EditIn>,
+    /// The tour's stops, in order, when the page changed them.
+    #[serde(default)]
+    tour: Option<Vec<u32>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -189,6 +193,9 @@ struct SaveIn {
     #[serde(default)]
     text: Option<String>,
     edits: Vec<EditIn>,
+    /// The tour's stops, in order, when the page changed them.
+    #[serde(default)]
+    tour: Option<Vec<u32>>,
 }
 
 /// Starts the server on 127.0.0.1:`port` (0: a free port), hands `announce` the address to
@@ -381,13 +388,16 @@ impl Server<'_> {
             Err(reply) => return reply,
         };
         let edits = without_empty_additions(&input.text, edits);
-        let text = match edits.is_empty() {
+        let mut text = match edits.is_empty() {
             true => input.text,
             false => match edit::apply(&input.text, &edits) {
                 Ok(edited) => edited.text,
                 Err(error) => return Reply::plain(422, error.to_string()),
             },
         };
+        if let Some(tour) = input.tour.filter(|tour| *tour != fields(&text).tour) {
+            text = merge::set_tour(&text, &tour);
+        }
         let source = SourceFile::from_text(self.name.clone(), text);
         let checked = check_on_map(
             &source,
@@ -456,8 +466,8 @@ impl Server<'_> {
         // The page's fixes are kept when the file is still the version they were made on;
         // else only its value edits are merged, and the page shows the findings again.
         let fixes_dropped = merged && input.text.is_some();
-        let (onto, edits) = match (merged, input.text.as_deref()) {
-            (false, fixed) => (fixed.unwrap_or(disk), edits),
+        let (onto, edits, tour) = match (merged, input.text.as_deref()) {
+            (false, fixed) => (fixed.unwrap_or(disk), edits, input.tour),
             (true, fixed) => {
                 let base = fixed.or_else(|| {
                     self.known
@@ -465,9 +475,19 @@ impl Server<'_> {
                         .find(|(version, _)| *version == input.base_version)
                         .map(|(_, text)| text.as_str())
                 });
-                match merge::merge(base, disk, &edits) {
-                    Ok(edits) => (disk, edits),
-                    Err(conflicts) => {
+                let values = merge::merge(base, disk, &edits);
+                let tour = match &input.tour {
+                    Some(mine) => {
+                        let base_tour = base.map(|base| fields(base).tour);
+                        merge::merge_tour(base_tour.as_deref(), &fields(disk).tour, mine)
+                    }
+                    None => Ok(None),
+                };
+                match (values, tour) {
+                    (Ok(edits), Ok(tour)) => (disk, edits, tour),
+                    (values, tour) => {
+                        let mut conflicts = values.err().unwrap_or_default();
+                        conflicts.extend(tour.err());
                         // 200, not 409: the browser logs every 4xx as a console error, and a
                         // conflict is an answer, not a failure.
                         let mut value = self.on_disk(disk);
@@ -479,10 +499,13 @@ impl Server<'_> {
             }
         };
         let edits = without_empty_additions(onto, edits);
-        let text = match edit::apply(onto, &edits) {
+        let mut text = match edit::apply(onto, &edits) {
             Ok(edited) => edited.text,
             Err(error) => return Reply::plain(422, error.to_string()),
         };
+        if let Some(tour) = tour.filter(|tour| *tour != fields(&text).tour) {
+            text = merge::set_tour(&text, &tour);
+        }
         if text != disk {
             let written = match source.stamp() {
                 Some(stamp) => write::rewrite(&self.served.path, text.as_bytes(), stamp),

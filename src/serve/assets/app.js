@@ -16,6 +16,8 @@ const state = {
   work: '',            // the text the edits apply to
   workValues: new Map(), // "id|key" -> value in `work`
   values: new Map(),   // "id|key" -> value in the form
+  workTour: [],        // the tour's stops in `work`
+  tour: [],            // the tour's stops in the page
   lastChecked: null,   // the last /api/check answer
   undo: [],
   redo: [],
@@ -73,8 +75,11 @@ function edits() {
   return out;
 }
 
+const sameTour = (a, b) => a.length === b.length && a.every((id, i) => id === b[i]);
+const tourChanged = () => !sameTour(state.tour, state.workTour);
+
 function isDirty() {
-  return state.work !== state.base.text || edits().length > 0;
+  return state.work !== state.base.text || edits().length > 0 || tourChanged();
 }
 
 // ---- The form ---------------------------------------------------------------------------
@@ -194,16 +199,56 @@ function fillForm() {
   }
 }
 
+// ---- The tour ---------------------------------------------------------------------------
+
+function changeTour(next) {
+  remember(null);
+  state.tour = next;
+  state.lastPush = { at: 0, slot: null };
+  afterChange();
+}
+
+function renderTour() {
+  const list = $('#tour-list');
+  if (!list) return;
+  list.replaceChildren();
+  state.tour.forEach((id, index) => {
+    const description = state.values.get(slot(id, 'robotLocationDescription'));
+    const item = el('li', { 'data-stop': String(id) }, el('span', { class: 'stop-name', text: `Location ${id}${description ? ': ' + description : ''}` }));
+    const button = (action, label, text, disabled, next) => {
+      const b = el('button', { type: 'button', 'data-action': action, 'aria-label': label, text, disabled });
+      b.addEventListener('click', () => changeTour(next()));
+      return b;
+    };
+    const moved = (to) => () => { const next = state.tour.slice(); next.splice(index, 1); next.splice(to, 0, id); return next; };
+    item.append(' ',
+      button('tour-up', `Move stop ${index + 1} up`, '↑', index === 0, moved(index - 1)),
+      button('tour-down', `Move stop ${index + 1} down`, '↓', index === state.tour.length - 1, moved(index + 1)),
+      button('tour-remove', `Remove stop ${index + 1}`, 'Remove', false, () => state.tour.filter((_, i) => i !== index)));
+    list.append(item);
+  });
+  const select = $('#tour-add-id');
+  const ids = [...new Set([...state.values.keys()].map((where) => Number(where.split('|')[0])))].sort((a, b) => a - b);
+  const chosen = select.value;
+  select.replaceChildren(...ids.map((id) => el('option', { value: String(id), text: `Location ${id}` })));
+  if (ids.map(String).includes(chosen)) select.value = chosen;
+}
+
 // ---- Editing, undo, redo ----------------------------------------------------------------
 
 function snapshot() {
-  return { work: state.work, workValues: new Map(state.workValues), values: new Map(state.values) };
+  return {
+    work: state.work, workValues: new Map(state.workValues), values: new Map(state.values),
+    workTour: state.workTour.slice(), tour: state.tour.slice(),
+  };
 }
 
 function restore(snap) {
   state.work = snap.work;
   state.workValues = new Map(snap.workValues);
   state.values = new Map(snap.values);
+  state.workTour = snap.workTour.slice();
+  state.tour = snap.tour.slice();
   fillForm();
   afterChange();
 }
@@ -240,6 +285,7 @@ function redo() {
 }
 
 function afterChange() {
+  renderTour();
   if (state.conflicts) return scheduleCheck();
   if (isDirty()) setState('dirty', 'Unsaved changes');
   else setState('clean', 'No unsaved changes');
@@ -254,7 +300,9 @@ function scheduleCheck() {
 
 async function runCheck() {
   const seq = ++state.seq;
-  const { status, data } = await api('/api/check', { text: state.work, edits: edits() });
+  const request = { text: state.work, edits: edits() };
+  if (tourChanged()) request.tour = state.tour;
+  const { status, data } = await api('/api/check', request);
   if (seq !== state.seq) return; // a newer check is on its way
   if (status !== 200) {
     $('#status').textContent = `Cannot check: ${typeof data === 'string' ? data : JSON.stringify(data)}`;
@@ -404,8 +452,11 @@ async function applyFix(fix) {
   state.work = data.text;
   state.workValues = valuesOf(data.fields);
   state.values = valuesOf(data.fields);
+  state.workTour = data.tour.slice();
+  state.tour = data.tour.slice();
   state.lastChecked = data;
   fillForm();
+  renderTour();
   if (isDirty()) setState('dirty', 'Unsaved changes'); else setState('clean', 'No unsaved changes');
   showFindings(data);
   refreshMap();
@@ -417,6 +468,7 @@ function loaded(file) {
   state.base = file;
   state.work = file.text;
   state.workValues = valuesOf(file.fields);
+  state.workTour = file.tour.slice();
   $('#file-name').textContent = file.name;
   document.title = `${file.name} — ekb serve`;
 }
@@ -428,13 +480,16 @@ async function save() {
   try {
     const request = { base_version: state.base.version, edits: edits() };
     if (state.work !== state.base.text) request.text = state.work;
+    if (tourChanged()) request.tour = state.tour;
     const { status, data } = await api('/api/save', request);
     if (status === 200 && data.conflicts && data.conflicts.length) {
       showConflicts(data);
     } else if (status === 200) {
       loaded(data);
       state.values = valuesOf(data.fields);
+      state.tour = data.tour.slice();
       fillForm();
+      renderTour();
       const merged = data.merged ? ', merged with the changes on disk' : '';
       const dropped = data.fixes_dropped ? ' (the file had changed: apply your fixes again)' : '';
       setState('saved', `Saved${merged}${dropped}`);
@@ -457,7 +512,7 @@ function showConflicts(disk) {
     el('p', { class: 'hint', text: 'The file changed on disk since you loaded it, and these values were changed on both sides. Nothing was saved. Choose which value to keep for each, then save again.' }));
   for (const conflict of disk.conflicts) {
     const row = el('div', { class: 'choice', 'data-key': conflict.key, 'data-id': String(conflict.id) });
-    row.append(el('strong', { text: `Location ${conflict.id}, ${conflict.key}` }));
+    row.append(el('strong', { text: conflict.id === 0 ? 'The tour' : `Location ${conflict.id}, ${conflict.key}` }));
     const mine = el('button', { type: 'button', 'data-choose': 'mine' });
     mine.append('Keep mine: ', el('span', { class: 'value', text: conflict.mine }));
     const theirs = el('button', { type: 'button', 'data-choose': 'theirs' });
@@ -486,10 +541,15 @@ function rebase(disk, chosen) {
   remember(null);
   const mine = new Map();
   for (const [where, value] of state.values) if (state.workValues.get(where) !== value) mine.set(where, value);
+  const myTour = tourChanged() ? state.tour.slice() : null;
   loaded(disk);
   state.values = valuesOf(disk.fields);
+  state.tour = myTour || disk.tour.slice();
   for (const [where, value] of mine) state.values.set(where, value);
-  for (const [where, value] of chosen) state.values.set(where, value);
+  for (const [where, value] of chosen) {
+    if (where === slot(0, 'tourSpecification')) state.tour = value.split(' ').filter((id) => id !== '').map(Number);
+    else state.values.set(where, value);
+  }
   state.conflicts = null;
   $('#conflict-box').replaceChildren();
   $('#disk-notice').replaceChildren();
@@ -531,6 +591,9 @@ async function reload() {
       const [id, key] = where.split('|');
       conflicts.push({ id: Number(id), key, mine: value, theirs: theirs ?? null });
     }
+  }
+  if (tourChanged() && !sameTour(data.tour, state.workTour) && !sameTour(data.tour, state.tour)) {
+    conflicts.push({ id: 0, key: 'tourSpecification', mine: state.tour.join(' '), theirs: data.tour.join(' ') });
   }
   $('#disk-notice').replaceChildren();
   if (conflicts.length) showConflicts({ ...data, conflicts });
@@ -621,7 +684,9 @@ async function start() {
   }
   loaded(data);
   state.values = valuesOf(data.fields);
+  state.tour = data.tour.slice();
   buildForm();
+  renderTour();
   setState('clean', 'No unsaved changes');
   // The token is in the cookie now: keep it out of the address bar and the history.
   if (location.search) history.replaceState(null, '', '/');
@@ -631,6 +696,10 @@ async function start() {
 
 document.addEventListener('DOMContentLoaded', () => {
   $('[data-action="save"]').addEventListener('click', save);
+  $('[data-action="tour-add"]').addEventListener('click', () => {
+    const id = Number($('#tour-add-id').value);
+    if (id) changeTour(state.tour.concat([id]));
+  });
   $('[data-action="undo"]').addEventListener('click', undo);
   $('[data-action="redo"]').addEventListener('click', redo);
   document.addEventListener('keydown', (event) => {
