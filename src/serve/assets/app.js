@@ -626,8 +626,13 @@ async function refreshMap() {
       pose.setAttribute('data-pose-handle', pose.getAttribute('data-map-location'));
       pose.setAttribute('tabindex', '0');
       pose.setAttribute('role', 'button');
-      pose.setAttribute('aria-label', `Pose of location ${pose.getAttribute('data-map-location')}: drag to move, or edit its x and y fields`);
-      pose.addEventListener('pointerdown', (event) => startDrag(event, node, pose));
+      pose.setAttribute('aria-label', `Pose of location ${pose.getAttribute('data-map-location')}: drag to move, Shift-drag to turn, or edit its fields`);
+      pose.addEventListener('pointerdown', (event) => startDrag(event, node, pose, 'pose'));
+    }
+    for (const target of node.querySelectorAll('g.gesture[data-map-location]')) {
+      target.setAttribute('data-target-handle', target.getAttribute('data-map-location'));
+      target.setAttribute('aria-label', `Gesture target of location ${target.getAttribute('data-map-location')}: drag to move, or edit its fields`);
+      target.addEventListener('pointerdown', (event) => startDrag(event, node, target, 'target'));
     }
     $('#map-box').replaceChildren(node);
   } finally {
@@ -636,42 +641,65 @@ async function refreshMap() {
 }
 
 let dragging = null;
-function startDrag(event, svg, pose) {
+// Drags a stop's pose (its x and y), or with Shift turns its heading (θ); or drags a
+// gesture target (its x and y). The fields follow; the map is redrawn after the check.
+function startDrag(event, svg, handle, kind) {
   const plot = svg.querySelector('#plot');
   const [ox, oy] = (plot.getAttribute('data-origin') || '0 0').split(' ').map(Number);
   const scale = Number(plot.getAttribute('data-scale')) || 1;
-  const id = Number(pose.getAttribute('data-pose-handle'));
-  const key = poseKey(id, state.lastChecked ? state.lastChecked.fields : state.base.fields);
-  const transform = pose.getAttribute('transform') || '';
-  const rotate = (transform.match(/rotate\(([^)]*)\)/) || [])[1] || '0';
+  const id = Number(handle.getAttribute(kind === 'target' ? 'data-target-handle' : 'data-pose-handle'));
+  const fields = state.lastChecked ? state.lastChecked.fields : state.base.fields;
+  const key = kind === 'target' ? 'gestureTarget' : poseKey(id, fields);
+  const turning = kind === 'pose' && event.shiftKey;
+  const transform = handle.getAttribute('transform') || '';
+  const [tx, ty] = ((transform.match(/translate\(([^)]*)\)/) || [])[1] || '0 0').split(/[ ,]+/).map(Number);
+  let rotate = (transform.match(/rotate\(([^)]*)\)/) || [])[1] || '0';
   dragging = { id, key };
-  pose.setPointerCapture(event.pointerId);
+  handle.setPointerCapture(event.pointerId);
   event.preventDefault();
   remember(null);
+  const set = (index, value) => {
+    const tokens = splitValue(state.values.get(slot(id, key)));
+    while (tokens.length < 3) tokens.push('0');
+    tokens[index] = value;
+    state.values.set(slot(id, key), tokens.join(' '));
+  };
   const move = (e) => {
     const point = svg.createSVGPoint();
     point.x = e.clientX;
     point.y = e.clientY;
     const local = point.matrixTransform(svg.getScreenCTM().inverse());
-    pose.setAttribute('transform', `translate(${local.x.toFixed(1)} ${local.y.toFixed(1)}) rotate(${rotate})`);
     const x = ((local.x - ox) / scale).toFixed(2);
     const y = ((oy - local.y) / scale).toFixed(2);
-    const tokens = splitValue(state.values.get(slot(id, key)));
-    tokens[0] = x;
-    tokens[1] = y;
-    if (tokens.length < 3) tokens[2] = tokens[2] || '0';
-    state.values.set(slot(id, key), tokens.join(' '));
+    if (turning) {
+      // SVG turns clockwise: the heading is the angle to the pointer, counter-clockwise.
+      const theta = Math.round((Math.atan2(-(local.y - ty), local.x - tx) * 180) / Math.PI);
+      rotate = String(-theta);
+      handle.setAttribute('transform', `translate(${tx} ${ty}) rotate(${rotate})`);
+      set(2, String(theta));
+    } else if (kind === 'pose') {
+      handle.setAttribute('transform', `translate(${local.x.toFixed(1)} ${local.y.toFixed(1)}) rotate(${rotate})`);
+      set(0, x);
+      set(1, y);
+    } else {
+      const circle = handle.querySelector('circle');
+      const line = handle.querySelector('line');
+      if (circle) { circle.setAttribute('cx', local.x.toFixed(1)); circle.setAttribute('cy', local.y.toFixed(1)); }
+      if (line) { line.setAttribute('x2', local.x.toFixed(1)); line.setAttribute('y2', local.y.toFixed(1)); }
+      set(0, x);
+      set(1, y);
+    }
     fillForm();
   };
   const up = () => {
-    pose.removeEventListener('pointermove', move);
-    pose.removeEventListener('pointerup', up);
+    handle.removeEventListener('pointermove', move);
+    handle.removeEventListener('pointerup', up);
     dragging = null;
     state.lastPush = { at: 0, slot: null };
     afterChange();
   };
-  pose.addEventListener('pointermove', move);
-  pose.addEventListener('pointerup', up);
+  handle.addEventListener('pointermove', move);
+  handle.addEventListener('pointerup', up);
 }
 
 // ---- Start ------------------------------------------------------------------------------
