@@ -328,8 +328,16 @@ function showTranslations(statuses) {
 
 // ---- Findings ---------------------------------------------------------------------------
 
-function fieldAtLine(checked, line) {
-  return checked.fields.find((field) => field.line === line);
+// The field a finding is about: the one on its line; for a value the file lacks
+// (`missing-field`, which points at the location's first line), the key its message names.
+function fieldOf(checked, finding) {
+  if (finding.rule === 'missing-field' && finding.location_id !== null && finding.location_id !== undefined) {
+    const named = (finding.message.match(/`([A-Za-z]+)`/) || [])[1];
+    if (named && document.querySelector(`[data-field="${CSS.escape(slot(finding.location_id, named))}"]`)) {
+      return { id: finding.location_id, key: named, missing: true };
+    }
+  }
+  return checked.fields.find((field) => field.line === finding.line);
 }
 
 function showFindings(checked) {
@@ -344,7 +352,7 @@ function showFindings(checked) {
     (SEVERITY_ORDER[a.severity] ?? 9) - (SEVERITY_ORDER[b.severity] ?? 9) || a.line - b.line || a.column - b.column);
   const summary = [];
   diagnostics.forEach((finding, index) => {
-    const field = fieldAtLine(checked, finding.line);
+    const field = fieldOf(checked, finding);
     let box = field && $(`[data-field="${CSS.escape(slot(field.id, field.key))}"]`);
     let target = null;
     const node = findingNode(finding, index, field ? null : lines[finding.line - 1]);
