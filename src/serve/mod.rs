@@ -13,11 +13,14 @@
 //!   `[{id, key, value, line}]`, the value the robot reads for each key of each location;
 //!   `tour`: the ids in order).
 //! - `GET /api/version`: `{version}` of the file on disk now (the page asks every 3 s).
-//! - `POST /api/check` `{text, edits?, tour?}`: the edits applied to `text` with
-//!   [`crate::edit::apply`] (and the tour line rewritten to `tour`, [`merge::set_tour`]), then `{text, fields, tour, check, translations}`, `check` being
+//! - `POST /api/check` `{text, edits?, tour?, add_locations?, remove_locations?}`: the
+//!   locations added ([`locations::add`]), the edits applied to `text` with
+//!   [`crate::edit::apply`], the locations removed, the tour line rewritten to `tour`
+//!   ([`merge::set_tour`]), then `{text, fields, tour, check, translations}`, `check` being
 //!   exactly what `ekb check --format json` prints for that text, `translations` each
 //!   language's status as `ekb translations --format json` counts it.
-//! - `POST /api/save` `{base_version, text?, edits, tour?}`: the edits made on `text` (the page's
+//! - `POST /api/save` `{base_version, text?, edits, tour?, add_locations?,
+//!   remove_locations?}`: the same changes made on `text` (the page's
 //!   version with the fixes it applied; else the version `base_version`) and written
 //!   through the locking writer ([`crate::write`]); when the file changed on disk since,
 //!   the edits are merged with it ([`merge`]) and the fixes dropped. 200 `{saved: true,
@@ -29,6 +32,7 @@
 //! - `GET /api/map`: the SVG of `ekb map` for the text last checked (else the file).
 
 pub mod assets;
+pub mod locations;
 pub mod merge;
 pub mod security;
 
@@ -183,6 +187,31 @@ struct CheckIn {
     /// The tour's stops, in order, when the page changed them.
     #[serde(default)]
     tour: Option<Vec<u32>>,
+    #[serde(flatten)]
+    locations: LocationsIn,
+}
+
+/// Locations the page added (a first line is written for each, then the edits fill it) and
+/// removed (every line of each).
+#[derive(Debug, Default, Deserialize)]
+struct LocationsIn {
+    #[serde(default)]
+    add_locations: Vec<u32>,
+    #[serde(default)]
+    remove_locations: Vec<u32>,
+}
+
+impl LocationsIn {
+    /// `text` with the locations added (a description from `edits`, else a placeholder).
+    fn add(&self, text: &str, edits: &[ValueEdit]) -> String {
+        locations::add(text, &self.add_locations, |id| {
+            edits
+                .iter()
+                .rev()
+                .find(|edit| edit.id == id && edit.key == Key::RobotLocationDescription)
+                .map_or_else(|| format!("New location {id}"), |edit| edit.value.clone())
+        })
+    }
 }
 
 #[derive(Debug, Deserialize)]
@@ -196,6 +225,8 @@ struct SaveIn {
     /// The tour's stops, in order, when the page changed them.
     #[serde(default)]
     tour: Option<Vec<u32>>,
+    #[serde(flatten)]
+    locations: LocationsIn,
 }
 
 /// Starts the server on 127.0.0.1:`port` (0: a free port), hands `announce` the address to
@@ -387,14 +418,16 @@ impl Server<'_> {
             Ok(edits) => edits,
             Err(reply) => return reply,
         };
-        let edits = without_empty_additions(&input.text, edits);
+        let text = input.locations.add(&input.text, &edits);
+        let edits = without_empty_additions(&text, edits);
         let mut text = match edits.is_empty() {
-            true => input.text,
-            false => match edit::apply(&input.text, &edits) {
+            true => text,
+            false => match edit::apply(&text, &edits) {
                 Ok(edited) => edited.text,
                 Err(error) => return Reply::plain(422, error.to_string()),
             },
         };
+        text = locations::remove(&text, &input.locations.remove_locations);
         if let Some(tour) = input.tour.filter(|tour| *tour != fields(&text).tour) {
             text = merge::set_tour(&text, &tour);
         }
@@ -498,11 +531,13 @@ impl Server<'_> {
                 }
             }
         };
-        let edits = without_empty_additions(onto, edits);
-        let mut text = match edit::apply(onto, &edits) {
+        let onto = input.locations.add(onto, &edits);
+        let edits = without_empty_additions(&onto, edits);
+        let mut text = match edit::apply(&onto, &edits) {
             Ok(edited) => edited.text,
             Err(error) => return Reply::plain(422, error.to_string()),
         };
+        text = locations::remove(&text, &input.locations.remove_locations);
         if let Some(tour) = tour.filter(|tour| *tour != fields(&text).tour) {
             text = merge::set_tour(&text, &tour);
         }

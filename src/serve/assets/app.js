@@ -18,6 +18,8 @@ const state = {
   values: new Map(),   // "id|key" -> value in the form
   workTour: [],        // the tour's stops in `work`
   tour: [],            // the tour's stops in the page
+  added: [],           // ids of locations added in the page (not yet in `work`)
+  removed: [],         // ids of locations removed in the page
   lastChecked: null,   // the last /api/check answer
   undo: [],
   redo: [],
@@ -67,6 +69,7 @@ function valuesOf(fields) {
 function edits() {
   const out = [];
   for (const [where, value] of state.values) {
+    if (state.removed.includes(Number(where.split('|')[0]))) continue;
     const before = state.workValues.get(where);
     if (value === before || (before === undefined && value === '')) continue;
     const [id, key] = where.split('|');
@@ -79,7 +82,16 @@ const sameTour = (a, b) => a.length === b.length && a.every((id, i) => id === b[
 const tourChanged = () => !sameTour(state.tour, state.workTour);
 
 function isDirty() {
-  return state.work !== state.base.text || edits().length > 0 || tourChanged();
+  return state.work !== state.base.text || edits().length > 0 || tourChanged()
+    || state.added.length > 0 || state.removed.length > 0;
+}
+
+// What the page sends besides the edits: the tour, the locations added and removed.
+function changes(request) {
+  if (tourChanged()) request.tour = state.tour;
+  if (state.added.length) request.add_locations = state.added;
+  if (state.removed.length) request.remove_locations = state.removed;
+  return request;
 }
 
 // ---- The form ---------------------------------------------------------------------------
@@ -144,9 +156,9 @@ function locationIds() {
   const seen = new Set();
   const order = [];
   for (const id of state.base.tour) if (!seen.has(id)) { seen.add(id); order.push(id); }
-  const ids = [...state.values.keys()].map((where) => Number(where.split('|')[0]));
+  const ids = allIds();
   for (const id of ids) if (!seen.has(id)) { seen.add(id); order.push(id); }
-  return order;
+  return order.filter((id) => !state.removed.includes(id) && (ids.includes(id) || state.base.tour.includes(id)));
 }
 
 function buildForm() {
@@ -160,6 +172,9 @@ function buildForm() {
     const description = state.values.get(slot(id, 'robotLocationDescription'));
     title.textContent = `Location ${id}${description ? ': ' + description : ''}${tourSet.has(id) ? '' : ' (not in the tour)'}`;
     const section = el('section', { 'data-location': String(id), id: `section-${id}`, 'aria-labelledby': title.id }, title);
+    const remove = el('button', { type: 'button', class: 'remove-location', 'data-action': 'location-remove', 'aria-label': `Remove location ${id}`, text: 'Remove this location' });
+    remove.addEventListener('click', () => removeLocation(id));
+    section.append(remove);
     section.append(el('div', { class: 'findings', 'data-findings-of': String(id) }));
     section.append(el('div', { class: 'row' },
       textField(id, 'robotLocationDescription', 'Description', true, false)));
@@ -197,6 +212,35 @@ function fillForm() {
       : value;
     if (input.value !== next) input.value = next;
   }
+}
+
+// ---- Locations added and removed --------------------------------------------------------
+
+function allIds() {
+  return [...new Set([...state.values.keys()].map((where) => Number(where.split('|')[0])))];
+}
+
+function addLocation() {
+  remember(null);
+  const id = Math.max(0, ...allIds(), ...state.removed) + 1;
+  state.added = state.added.concat([id]);
+  state.values.set(slot(id, 'robotLocationDescription'), `New location ${id}`);
+  state.lastPush = { at: 0, slot: null };
+  buildForm();
+  afterChange();
+  const input = document.getElementById(fieldId(id, 'robotLocationDescription'));
+  if (input) { input.scrollIntoView({ block: 'center' }); input.focus(); input.select(); }
+}
+
+function removeLocation(id) {
+  remember(null);
+  if (state.added.includes(id)) state.added = state.added.filter((other) => other !== id);
+  else state.removed = state.removed.concat([id]);
+  for (const where of [...state.values.keys()]) if (Number(where.split('|')[0]) === id) state.values.delete(where);
+  state.tour = state.tour.filter((stop) => stop !== id);
+  state.lastPush = { at: 0, slot: null };
+  buildForm();
+  afterChange();
 }
 
 // ---- The tour ---------------------------------------------------------------------------
@@ -240,6 +284,7 @@ function snapshot() {
   return {
     work: state.work, workValues: new Map(state.workValues), values: new Map(state.values),
     workTour: state.workTour.slice(), tour: state.tour.slice(),
+    added: state.added.slice(), removed: state.removed.slice(),
   };
 }
 
@@ -249,6 +294,10 @@ function restore(snap) {
   state.values = new Map(snap.values);
   state.workTour = snap.workTour.slice();
   state.tour = snap.tour.slice();
+  const sections = state.added.join() !== snap.added.join() || state.removed.join() !== snap.removed.join();
+  state.added = snap.added.slice();
+  state.removed = snap.removed.slice();
+  if (sections) buildForm();
   fillForm();
   afterChange();
 }
@@ -300,8 +349,7 @@ function scheduleCheck() {
 
 async function runCheck() {
   const seq = ++state.seq;
-  const request = { text: state.work, edits: edits() };
-  if (tourChanged()) request.tour = state.tour;
+  const request = changes({ text: state.work, edits: edits() });
   const { status, data } = await api('/api/check', request);
   if (seq !== state.seq) return; // a newer check is on its way
   if (status !== 200) {
@@ -456,13 +504,17 @@ async function applyFix(fix) {
   remember(null);
   const text = applyEdits(checked.text, fix.edits);
   const { status, data } = await api('/api/check', { text, edits: [] });
+  // `checked.text` already had the page's edits, locations and tour.
   if (status !== 200) return;
   state.work = data.text;
   state.workValues = valuesOf(data.fields);
   state.values = valuesOf(data.fields);
   state.workTour = data.tour.slice();
   state.tour = data.tour.slice();
+  state.added = [];
+  state.removed = [];
   state.lastChecked = data;
+  buildForm();
   fillForm();
   renderTour();
   if (isDirty()) setState('dirty', 'Unsaved changes'); else setState('clean', 'No unsaved changes');
@@ -486,16 +538,19 @@ async function save() {
   state.saving = true;
   setState('saving', 'Saving…');
   try {
-    const request = { base_version: state.base.version, edits: edits() };
+    const request = changes({ base_version: state.base.version, edits: edits() });
     if (state.work !== state.base.text) request.text = state.work;
-    if (tourChanged()) request.tour = state.tour;
     const { status, data } = await api('/api/save', request);
     if (status === 200 && data.conflicts && data.conflicts.length) {
       showConflicts(data);
     } else if (status === 200) {
+      const sections = state.added.length || state.removed.length;
       loaded(data);
       state.values = valuesOf(data.fields);
       state.tour = data.tour.slice();
+      state.added = [];
+      state.removed = [];
+      if (sections) buildForm();
       fillForm();
       renderTour();
       const merged = data.merged ? ', merged with the changes on disk' : '';
@@ -732,6 +787,7 @@ async function start() {
 
 document.addEventListener('DOMContentLoaded', () => {
   $('[data-action="save"]').addEventListener('click', save);
+  $('[data-action="location-add"]').addEventListener('click', addLocation);
   $('[data-action="tour-add"]').addEventListener('click', () => {
     const id = Number($('#tour-add-id').value);
     if (id) changeTour(state.tour.concat([id]));
