@@ -111,9 +111,10 @@ pub struct Head<'r> {
     pub length: Option<usize>,
 }
 
-/// The refusal of a request that a guard stops, in the order they are asked: the `Host`
-/// (421), the token (403), the `Origin` of a POST (403), the declared size (413). `None`:
-/// the request may be answered; `Some(TokenFound::Query)` then says to set the cookie.
+/// Whether a request may be answered: `Err` with the refusal (a plain-text reason) of the
+/// first guard that stops it, in the order they are asked: the `Host` (421), the token
+/// (403), the `Origin` of a POST (403), the declared size (413); `Ok` with where the token
+/// was (`TokenFound::Query`: the answer sets the cookie).
 pub fn guard(head: &Head<'_>, port: u16, token: &str) -> Result<TokenFound, Reply> {
     if !security::host_allowed(head.host, port) {
         return Err(Reply::plain(
