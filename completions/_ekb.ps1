@@ -53,6 +53,7 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('translations', 'translations', [CompletionResultType]::ParameterValue, 'How far each language is translated, message by message')
             [CompletionResult]::new('set', 'set', [CompletionResultType]::ParameterValue, 'Edit one value in place, losslessly')
             [CompletionResult]::new('lsp', 'lsp', [CompletionResultType]::ParameterValue, 'Run the language server (LSP, on standard input and output) for editors')
+            [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Edit the knowledge base in a local web page, checked as you type')
             [CompletionResult]::new('settings', 'settings', [CompletionResultType]::ParameterValue, 'Print the settings in force for a file, and where each comes from')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
@@ -521,6 +522,27 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
+        'ekb;serve' {
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'The port on 127.0.0.1 (0: a free one, chosen by the system)')
+            [CompletionResult]::new('--map-config', '--map-config', [CompletionResultType]::ParameterName, 'The robot''s mapGenerationConfiguration.ini: check poses against its map and draw on it')
+            [CompletionResult]::new('--map-image', '--map-image', [CompletionResultType]::ParameterName, 'A map image instead (PNG: white free, black occupied), with --map-size; the robot''s radius is taken as 0.3 m')
+            [CompletionResult]::new('--map-size', '--map-size', [CompletionResultType]::ParameterName, 'The map image''s width and height, in metres')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]')
+            [CompletionResult]::new('--color', '--color', [CompletionResultType]::ParameterName, 'When to use colour (NO_COLOR in the environment means never, unless `always`)')
+            [CompletionResult]::new('--reader', '--reader', [CompletionResultType]::ParameterName, 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]')
+            [CompletionResult]::new('--settings', '--settings', [CompletionResultType]::ParameterName, 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file''s folder or above')
+            [CompletionResult]::new('--open', '--open', [CompletionResultType]::ParameterName, 'Say to open the page in a browser (this version prints the address on standard error too; it starts no browser)')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print what is read, as it is read, on standard error')
+            [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('--quiet', '--quiet', [CompletionResultType]::ParameterName, 'Print only findings and errors, no summary')
+            [CompletionResult]::new('--isolated', '--isolated', [CompletionResultType]::ParameterName, 'Use no settings file: every rule, at its own severity')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
         'ekb;settings' {
             [CompletionResult]::new('--select', '--select', [CompletionResultType]::ParameterName, 'Run only these rules or categories (comma-separated), instead of those ekb.toml selects')
             [CompletionResult]::new('--extend-select', '--extend-select', [CompletionResultType]::ParameterName, 'Run these rules or categories as well')
@@ -560,6 +582,7 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             [CompletionResult]::new('translations', 'translations', [CompletionResultType]::ParameterValue, 'How far each language is translated, message by message')
             [CompletionResult]::new('set', 'set', [CompletionResultType]::ParameterValue, 'Edit one value in place, losslessly')
             [CompletionResult]::new('lsp', 'lsp', [CompletionResultType]::ParameterValue, 'Run the language server (LSP, on standard input and output) for editors')
+            [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Edit the knowledge base in a local web page, checked as you type')
             [CompletionResult]::new('settings', 'settings', [CompletionResultType]::ParameterValue, 'Print the settings in force for a file, and where each comes from')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
@@ -631,6 +654,9 @@ Register-ArgumentCompleter -Native -CommandName 'ekb' -ScriptBlock {
             break
         }
         'ekb;help;lsp' {
+            break
+        }
+        'ekb;help;serve' {
             break
         }
         'ekb;help;settings' {

@@ -64,6 +64,9 @@ _ekb() {
             ekb,rules)
                 cmd="ekb__subcmd__rules"
                 ;;
+            ekb,serve)
+                cmd="ekb__subcmd__serve"
+                ;;
             ekb,set)
                 cmd="ekb__subcmd__set"
                 ;;
@@ -127,6 +130,9 @@ _ekb() {
             ekb__subcmd__help,rules)
                 cmd="ekb__subcmd__help__subcmd__rules"
                 ;;
+            ekb__subcmd__help,serve)
+                cmd="ekb__subcmd__help__subcmd__serve"
+                ;;
             ekb__subcmd__help,set)
                 cmd="ekb__subcmd__help__subcmd__set"
                 ;;
@@ -182,7 +188,7 @@ _ekb() {
 
     case "${cmd}" in
         ekb)
-            opts="-v -q -h -V --config --color --verbose --reader --quiet --settings --isolated --help --version check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help"
+            opts="-v -q -h -V --config --color --verbose --reader --quiet --settings --isolated --help --version check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -494,7 +500,7 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__help)
-            opts="check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp settings help"
+            opts="check locations show tour diff export import fmt fix rules explain completions man map report mission translations set lsp serve settings help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -760,6 +766,20 @@ _ekb() {
             return 0
             ;;
         ekb__subcmd__help__subcmd__rules)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        ekb__subcmd__help__subcmd__serve)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -1392,6 +1412,52 @@ _ekb() {
                 return 0
             fi
             case "${prev}" in
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --color)
+                    COMPREPLY=($(compgen -W "auto always never" -- "${cur}"))
+                    return 0
+                    ;;
+                --reader)
+                    COMPREPLY=($(compgen -W "d5.4.2 2025-06 2026-02 2026-03 2026-04" -- "${cur}"))
+                    return 0
+                    ;;
+                --settings)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        ekb__subcmd__serve)
+            opts="-v -q -h -V --port --open --map-config --map-image --map-size --config --color --verbose --reader --quiet --settings --isolated --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --map-config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --map-image)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --map-size)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --config)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0

@@ -50,6 +50,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand translations 'How far each language is translated, message by message'
             cand set 'Edit one value in place, losslessly'
             cand lsp 'Run the language server (LSP, on standard input and output) for editors'
+            cand serve 'Edit the knowledge base in a local web page, checked as you type'
             cand settings 'Print the settings in force for a file, and where each comes from'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
@@ -490,6 +491,26 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand -V 'Print version'
             cand --version 'Print version'
         }
+        &'ekb;serve'= {
+            cand --port 'The port on 127.0.0.1 (0: a free one, chosen by the system)'
+            cand --map-config 'The robot''s mapGenerationConfiguration.ini: check poses against its map and draw on it'
+            cand --map-image 'A map image instead (PNG: white free, black occupied), with --map-size; the robot''s radius is taken as 0.3 m'
+            cand --map-size 'The map image''s width and height, in metres'
+            cand --config 'Configuration file [default: $EKB_CONFIG, else config/environmentKnowledgeBaseConfiguration.ini]'
+            cand --color 'When to use colour (NO_COLOR in the environment means never, unless `always`)'
+            cand --reader 'The version of the robot''s reader to check against [default: `reader` in ekb.toml, else d5.4.2 for a seed-dialect file, 2025-06 for any other]'
+            cand --settings 'Use this settings file instead of the nearest ekb.toml (or .ekb.toml) in the file''s folder or above'
+            cand --open 'Say to open the page in a browser (this version prints the address on standard error too; it starts no browser)'
+            cand -v 'Print what is read, as it is read, on standard error'
+            cand --verbose 'Print what is read, as it is read, on standard error'
+            cand -q 'Print only findings and errors, no summary'
+            cand --quiet 'Print only findings and errors, no summary'
+            cand --isolated 'Use no settings file: every rule, at its own severity'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
         &'ekb;settings'= {
             cand --select 'Run only these rules or categories (comma-separated), instead of those ekb.toml selects'
             cand --extend-select 'Run these rules or categories as well'
@@ -528,6 +549,7 @@ set edit:completion:arg-completer[ekb] = {|@words|
             cand translations 'How far each language is translated, message by message'
             cand set 'Edit one value in place, losslessly'
             cand lsp 'Run the language server (LSP, on standard input and output) for editors'
+            cand serve 'Edit the knowledge base in a local web page, checked as you type'
             cand settings 'Print the settings in force for a file, and where each comes from'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
@@ -577,6 +599,8 @@ set edit:completion:arg-completer[ekb] = {|@words|
         &'ekb;help;set'= {
         }
         &'ekb;help;lsp'= {
+        }
+        &'ekb;help;serve'= {
         }
         &'ekb;help;settings'= {
         }

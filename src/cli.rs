@@ -98,6 +98,8 @@ pub enum Command {
     Set(commands::set::Args),
     /// Run the language server (LSP, on standard input and output) for editors
     Lsp(commands::lsp::Args),
+    /// Edit the knowledge base in a local web page, checked as you type
+    Serve(commands::serve::Args),
     /// Print the settings in force for a file, and where each comes from
     Settings(commands::settings::Args),
 }
@@ -147,6 +149,7 @@ pub fn main() -> ExitCode {
         Command::Translations(args) => commands::translations::run(args, &context),
         Command::Set(args) => commands::set::run(args, &context),
         Command::Lsp(args) => commands::lsp::run(args, &context),
+        Command::Serve(args) => commands::serve::run(args, &context),
         Command::Settings(args) => commands::settings::run(args, &context),
     };
     let exit = outcome.unwrap_or_else(|error| {

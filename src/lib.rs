@@ -48,6 +48,7 @@ pub mod lsp;
 pub mod present;
 pub mod render;
 pub mod report;
+pub mod serve;
 pub mod translations;
 pub mod write;
 

@@ -18,6 +18,7 @@ pub mod named_values;
 pub mod report;
 pub mod rewrite;
 pub mod rules;
+pub mod serve;
 pub mod set;
 pub mod settings;
 pub mod show;
