@@ -33,9 +33,10 @@ mkdir -p target/wheel-data/scripts target/wheel-data/data/share/man/man1
 strip -o target/wheel-data/scripts/ekb target/release/ekb
 target/release/ekb man >target/wheel-data/data/share/man/man1/ekb.1
 doc=target/wheel-data/data/share/doc/ekb
-mkdir -p "$doc/docs" "$doc/editors/vscode"
+mkdir -p "$doc/docs/images" "$doc/editors/vscode"
 cp README.md CHANGELOG.md ARCHITECTURE.md BENCHMARKS.md "$doc/"
 cp docs/*.md "$doc/docs/"
+cp docs/images/*.png "$doc/docs/images/"
 cp editors/README.md "$doc/editors/"
 cp editors/vscode/README.md "$doc/editors/vscode/"
 "$maturin" build --quiet --locked --release --strip -m crates/ekb-python/Cargo.toml \

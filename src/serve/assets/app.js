@@ -172,7 +172,7 @@ function buildForm() {
     const description = state.values.get(slot(id, 'robotLocationDescription'));
     title.textContent = `Location ${id}${description ? ': ' + description : ''}${tourSet.has(id) ? '' : ' (not in the tour)'}`;
     const section = el('section', { 'data-location': String(id), id: `section-${id}`, 'aria-labelledby': title.id }, title);
-    const remove = el('button', { type: 'button', class: 'remove-location', 'data-action': 'location-remove', 'aria-label': `Remove location ${id}`, text: 'Remove this location' });
+    const remove = el('button', { type: 'button', class: 'remove-location', 'data-action': 'location-remove', text: `Remove location ${id}` });
     remove.addEventListener('click', () => removeLocation(id));
     section.append(remove);
     section.append(el('div', { class: 'findings', 'data-findings-of': String(id) }));
@@ -680,6 +680,8 @@ async function refreshMap() {
     if (!plot) return;
     $('#map-section').hidden = false;
     const node = document.importNode(svg, true);
+    // Its handles are controls: the drawing is a group of them, not one image.
+    node.setAttribute('role', 'group');
     // `data-location` names the page's sections: the drawing's own become data-map-location.
     for (const item of node.querySelectorAll('[data-location]')) {
       item.setAttribute('data-map-location', item.getAttribute('data-location'));
@@ -694,6 +696,7 @@ async function refreshMap() {
     }
     for (const target of node.querySelectorAll('g.gesture[data-map-location]')) {
       target.setAttribute('data-target-handle', target.getAttribute('data-map-location'));
+      target.setAttribute('role', 'img');
       target.setAttribute('aria-label', `Gesture target of location ${target.getAttribute('data-map-location')}: drag to move, or edit its fields`);
       target.addEventListener('pointerdown', (event) => startDrag(event, node, target, 'target'));
     }
