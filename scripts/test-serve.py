@@ -20,8 +20,8 @@ import urllib.request
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
+from selenium.common.exceptions import StaleElementReferenceException
 from selenium.webdriver.common.by import By
-from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import WebDriverWait
 
 EKB = os.path.abspath(sys.argv[1])
@@ -107,6 +107,17 @@ try:
     check(state() == "dirty", f"after a fix the page is dirty, not {state()}")
     ok("one click on its fix button fixes the key-case error")
 
+    # Typing what the robot would misread shows its finding at the field.
+    field = driver.find_element(By.CSS_SELECTOR, '[data-key="postGestureMessageKinyarwanda"][data-id="4"]')
+    written = field.get_attribute("value")
+    field.clear()
+    field.send_keys('"Quoted')
+    wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, '[data-location="4"] [data-rule="compat-leading-symbol"][data-severity="error"]'))
+    field.clear()
+    field.send_keys(written)
+    wait.until(lambda d: not d.find_elements(By.CSS_SELECTOR, '[data-rule="compat-leading-symbol"]'))
+    ok("typing a leading quote shows compat-leading-symbol at its field, and undoing it clears it")
+
     # Typing a translation: one untranslated-message finding fewer at location 4, and how
     # long after the last key the page shows it.
     untranslated = '[data-location="4"] [data-rule="untranslated-message"]'
@@ -130,16 +141,32 @@ try:
     check(elapsed <= 300, f"the findings came {elapsed:.0f} ms after the last key, over 300 ms")
     ok(f"a translation typed clears its finding, painted {elapsed:.0f} ms after the last key")
 
-    # Save: the file on disk is the original with exactly those two lines changed.
+    # Dragging a pose moves it: its x field follows.
+    x = driver.find_element(By.CSS_SELECTOR, '[data-key][data-id="3"][data-part="x"]')
+    before_x = float(x.get_attribute("value"))
+    # The map is drawn again after each check: the handle is found anew if it was redrawn.
+    for attempt in range(10):
+        try:
+            handle = driver.find_element(By.CSS_SELECTOR, '[data-pose-handle="3"]')
+            ActionChains(driver).click_and_hold(handle).move_by_offset(40, 0).release().perform()
+            break
+        except StaleElementReferenceException:
+            time.sleep(0.3)
+    wait.until(lambda d: float(x.get_attribute("value")) != before_x)
+    check(float(x.get_attribute("value")) > before_x, "dragging right increases x")
+    ok(f"dragging location 3's pose moves it: x {before_x} → {x.get_attribute('value')}")
+
+    # Save: the file on disk is the original with exactly those three lines changed.
     driver.find_element(By.CSS_SELECTOR, '[data-action="save"]').click()
     wait.until(lambda d: state() == "saved")
     after = open(kb, "rb").read().split(b"\n")
     before = original.split(b"\n")
     changed = [i + 1 for i, (a, b) in enumerate(zip(before, after)) if a != b]
     check(len(after) == len(before), "the save kept every line")
-    check(changed == [32, 34], f"the save changed lines {changed}, not 32 and 34")
+    check(changed == [20, 32, 34], f"the save changed lines {changed}, not 20, 32 and 34")
     check(after[31] == b"preGestureMessageIsiZulu      4 Le yiRoomba", f"line 32: {after[31]!r}")
-    ok("the save is lossless: only lines 32 (the translation) and 34 (the key) changed")
+    check(after[19].startswith(b"robotLocation                 3 ") and after[19] != before[19], f"line 20: {after[19]!r}")
+    ok("the save is lossless: only lines 20 (the pose dragged), 32 (the translation) and 34 (the key) changed")
 
     # A colleague's ekb set meanwhile is kept, and the page notices it.
     subprocess.run([EKB, "--isolated", "-q", "set", "2", "robotLocationDescription", "The other Pepper", kb], check=True)
@@ -169,15 +196,6 @@ try:
     wait.until(lambda d: state() == "saved")
     check("postGestureMessageKinyarwanda 5 Mine" in open(kb).read(), "choosing mine did not save it")
     ok("the same value changed on both sides is shown in [data-conflict]; choosing mine saves it")
-
-    # Dragging a pose moves it: its x field follows.
-    handle = driver.find_element(By.CSS_SELECTOR, '[data-pose-handle="3"]')
-    x = driver.find_element(By.CSS_SELECTOR, '[data-key][data-id="3"][data-part="x"]')
-    before_x = float(x.get_attribute("value"))
-    ActionChains(driver).click_and_hold(handle).move_by_offset(40, 0).release().perform()
-    wait.until(lambda d: float(x.get_attribute("value")) != before_x)
-    check(float(x.get_attribute("value")) > before_x, "dragging right increases x")
-    ok(f"dragging location 3's pose moves it: x {before_x} → {x.get_attribute('value')}")
 
     if AXE:
         driver.execute_script(open(AXE).read())
