@@ -97,7 +97,9 @@ try:
     state = lambda: driver.find_element(By.TAG_NAME, "body").get_attribute("data-state")
     wait.until(lambda d: state() == "clean")
     wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, '[data-location="4"] [data-rule="key-case"][data-severity="error"]'))
-    ok("the page loads clean and shows the key-case error at location 4")
+    first = driver.find_element(By.CSS_SELECTOR, "#summary li a").text
+    check(first.startswith("error key-case"), f"the summary starts with {first!r}, not the key-case error")
+    ok("the page loads clean and shows the key-case error at location 4, first in the summary")
     if os.environ.get("EKB_SERVE_SCREENSHOT"):
         driver.save_screenshot(os.environ["EKB_SERVE_SCREENSHOT"])
 

@@ -189,6 +189,20 @@ fn the_server_guards_checks_and_saves_one_line() {
         "{findings:?}"
     );
     assert!(checked["check"]["summary"].is_object());
+    // Read in the order `ekb check` shows them: the key-case error first, the missing field
+    // it causes right after it, then the warnings.
+    let order: Vec<(u64, &str)> = checked["reading_order"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|entry| (entry[0].as_u64().unwrap(), entry[2].as_str().unwrap()))
+        .collect();
+    assert_eq!(
+        order[..2],
+        [(34, "key-case"), (28, "missing-field")],
+        "{order:?}"
+    );
+    assert_eq!(order.len(), findings.len());
 
     // A save changes exactly one line, byte for byte otherwise.
     let file_now = server.get("/api/file", &server.host(), true);

@@ -16,9 +16,11 @@
 //! - `POST /api/check` `{text, edits?, tour?, add_locations?, remove_locations?}`: the
 //!   locations added ([`locations::add`]), the edits applied to `text` with
 //!   [`crate::edit::apply`], the locations removed, the tour line rewritten to `tour`
-//!   ([`merge::set_tour`]), then `{text, fields, tour, check, translations}`, `check` being
-//!   exactly what `ekb check --format json` prints for that text, `translations` each
-//!   language's status as `ekb translations --format json` counts it.
+//!   ([`merge::set_tour`]), then `{text, fields, tour, check, reading_order, translations}`,
+//!   `check` being exactly what `ekb check --format json` prints for that text,
+//!   `reading_order` its findings as `[line, column, rule]` in the order `ekb check` shows
+//!   them (errors first, each consequence after its cause), `translations` each language's
+//!   status as `ekb translations --format json` counts it.
 //! - `POST /api/save` `{base_version, text?, edits, tour?, add_locations?,
 //!   remove_locations?}`: the same changes made on `text` (the page's
 //!   version with the fixes it applied; else the version `base_version`) and written
@@ -447,6 +449,13 @@ impl Server<'_> {
             .map(|&language| catalog.status(language))
             .collect();
         drop(catalog);
+        // The order people read the findings in: errors first, each consequence right after
+        // its cause (as `ekb check` shows them), as [line, column, rule].
+        let reading_order: Vec<(u32, u32, &str)> = render::FileReport::new(&checked)
+            .in_reading_order()
+            .iter()
+            .map(|finding| (finding.region.line, finding.region.column, finding.rule))
+            .collect();
         let mut findings = Vec::new();
         let rendered = render::render(
             Format::Json,
@@ -470,6 +479,7 @@ impl Server<'_> {
             "fields": found.fields,
             "tour": found.tour,
             "check": check,
+            "reading_order": reading_order,
             "translations": translations,
         });
         self.last_checked = Some(text);

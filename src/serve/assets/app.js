@@ -396,8 +396,11 @@ function showFindings(checked) {
     input.removeAttribute('aria-invalid');
   }
   const lines = checked.text.split('\n');
+  // In the order the server reads them (errors first, a consequence after its cause).
+  const rank = new Map((checked.reading_order || []).map(([line, column, rule], index) => [`${line}:${column}:${rule}`, index]));
+  const placeOf = (finding) => rank.get(`${finding.line}:${finding.column}:${finding.rule}`) ?? Infinity;
   const diagnostics = checked.check.diagnostics.slice().sort((a, b) =>
-    (SEVERITY_ORDER[a.severity] ?? 9) - (SEVERITY_ORDER[b.severity] ?? 9) || a.line - b.line || a.column - b.column);
+    placeOf(a) - placeOf(b) || (SEVERITY_ORDER[a.severity] ?? 9) - (SEVERITY_ORDER[b.severity] ?? 9) || a.line - b.line || a.column - b.column);
   const summary = [];
   diagnostics.forEach((finding, index) => {
     const field = fieldOf(checked, finding);
