@@ -1121,7 +1121,7 @@ fn the_map_draws_each_leg_as_the_robot_drives_it() {
     let (planned, unreachable) = legs(&svg);
     assert_eq!(unreachable, ["3"]);
     assert_eq!(planned.len(), 2, "1 → 4, then 4 → 2");
-    assert!(svg.contains("Dashed red, crossed: a leg the robot cannot drive"));
+    assert!(svg.contains("Dashed, crossed: a leg it cannot drive"));
     // Without a map, straight lines stop to stop.
     let (planned, _) = legs(&svg_of(SEED, &[]));
     assert!(planned.iter().all(|points| points.len() == 2));
@@ -1192,4 +1192,40 @@ fn a_pose_is_judged_where_the_robots_navigation_rounds_it() {
     );
     // Its leg is then the pose's rule's to tell.
     assert!(!stdout.contains("tour-leg-unreachable"), "{stdout}");
+}
+
+#[test]
+fn the_legend_wraps_its_lines_at_words_and_cuts_none() {
+    let svg = svg_of(SEED, &["--map-config", LAB_MAP]);
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let width: f64 = doc
+        .root_element()
+        .attribute("width")
+        .unwrap()
+        .parse()
+        .unwrap();
+    let legend = doc
+        .descendants()
+        .find(|node| node.attribute("id") == Some("legend"))
+        .unwrap();
+    let texts: Vec<(f64, String)> = legend
+        .descendants()
+        .filter(|node| node.has_tag_name("text"))
+        .map(|node| {
+            let x: f64 = node.attribute("x").unwrap().parse().unwrap();
+            (x, node.text().unwrap_or_default().to_string())
+        })
+        .collect();
+    // Each line, at about 0.57 of its 12-pixel font a character, ends inside the drawing.
+    for (x, text) in &texts {
+        let end = x + text.chars().count() as f64 * 12.0 * 0.57;
+        assert!(end <= width, "{text:?} ends at {end}, past {width}");
+    }
+    // The summary, wrapped, is all there.
+    let all: Vec<&str> = texts.iter().map(|(_, text)| text.as_str()).collect();
+    let joined = all.join(" ");
+    assert!(
+        joined.contains("Found 2 errors, 21 warnings (1 fixable with ekb fix)"),
+        "{all:?}"
+    );
 }

@@ -874,7 +874,7 @@ fn legend_lines(scene: &Scene<'_>) -> Vec<LabelLine> {
     }
     if scene.legs.iter().any(|leg| leg.path.is_none()) {
         lines.push(LabelLine::plain(
-            "Dashed red, crossed: a leg the robot cannot drive".to_string(),
+            "Dashed, crossed: a leg it cannot drive".to_string(),
             FINDING_COLOUR,
         ));
     }
@@ -898,7 +898,34 @@ fn legend_lines(scene: &Scene<'_>) -> Vec<LabelLine> {
             TEXT_COLOUR,
         ));
     }
-    lines
+    // A line wider than the legend is cut at its edge: each is wrapped at words instead.
+    lines.into_iter().flat_map(wrapped).collect()
+}
+
+/// `line` as lines that each fit in the legend's width, broken at spaces.
+fn wrapped(line: LabelLine) -> Vec<LabelLine> {
+    let room = LEGEND_WIDTH - 12.0;
+    if !line.stops.is_empty() || text_width(&line.text, FONT_SIZE, line.bold) <= room {
+        return vec![line];
+    }
+    let mut pieces: Vec<String> = Vec::new();
+    for word in line.text.split(' ') {
+        match pieces.last_mut() {
+            Some(last) if text_width(&format!("{last} {word}"), FONT_SIZE, line.bold) <= room => {
+                last.push(' ');
+                last.push_str(word);
+            }
+            _ => pieces.push(word.to_string()),
+        }
+    }
+    pieces
+        .into_iter()
+        .map(|text| LabelLine {
+            text,
+            stops: Vec::new(),
+            ..line
+        })
+        .collect()
 }
 
 /// The legend, the scale bar, and `lines`, in a panel right of the plot.
