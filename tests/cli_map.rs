@@ -1229,3 +1229,18 @@ fn the_legend_wraps_its_lines_at_words_and_cuts_none() {
         "{all:?}"
     );
 }
+
+#[test]
+fn a_locations_label_names_a_cause_before_what_it_causes() {
+    // Location 4 of the seed: its miscased key (key-case) makes its English missing
+    // (missing-field); the label reads as `ekb check` does, the cause first.
+    let svg = svg_of(SEED, &["--map-config", LAB_MAP]);
+    let key_case = svg.find(">key-case<").expect("key-case on the map");
+    let missing = svg
+        .find(">missing-field<")
+        .expect("missing-field on the map");
+    assert!(
+        key_case < missing,
+        "missing-field is named before its cause"
+    );
+}

@@ -177,7 +177,10 @@ impl<'a> Scene<'a> {
             .collect();
         let legs = map.map_or_else(Vec::new, |map| legs(&spots, &tour, map));
         let mut elsewhere = Vec::new();
-        for diagnostic in &checked.diagnostics {
+        // In the order people read them: errors first, a consequence after its cause.
+        let report = crate::render::FileReport::new(checked);
+        for located in report.in_reading_order() {
+            let diagnostic = located.diagnostic;
             let counts = match diagnostic.location_id {
                 Some(id) => match index_of(&spots, id) {
                     Some(index) => &mut spots[index].findings,
