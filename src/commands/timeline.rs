@@ -18,12 +18,8 @@ pub fn run(args: &Args, context: &Context) -> CommandResult {
     let path = context.input(args.file.as_deref())?;
     let robot = context.settings_for(&path)?.robot.profile();
     let (checked, loaded) = input.check(context.quiet);
-    let timelines: Vec<Timeline> = args
-        .lang
-        .each()
-        .into_iter()
-        .map(|language| Timeline::new(&checked, &loaded, input.map.as_ref(), &robot, language))
-        .collect();
+    let languages = args.lang.each();
+    let timelines = Timeline::each(&checked, &loaded, input.map.as_ref(), &robot, &languages);
     let mut stdout = std::io::stdout().lock();
     match (args.format, args.lang) {
         (TourFormat::Json, Languages::One(_)) => json::write(&timelines[0], &mut stdout)?,

@@ -63,73 +63,55 @@ pub struct SpeechTime {
 }
 
 impl Timeline {
-    /// The timeline of `checked`'s tour in `language`, its poses as `loaded` holds them, on
-    /// `map` if there is one.
-    pub fn new(
+    /// The timelines of `checked`'s tour in each of `languages`, its poses as `loaded` holds
+    /// them, on `map` if there is one. The legs are the same in every language: they are
+    /// planned once.
+    pub fn each(
         checked: &Checked<'_>,
         loaded: &Loaded<'_>,
         map: Option<&LabMap>,
         robot: &RobotProfile,
+        languages: &[Language],
+    ) -> Vec<Timeline> {
+        let legs = legs(checked, loaded, map, robot);
+        languages
+            .iter()
+            .map(|&language| Timeline::in_language(checked, &legs, map.is_some(), robot, language))
+            .collect()
+    }
+
+    /// The timeline in `language` of the tour whose `legs` (id and leg, in tour order) are
+    /// planned.
+    fn in_language(
+        checked: &Checked<'_>,
+        legs: &[(u32, LegTime)],
+        planned: bool,
+        robot: &RobotProfile,
         language: Language,
     ) -> Timeline {
         let kb = &checked.kb;
-        // Where the reader puts the robot: 0, 0, 0° without a pose line.
-        let pose = |id: u32| {
-            view::numbers(loaded, id, Key::RobotLocationPose).map_or([0.0; 3], |(pose, _)| pose)
-        };
-        let mut stops = Vec::new();
-        let mut standing: Option<[f64; 3]> = None;
-        for (index, id) in kb.tour_stops().enumerate() {
-            let goal = pose(id);
-            let from = standing.unwrap_or(goal);
-            let distance = match map {
-                Some(map) => map
-                    .space
-                    .path((from[0], from[1]), (goal[0], goal[1]))
-                    .ok()
-                    .map(|path| path.metres),
-                None => Some((goal[0] - from[0]).hypot(goal[1] - from[1])),
-            };
-            let leg = match distance {
-                Some(metres) => {
-                    standing = Some(goal);
-                    let turn = turn_degrees(from[2], goal[2]);
-                    LegTime {
-                        reachable: true,
-                        distance_m: Some(thousandths(metres)),
-                        drive_s: Some(thousandths(
-                            metres / robot.speed + turn.to_radians() / robot.turn_speed,
-                        )),
-                        turn_deg: Some(thousandths(turn)),
-                    }
+        let stops: Vec<StopTime> = legs
+            .iter()
+            .enumerate()
+            .map(|(index, (id, leg))| {
+                let said = |phase: Phase| {
+                    let text = kb
+                        .location(*id)
+                        .and_then(|location| location.message(phase, language))
+                        .map_or("", |message| message.value);
+                    robot.speech_seconds(language, text).map(thousandths)
+                };
+                StopTime {
+                    stop: index + 1,
+                    id: *id,
+                    leg: leg.clone(),
+                    speech: SpeechTime {
+                        pre_s: said(Phase::Pre),
+                        post_s: said(Phase::Post),
+                    },
                 }
-                None => {
-                    standing = Some(from);
-                    LegTime {
-                        reachable: false,
-                        distance_m: None,
-                        drive_s: None,
-                        turn_deg: None,
-                    }
-                }
-            };
-            let said = |phase: Phase| {
-                let text = kb
-                    .location(id)
-                    .and_then(|location| location.message(phase, language))
-                    .map_or("", |message| message.value);
-                robot.speech_seconds(language, text).map(thousandths)
-            };
-            stops.push(StopTime {
-                stop: index + 1,
-                id,
-                leg,
-                speech: SpeechTime {
-                    pre_s: said(Phase::Pre),
-                    post_s: said(Phase::Post),
-                },
-            });
-        }
+            })
+            .collect();
         let total_s = thousandths(
             stops
                 .iter()
@@ -143,7 +125,7 @@ impl Timeline {
         Timeline {
             language,
             spoken: robot.speaks(language),
-            planned: map.is_some(),
+            planned,
             stops,
             total_s,
         }
@@ -183,6 +165,59 @@ impl Timeline {
             .filter_map(|(stop, phase, seconds)| Some((stop, phase, seconds?)))
             .max_by(|a, b| a.2.total_cmp(&b.2))
     }
+}
+
+/// Each stop of the tour and the leg the robot drives to it: from where it stands (the
+/// first stop: from its own pose), where it stays when no path joins the two.
+fn legs(
+    checked: &Checked<'_>,
+    loaded: &Loaded<'_>,
+    map: Option<&LabMap>,
+    robot: &RobotProfile,
+) -> Vec<(u32, LegTime)> {
+    // Where the reader puts the robot: 0, 0, 0° without a pose line.
+    let pose = |id: u32| {
+        view::numbers(loaded, id, Key::RobotLocationPose).map_or([0.0; 3], |(pose, _)| pose)
+    };
+    let mut standing: Option<[f64; 3]> = None;
+    let mut legs = Vec::new();
+    for id in checked.kb.tour_stops() {
+        let goal = pose(id);
+        let from = standing.unwrap_or(goal);
+        let distance = match map {
+            Some(map) => map
+                .space
+                .path((from[0], from[1]), (goal[0], goal[1]))
+                .ok()
+                .map(|path| path.metres),
+            None => Some((goal[0] - from[0]).hypot(goal[1] - from[1])),
+        };
+        let leg = match distance {
+            Some(metres) => {
+                standing = Some(goal);
+                let turn = turn_degrees(from[2], goal[2]);
+                LegTime {
+                    reachable: true,
+                    distance_m: Some(thousandths(metres)),
+                    drive_s: Some(thousandths(
+                        metres / robot.speed + turn.to_radians() / robot.turn_speed,
+                    )),
+                    turn_deg: Some(thousandths(turn)),
+                }
+            }
+            None => {
+                standing = Some(from);
+                LegTime {
+                    reachable: false,
+                    distance_m: None,
+                    drive_s: None,
+                    turn_deg: None,
+                }
+            }
+        };
+        legs.push((id, leg));
+    }
+    legs
 }
 
 /// `value` to three decimals: millimetres, milliseconds (and a JSON without float noise).

@@ -82,10 +82,7 @@ pub fn page(
         reader = checked.reader.name(),
     );
     map_section(&mut html, checked, loaded, map);
-    let timelines: Vec<Timeline> = Language::ALL
-        .iter()
-        .map(|&language| Timeline::new(checked, loaded, map, robot, language))
-        .collect();
+    let timelines = Timeline::each(checked, loaded, map, robot, &Language::ALL);
     timeline::section(&mut html, &timelines);
     let catalog = Catalog::new(checked);
     let units: Units = catalog
